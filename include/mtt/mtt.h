@@ -1,0 +1,343 @@
+/* mtt/mtt.h - public API of mtt, a bounded multi-target tracker.
+ *
+ * Per frame: constant-velocity Kalman prediction, ellipsoidal gating,
+ * LM-IHPDA association (or IPDA, LM-IPDA, IHPDA), MMR assignment, Markov
+ * existence, two-point initiation, merging, confirm/delete.  The algorithm
+ * reference is ALGORITHMS.md ("spec"); section numbers below point into it.
+ *
+ * Memory: all state is one caller-allocated mtt_tracker whose size is fixed
+ * by mtt/config.h.  No allocation, no I/O, no clocks, no hidden statics: the
+ * same inputs give the same outputs.  Not thread-safe per tracker; separate
+ * trackers are independent.
+ *
+ * Every function returns an mtt_status: MTT_OK (0) or a negative error.  On
+ * any error the tracker and the output arguments are left unchanged.
+ */
+#ifndef MTT_MTT_H
+#define MTT_MTT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "mtt/config.h"
+#include "mtt/real.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define MTT_VERSION_MAJOR 0
+#define MTT_VERSION_MINOR 1
+#define MTT_VERSION_PATCH 0
+#define MTT_VERSION_STRING "0.1.0"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define MTT_MUST_CHECK __attribute__((warn_unused_result))
+#else
+#define MTT_MUST_CHECK
+#endif
+
+/** Status of every public call. */
+typedef enum mtt_status {
+    MTT_OK = 0,
+    MTT_ERR_NULL = -1,        /**< a required pointer argument is NULL */
+    MTT_ERR_PARAM = -2,       /**< a parameter set fails mtt_params_check */
+    MTT_ERR_NOT_INIT = -3,    /**< the tracker was not initialised by mtt_tracker_init */
+    MTT_ERR_TIME = -4,        /**< time is not finite or does not increase */
+    MTT_ERR_RANGE = -5,       /**< an index or count is out of range */
+    MTT_ERR_FULL = -6,        /**< the track table is full */
+    MTT_ERR_VALUE = -7,       /**< a state or covariance argument is not finite / not positive definite */
+    MTT_ERR_UNSUPPORTED = -8  /**< the association mode is not built into this version */
+} mtt_status;
+
+/** Association mode (FORMATS.md `association`, spec 15.1). */
+typedef enum mtt_assoc {
+    MTT_ASSOC_LM_IHPDA = 0, /**< LM-IHPDA with MMR (default, spec 7, 8, 10.1, 10.3) */
+    MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (spec 7.4) */
+    MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (spec 6, 8) */
+    MTT_ASSOC_IPDA,         /**< IPDA per track (spec 6) */
+    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment (spec 10.2): not yet built */
+    MTT_ASSOC_JIPDA,        /**< spec 13.2: not yet built */
+    MTT_ASSOC_JPDA,         /**< spec 13.1: not yet built */
+    MTT_ASSOC_CHEAP_JPDA,   /**< spec 13.3: not yet built */
+    MTT_ASSOC_SUBOPT_JPDA,  /**< spec 13.4: not yet built */
+    MTT_ASSOC_NNJPDA,       /**< spec 13.5: not yet built */
+    MTT_ASSOC_JPDA_STAR,    /**< spec 13.6: not yet built */
+    MTT_ASSOC_ADAPTIVE_JPDA,/**< spec 13.7: not yet built */
+    MTT_ASSOC_COUNT
+} mtt_assoc;
+
+/** Initial (two-point) velocity gate (spec 12.1, 12.2). */
+typedef enum mtt_init_gate {
+    MTT_INIT_GATE_VMAX = 0,     /**< |z_k - z_{k-1}| <= vmax * dT */
+    MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) (seed 002) */
+} mtt_init_gate;
+
+/** Stages whose cost the optional cycle counter measures (DESIGN.md). */
+typedef enum mtt_stage {
+    MTT_STAGE_VALIDATE = 0,
+    MTT_STAGE_PREDICT,
+    MTT_STAGE_GATE,
+    MTT_STAGE_LM_CLUTTER,
+    MTT_STAGE_ASSOCIATE,   /* clusters, beta rows and assignment */
+    MTT_STAGE_UPDATE,
+    MTT_STAGE_INITIATE,
+    MTT_STAGE_MERGE,
+    MTT_STAGE_MANAGE,
+    MTT_STAGE_COUNT
+} mtt_stage;
+
+/** A user cycle counter: returns a free-running count (wraps modulo 2^32). */
+typedef uint32_t (*mtt_cycle_fn)(void *ctx);
+
+/** Tracker parameters; mtt_params_default gives FORMATS.md's defaults. */
+typedef struct mtt_params {
+    mtt_assoc association;      /**< default MTT_ASSOC_LM_IHPDA */
+    mtt_real process_psd;       /**< Sw of the CV model, > 0 (default 5) */
+    mtt_real meas_sigma[2];     /**< sx, sy > 0 (default 1, 1) */
+    mtt_real pd;                /**< detection probability in (0, 1) (default 0.9) */
+    mtt_real pg;                /**< gate probability in (0, 1) (default 0.999) */
+    mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (spec 5.2) (default 0) */
+    mtt_real snr_rho;           /**< rho in [0, 1e6]; 0 ignores amplitude (default 0) */
+    mtt_real markov_p11;        /**< in [0, 1] (default 0.98) */
+    mtt_real markov_p21;        /**< in [0, 1] (default 0) */
+    mtt_real existence_init;    /**< in (0, 1) (default 0.1) */
+    mtt_real confirm_threshold; /**< in (0, 1] (default 0.995) */
+    mtt_real terminate_threshold; /**< in [0, confirm_threshold) ; 0 never deletes (default 0.01) */
+    mtt_real merge_threshold;   /**< >= 0; 0 never merges (default 1) */
+    int initiate;               /**< nonzero: start tracks from unused measurements (default 1) */
+    mtt_real vmax;              /**< > 0, length per time (default 60) */
+    mtt_init_gate init_gate;    /**< default MTT_INIT_GATE_VMAX */
+    mtt_real intensity_f1[3];   /**< f1(I) = a2 I^2 + a1 I + a0 (default seed 002) */
+    mtt_real intensity_f2[3];   /**< f2(I) (default seed 002) */
+    mtt_real intensity_blend[2];/**< I_lo < I_hi of the f1/f2 blend (default 150, 250) */
+    mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (spec 13) */
+    mtt_real jpda_star_threshold;   /**< JPDA* pruning probability in [0, 1) (default 0) */
+    mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta in [0, 1) (default 0) */
+    mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas, > 0 (default 9) */
+    mtt_real adaptive_jpda_shrink;  /**< gate shrink factor >= 1 (default 3) */
+    mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
+    void *cycle_ctx;            /**< passed to cycle_counter */
+} mtt_params;
+
+/** One detection.  Coordinates in the user's length unit. */
+typedef struct mtt_meas {
+    mtt_real x, y;
+    mtt_real amplitude;   /**< >= 0, used when has_amplitude is nonzero */
+    int has_amplitude;    /**< 0: intensity unknown for this detection */
+} mtt_meas;
+
+/** Read-only view of one live track. */
+typedef struct mtt_track_view {
+    uint32_t id;          /**< unique for the tracker's life, never reused */
+    int confirmed;        /**< 1 once existence reached confirm_threshold (sticky) */
+    mtt_real x[4];        /**< x, y, vx, vy */
+    mtt_real P[4][4];     /**< state covariance */
+    mtt_real existence;   /**< P(target exists | Z^k) in [0, 1] */
+    uint32_t age;         /**< frames since birth */
+    int32_t meas;         /**< input index of the measurement used this frame, or -1 */
+} mtt_track_view;
+
+/** Event counters (one frame, or cumulative). */
+typedef struct mtt_counts {
+    uint32_t frames;          /**< frames stepped */
+    uint32_t meas_in;         /**< measurements passed in */
+    uint32_t meas_bad;        /**< skipped: NaN/Inf coordinate, negative/NaN/Inf amplitude */
+    uint32_t meas_dropped;    /**< valid, but beyond MTT_MAX_MEAS (weakest dropped) */
+    uint32_t pairs;           /**< gated pairs kept */
+    uint32_t pairs_dropped;   /**< gated, but beyond MTT_MAX_PAIRS (least likely dropped) */
+    uint32_t gated_dropped;   /**< gated, but beyond MTT_MAX_GATED in one gate (largest d^2 dropped) */
+    uint32_t clusters;        /**< clusters formed (spec 9) */
+    uint32_t births;          /**< tentative tracks started */
+    uint32_t births_dropped;  /**< pairs that passed the velocity gate with the table full */
+    uint32_t merges;          /**< tracks removed by merging */
+    uint32_t merge_dropped;   /**< merge candidates beyond MTT_MAX_MERGE_PAIRS */
+    uint32_t deletions;       /**< tracks deleted on existence */
+    uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (spec 3) */
+    uint32_t confirmations;   /**< tracks confirmed */
+} mtt_counts;
+
+/** Statistics: the last frame, the tracker's life, and per-stage cycles. */
+typedef struct mtt_stats {
+    mtt_counts last;
+    mtt_counts total;
+    uint32_t stage_cycles[MTT_STAGE_COUNT]; /**< last frame; all 0 without a cycle counter */
+    uint32_t max_cluster_tracks;  /**< largest cluster of the last frame (tracks) */
+} mtt_stats;
+
+/* ------------------------------------------------------------------------
+ * Tracker state.  Its members are not part of the API (use the functions);
+ * they are here so the caller can allocate it, statically in firmware.
+ * ---------------------------------------------------------------------- */
+
+/** A live track. */
+typedef struct mtt_track {
+    mtt_real x[4];
+    mtt_real P[4][4];
+    mtt_real existence;
+    uint32_t id;
+    uint32_t age;
+    int32_t meas;        /* input index used this frame, -1 */
+    uint8_t confirmed;
+    uint8_t born;        /* born in the current frame: no gate yet */
+    uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
+} mtt_track;
+
+/** Per-frame, per-track scratch (prediction, innovation, gate). */
+typedef struct mtt_track_frame {
+    mtt_real xp[4];
+    mtt_real Pp[4][4];
+    mtt_real ex_pred;    /* predicted existence (spec 11) */
+    mtt_real S[3];       /* innovation covariance s11, s12, s22 */
+    mtt_real Si[3];      /* its inverse */
+    mtt_real det_s;
+    mtt_real vg;         /* gate area (spec 4) */
+    mtt_real K[4][2];    /* Kalman gain */
+    mtt_real lambda;     /* clutter density of this track: known, or estimate (spec 5.2) */
+    uint16_t pair_first, pair_count;
+    int16_t assigned;    /* pair index chosen, -1 */
+    uint16_t cluster;
+    int16_t best;        /* MMR: pair index of the row's best beta, -1 */
+    mtt_real best_beta;  /* MMR: that beta */
+    uint8_t has_all_amp; /* every gated measurement has an amplitude */
+    uint8_t valid;       /* S positive definite */
+} mtt_track_frame;
+
+/** A gated (track, measurement) pair. */
+typedef struct mtt_pair {
+    uint16_t track;      /* index into the track table */
+    uint16_t meas;       /* index into the frame's measurement store */
+    mtt_real d2;         /* squared Mahalanobis distance */
+    mtt_real p;          /* gate-normalised likelihood N/PG (spec 4) */
+    mtt_real w;          /* LM weight p * Pt / (1 - Pt) (spec 8.2) */
+    mtt_real lam;        /* clutter density this track sees for this measurement */
+    mtt_real beta;       /* association probability of the current row */
+    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (spec 7.3) */
+} mtt_pair;
+
+/** A measurement kept for this frame (or the previous one, for initiation). */
+typedef struct mtt_mstore {
+    mtt_real x, y, amp;
+    uint32_t src;        /* input index */
+    uint8_t has_amp;
+    uint8_t used;        /* assigned / selected / gated: not available for initiation */
+} mtt_mstore;
+
+/** A track pair that passed the merge test (spec 12.3). */
+typedef struct mtt_merge_cand {
+    mtt_real d2;
+    uint16_t a, b;       /* track indices, a < b */
+} mtt_merge_cand;
+
+/** The tracker: all state.  Allocate it, then call mtt_tracker_init. */
+typedef struct mtt_tracker {
+    uint32_t magic;                 /* init marker */
+    mtt_params par;
+    mtt_real gamma;                 /* gate threshold from pg */
+    mtt_real R[3];                  /* measurement covariance (sym) */
+    mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), spec 7.2 */
+    mtt_real time;
+    uint8_t have_time;
+    uint32_t next_id;
+    uint16_t n_tracks;
+    mtt_track tracks[MTT_MAX_TRACKS];
+    mtt_track_frame tf[MTT_MAX_TRACKS];
+    /* frame scratch */
+    uint16_t n_meas;
+    mtt_mstore meas[MTT_MAX_MEAS];
+    uint16_t order[MTT_MAX_MEAS];   /* measurements sorted by x (gating sweep) */
+    uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
+    uint16_t n_pairs;
+    mtt_pair pairs[MTT_MAX_PAIRS];
+    uint16_t mp_first[MTT_MAX_MEAS + 1]; /* pairs of each measurement (CSR) */
+    uint16_t mp_list[MTT_MAX_PAIRS];
+    mtt_real wsum[MTT_MAX_MEAS];    /* LM sum W_j */
+    uint16_t uf[MTT_MAX_TRACKS];    /* union-find parents, then cluster ids */
+    uint16_t cl_first[MTT_MAX_TRACKS + 1]; /* tracks of each cluster (CSR) */
+    uint16_t cl_list[MTT_MAX_TRACKS];
+    uint16_t n_clusters;
+    uint16_t n_merge;
+    mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
+    /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
+    uint16_t n_prev;
+    mtt_mstore prev[MTT_MAX_MEAS];
+    mtt_stats stats;
+} mtt_tracker;
+
+/* ------------------------------------------------------------------------
+ * Functions
+ * ---------------------------------------------------------------------- */
+
+/** Fill p with FORMATS.md's defaults (seed 000's IR set-up).
+ *  @return MTT_OK; MTT_ERR_NULL if p is NULL. */
+MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
+
+/** Validate a parameter set.
+ *  @param bad_field if not NULL, receives the name of the first invalid field
+ *         (a static string such as "pd"), or NULL when valid.
+ *  @return MTT_OK; MTT_ERR_NULL if p is NULL; MTT_ERR_PARAM if a field is out
+ *          of range or not finite; MTT_ERR_UNSUPPORTED if the association mode
+ *          is not built into this version (bad_field = "association"). */
+MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
+
+/** Initialise (or reset) a tracker.  Cost: O(MTT_MAX_GATED^2) for the rank table.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
+ *          mtt_params_check (the tracker is then left uninitialised). */
+MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p);
+
+/** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).
+ *  Bad detections are skipped and counted; beyond MTT_MAX_MEAS the strongest
+ *  amplitudes are kept (detections without amplitude rank below any amplitude,
+ *  then by input order).  Cost: O(n log n + tracks + pairs + sum over clusters
+ *  of tracks^2 * gated); no step allocates or recurses.
+ *  @return MTT_OK; MTT_ERR_NULL (trk NULL, or meas NULL with n > 0);
+ *          MTT_ERR_NOT_INIT; MTT_ERR_TIME if time is not finite or not greater
+ *          than the previous frame's time.  On error nothing changes. */
+MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
+                                           const mtt_meas *meas, size_t n);
+
+/** Add a known (seeded) track: confirmed, existence 1 (FORMATS.md initial_tracks).
+ *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16
+ *         values), symmetric (to 1e-6 relative) and positive definite.
+ *  @param id if not NULL, receives the new track's identity.
+ *  @return MTT_OK; MTT_ERR_NULL (trk, x or P); MTT_ERR_NOT_INIT; MTT_ERR_VALUE
+ *          if x or P is not finite or P is not symmetric positive definite;
+ *          MTT_ERR_FULL if MTT_MAX_TRACKS tracks are live. */
+MTT_MUST_CHECK mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4],
+                                                const mtt_real P[16], uint32_t *id);
+
+/** Number of live tracks (tentative and confirmed).
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_NOT_INIT. */
+MTT_MUST_CHECK mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count);
+
+/** View of live track i, 0 <= i < count, in ascending identity.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_NOT_INIT; MTT_ERR_RANGE. */
+MTT_MUST_CHECK mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i,
+                                            mtt_track_view *view);
+
+/** Statistics of the last frame and of the tracker's life.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_NOT_INIT. */
+MTT_MUST_CHECK mtt_status mtt_tracker_stats(const mtt_tracker *trk, mtt_stats *stats);
+
+/** The two-point initial covariance of spec 12.1 for measurement sigmas
+ *  (sx, sy) and frame interval dt > 0: [[R, R/dt], [R/dt, 2R/dt^2]].
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if an argument is not finite
+ *          or not positive. */
+MTT_MUST_CHECK mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt,
+                                                 mtt_real P[4][4]);
+
+/** Name of an association mode as FORMATS.md spells it ("lm-ihpda", ...). */
+MTT_MUST_CHECK mtt_status mtt_assoc_name(mtt_assoc a, const char **name);
+
+/** Parse a FORMATS.md association name.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the name is unknown. */
+MTT_MUST_CHECK mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a);
+
+/** Human-readable text of a status ("ok", "null pointer", ...). */
+MTT_MUST_CHECK mtt_status mtt_status_text(mtt_status s, const char **text);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MTT_MTT_H */

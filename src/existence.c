@@ -1,0 +1,29 @@
+/* existence.c - track existence probability.
+ *
+ * spec 11: Markov chain one prediction P_k|k-1 = p11 P + p21 (1 - P).
+ * spec 6 / 7.4: update in the L form P = L P / (1 - P + L P), which stays
+ * accurate when delta = 1 - L is large and negative (spec 16). */
+#include "mtt_internal.h"
+
+static mtt_real clamp01(mtt_real p)
+{
+    if (!(p > MTT_R(0.0))) {
+        return MTT_R(0.0); /* also maps NaN to 0 */
+    }
+    return (p < MTT_R(1.0)) ? p : MTT_R(1.0);
+}
+
+mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21)
+{
+    return clamp01(p11 * p + p21 * (MTT_R(1.0) - p));
+}
+
+mtt_real mtt_existence_update(mtt_real ex_pred, mtt_real L)
+{
+    mtt_real num = L * ex_pred;
+    mtt_real den = MTT_R(1.0) - ex_pred + num;
+    if (!(den > MTT_R(0.0))) {
+        return MTT_R(0.0);
+    }
+    return clamp01(num / den);
+}

@@ -1,0 +1,201 @@
+/* gate.c - ellipsoidal gating of every track (spec 4).
+ *
+ * gamma = -2 ln(1 - PG); a measurement is gated when d^2 = nu' S^-1 nu <=
+ * gamma; V_G = pi gamma sqrt(det S); p = N(nu; 0, S) / PG.
+ * Measurements are sorted once along x; each track scans only the slice
+ * its gate can reach (|nu_x| <= sqrt(gamma s11)), so the cost is
+ * O(n log n + sum of slice lengths), not tracks x measurements. */
+#include "mtt_internal.h"
+
+mtt_real mtt_gate_gamma(mtt_real pg)
+{
+    return MTT_R(-2.0) * mtt_log(MTT_R(1.0) - pg);
+}
+
+mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s)
+{
+    return MTT_PI * gamma * mtt_sqrt(det_s);
+}
+
+mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
+{
+    return mtt_exp(MTT_R(-0.5) * d2) / (MTT_R(2.0) * MTT_PI * mtt_sqrt(det_s) * pg);
+}
+
+static int less_x(const void *a, const void *b, const void *ctx)
+{
+    const mtt_mstore *m = (const mtt_mstore *)ctx;
+    uint16_t i = *(const uint16_t *)a, j = *(const uint16_t *)b;
+    if (m[i].x != m[j].x) {
+        return m[i].x < m[j].x;
+    }
+    return i < j;
+}
+
+static int less_pair(const void *a, const void *b, const void *ctx)
+{
+    const mtt_pair *p = (const mtt_pair *)a, *q = (const mtt_pair *)b;
+    (void)ctx;
+    if (p->track != q->track) {
+        return p->track < q->track;
+    }
+    return p->meas < q->meas;
+}
+
+/* First position in the x-sorted order whose x >= v. */
+static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_real v)
+{
+    uint16_t lo = 0, hi = trk->n_meas;
+    while (lo < hi) {
+        uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
+        if (trk->meas[trk->order[mid]].x < v) {
+            lo = (uint16_t)(mid + 1u);
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
+/* Beyond MTT_MAX_PAIRS: the least likely pair of the frame gives way (DESIGN.md). */
+static void push_pair(mtt_tracker *trk, const mtt_pair *np, int *resort)
+{
+    uint16_t k, worst = 0;
+    if (trk->n_pairs < MTT_MAX_PAIRS) {
+        trk->pairs[trk->n_pairs++] = *np;
+        return;
+    }
+    trk->stats.last.pairs_dropped++;
+    for (k = 1; k < MTT_MAX_PAIRS; ++k) {
+        if (trk->pairs[k].p < trk->pairs[worst].p ||
+            (trk->pairs[k].p == trk->pairs[worst].p && less_pair(&trk->pairs[worst], &trk->pairs[k], NULL))) {
+            worst = k;
+        }
+    }
+    if (np->p > trk->pairs[worst].p) {
+        trk->pairs[worst] = *np;
+        *resort = 1;
+    }
+}
+
+void mtt_gate_frame(mtt_tracker *trk)
+{
+    const uint16_t n = trk->n_meas;
+    uint16_t cm[MTT_MAX_GATED];
+    mtt_real cd[MTT_MAX_GATED];
+    uint16_t i, k;
+    int resort = 0;
+
+    for (i = 0; i < n; ++i) {
+        trk->order[i] = i;
+    }
+    mtt_sort(trk->order, n, sizeof trk->order[0], less_x, trk->meas);
+    trk->n_pairs = 0;
+
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track_frame *tf = &trk->tf[i];
+        mtt_real zx = tf->xp[0], zy = tf->xp[1], wx, wy;
+        uint16_t nc = 0, a, b;
+        if (!tf->valid) {
+            continue;
+        }
+        tf->vg = mtt_gate_volume(trk->gamma, tf->det_s);
+        wx = mtt_sqrt(trk->gamma * tf->S[0]);
+        wy = mtt_sqrt(trk->gamma * tf->S[2]);
+        for (k = lower_bound_x(trk, zx - wx); k < n; ++k) {
+            uint16_t j = trk->order[k];
+            mtt_real dx = trk->meas[j].x - zx, dy = trk->meas[j].y - zy, d2;
+            if (dx > wx) {
+                break;
+            }
+            if (mtt_fabs(dy) > wy) {
+                continue;
+            }
+            d2 = mtt_mahal2(tf->Si, dx, dy);
+            if (!(d2 <= trk->gamma)) {
+                continue;
+            }
+            if (nc < MTT_MAX_GATED) {
+                cm[nc] = j;
+                cd[nc] = d2;
+                ++nc;
+            } else {
+                /* Gate full: the largest d^2 gives way (spec 7.2, cap). */
+                uint16_t w = 0;
+                for (a = 1; a < nc; ++a) {
+                    if (cd[a] > cd[w] || (cd[a] == cd[w] && cm[a] > cm[w])) {
+                        w = a;
+                    }
+                }
+                trk->stats.last.gated_dropped++;
+                if (d2 < cd[w] || (d2 == cd[w] && j < cm[w])) {
+                    cm[w] = j;
+                    cd[w] = d2;
+                }
+            }
+        }
+        /* Input order inside the gate (insertion sort of at most MTT_MAX_GATED). */
+        for (a = 1; a < nc; ++a) {
+            uint16_t mj = cm[a];
+            mtt_real md = cd[a];
+            for (b = a; b > 0 && cm[b - 1u] > mj; --b) {
+                cm[b] = cm[b - 1u];
+                cd[b] = cd[b - 1u];
+            }
+            cm[b] = mj;
+            cd[b] = md;
+        }
+        for (a = 0; a < nc; ++a) {
+            mtt_pair np;
+            np.track = i;
+            np.meas = cm[a];
+            np.d2 = cd[a];
+            np.p = mtt_gate_likelihood(cd[a], tf->det_s, trk->par.pg);
+            np.w = MTT_R(0.0);
+            np.lam = MTT_R(0.0);
+            np.beta = MTT_R(0.0);
+            push_pair(trk, &np, &resort);
+        }
+    }
+    if (resort) {
+        mtt_sort(trk->pairs, trk->n_pairs, sizeof trk->pairs[0], less_pair, NULL);
+    }
+
+    /* Per-track ranges (pairs are sorted by track). */
+    for (i = 0; i < trk->n_tracks; ++i) {
+        trk->tf[i].pair_count = 0;
+        trk->tf[i].pair_first = 0;
+        trk->tf[i].has_all_amp = 1;
+    }
+    for (k = trk->n_pairs; k > 0; --k) {
+        const mtt_pair *pp = &trk->pairs[k - 1u];
+        mtt_track_frame *tf = &trk->tf[pp->track];
+        tf->pair_first = (uint16_t)(k - 1u);
+        tf->pair_count++;
+        if (!trk->meas[pp->meas].has_amp) {
+            tf->has_all_amp = 0;
+        }
+    }
+    /* Pairs of each measurement (CSR), ascending track. */
+    for (i = 0; i <= n; ++i) {
+        trk->mp_first[i] = 0;
+    }
+    for (k = 0; k < trk->n_pairs; ++k) {
+        trk->mp_first[trk->pairs[k].meas + 1u]++;
+    }
+    for (i = 0; i < n; ++i) {
+        trk->mp_first[i + 1u] = (uint16_t)(trk->mp_first[i + 1u] + trk->mp_first[i]);
+    }
+    /* Fill with mp_first[j] as the cursor of j; it then holds the end of j,
+     * which is the start of j + 1: shift back by one. */
+    for (k = 0; k < trk->n_pairs; ++k) {
+        uint16_t j = trk->pairs[k].meas;
+        trk->mp_list[trk->mp_first[j]] = k;
+        trk->mp_first[j]++;
+    }
+    for (i = n; i > 0; --i) {
+        trk->mp_first[i] = trk->mp_first[i - 1u];
+    }
+    trk->mp_first[0] = 0;
+    trk->stats.last.pairs = trk->n_pairs;
+}

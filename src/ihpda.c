@@ -1,0 +1,102 @@
+/* ihpda.c - IHPDA: one selected measurement per track, using the ranks of
+ * the gated intensities (spec 7).
+ *
+ * spec 7.2: P_r(l | m, rho) in the product/recurrence form
+ *   a = 1/(1+rho), P_r(1) = prod_{j<m} j/(j+a), P_r(l+1) = P_r(l)(l-1+a)/l,
+ * never the seed's alternating sum, which cancels catastrophically.
+ * spec 7.3: A_j = PD PG m p_j P_r(l_j) / lambda_j,
+ *           C_j = 1 - PD PG + PD PG (m / (lambda_j V_G)) (1 - P_r(l_j)),
+ *           L_j = A_j + C_j, beta_j = A_j / L_j. */
+#include "mtt_internal.h"
+
+void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out)
+{
+    mtt_real a = MTT_R(1.0) / (MTT_R(1.0) + rho);
+    mtt_real p = MTT_R(1.0);
+    uint16_t j;
+    if (m == 0u) {
+        return;
+    }
+    for (j = 1; j < m; ++j) {
+        p *= (mtt_real)j / ((mtt_real)j + a);
+    }
+    out[0] = p;
+    for (j = 1; j < m; ++j) {
+        out[j] = out[j - 1u] * ((mtt_real)j - MTT_R(1.0) + a) / (mtt_real)j;
+    }
+}
+
+void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
+                     const mtt_cand *c, uint16_t m, mtt_real *beta, mtt_real *L, uint8_t *rank_out)
+{
+    const mtt_real pdpg = pd * pg;
+    const mtt_real fm = (mtt_real)m;
+    uint16_t i, j;
+    for (i = 0; i < m; ++i) {
+        mtt_real pr, A, C;
+        uint16_t rank = 1;
+        /* Rank 1 is the strongest; equal intensities: lower index ranks
+         * stronger (spec 7.1). */
+        for (j = 0; j < m; ++j) {
+            if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
+                ++rank;
+            }
+        }
+        if (rank_out != NULL) {
+            rank_out[i] = (uint8_t)rank;
+        }
+        pr = (prank != NULL) ? prank[rank - 1u] : MTT_R(1.0) / fm;
+        A = pdpg * fm * c[i].p * pr / c[i].lam;
+        C = MTT_R(1.0) - pdpg + pdpg * (fm / (c[i].lam * vg)) * (MTT_R(1.0) - pr);
+        L[i] = A + C;
+        beta[i] = A / L[i];
+    }
+}
+
+uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
+                       int16_t *best)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_cand c[MTT_MAX_GATED];
+    uint16_t pk[MTT_MAX_GATED];
+    mtt_real beta[MTT_MAX_GATED], L[MTT_MAX_GATED];
+    uint8_t rank[MTT_MAX_GATED];
+    const mtt_real *prank = NULL;
+    uint16_t m = 0, k, b = 0;
+
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        mtt_pair *pp = &trk->pairs[k];
+        const mtt_mstore *ms = &trk->meas[pp->meas];
+        pp->beta = MTT_R(0.0);
+        if (excl_used && ms->used && (int16_t)k != keep) {
+            continue;
+        }
+        c[m].p = pp->p;
+        c[m].lam = pp->lam;
+        c[m].amp = ms->amp;
+        c[m].idx = pp->meas;
+        c[m].has_amp = ms->has_amp;
+        pk[m] = k;
+        ++m;
+    }
+    *best = -1;
+    if (m == 0u) {
+        return 0;
+    }
+    /* A track with any gated measurement lacking amplitude uses rho = 0 (spec 7.1). */
+    if (trk->par.snr_rho > MTT_R(0.0) && tf->has_all_amp) {
+        prank = &trk->prank[MTT_PRANK_ROW(m)];
+    }
+    mtt_ihpda_betas(trk->par.pd, trk->par.pg, tf->vg, prank, c, m, beta, L, rank);
+    for (k = 0; k < m; ++k) {
+        trk->pairs[pk[k]].beta = beta[k];
+        trk->pairs[pk[k]].L = L[k];
+        /* Candidates are in measurement order, so a strict '>' keeps the
+         * lower index on ties; rule 1 lets the smaller rank win first. */
+        if (k == 0u || beta[k] > beta[b] || (rule == 1 && beta[k] == beta[b] && rank[k] < rank[b])) {
+            b = k;
+        }
+    }
+    *best = (int16_t)pk[b];
+    return m;
+}

@@ -1,0 +1,105 @@
+/* merge.c - track merging (spec 12.3, S0 eq. 17).
+ *
+ * d^2 = (x_a - x_b)' (P_a + P_b)^-1 (x_a - x_b) < t_merge merges.  Only
+ * tracks of one cluster are candidates (they share gated measurements
+ * transitively); tracks born this frame have no gate and are not.  Pairs
+ * are processed by ascending d^2 (ties by track index); the survivor is the
+ * smaller position-covariance trace (then higher existence, then lower
+ * identity), keeps its state, takes the larger existence and the OR of the
+ * confirmed flags. */
+#include "mtt_internal.h"
+
+int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2)
+{
+    mtt_real A[4][4], d[4];
+    int i, j;
+    for (i = 0; i < 4; ++i) {
+        d[i] = a->x[i] - b->x[i];
+        for (j = 0; j < 4; ++j) {
+            A[i][j] = a->P[i][j] + b->P[i][j];
+        }
+    }
+    return mtt_chol4_quad(A, d, d2);
+}
+
+static int less_cand(const void *pa, const void *pb, const void *ctx)
+{
+    const mtt_merge_cand *a = (const mtt_merge_cand *)pa, *b = (const mtt_merge_cand *)pb;
+    (void)ctx;
+    if (a->d2 != b->d2) {
+        return a->d2 < b->d2;
+    }
+    if (a->a != b->a) {
+        return a->a < b->a;
+    }
+    return a->b < b->b;
+}
+
+static void add_cand(mtt_tracker *trk, mtt_real d2, uint16_t a, uint16_t b)
+{
+    mtt_merge_cand c;
+    uint16_t k, worst = 0;
+    c.d2 = d2;
+    c.a = a;
+    c.b = b;
+    if (trk->n_merge < MTT_MAX_MERGE_PAIRS) {
+        trk->merge[trk->n_merge++] = c;
+        return;
+    }
+    /* Full: the largest d^2 gives way. */
+    trk->stats.last.merge_dropped++;
+    for (k = 1; k < MTT_MAX_MERGE_PAIRS; ++k) {
+        if (less_cand(&trk->merge[worst], &trk->merge[k], NULL)) {
+            worst = k;
+        }
+    }
+    if (less_cand(&c, &trk->merge[worst], NULL)) {
+        trk->merge[worst] = c;
+    }
+}
+
+void mtt_merge_frame(mtt_tracker *trk)
+{
+    const mtt_real thr = trk->par.merge_threshold;
+    uint16_t c, q1, q2, k;
+    trk->n_merge = 0;
+    if (!(thr > MTT_R(0.0))) {
+        return;
+    }
+    for (c = 0; c < trk->n_clusters; ++c) {
+        for (q1 = trk->cl_first[c]; q1 < trk->cl_first[c + 1u]; ++q1) {
+            for (q2 = (uint16_t)(q1 + 1u); q2 < trk->cl_first[c + 1u]; ++q2) {
+                uint16_t a = trk->cl_list[q1], b = trk->cl_list[q2];
+                mtt_real d2;
+                if (mtt_merge_d2(&trk->tracks[a], &trk->tracks[b], &d2) == 0 && d2 < thr) {
+                    add_cand(trk, d2, a, b);
+                }
+            }
+        }
+    }
+    mtt_sort(trk->merge, trk->n_merge, sizeof trk->merge[0], less_cand, NULL);
+    for (k = 0; k < trk->n_merge; ++k) {
+        mtt_track *ta = &trk->tracks[trk->merge[k].a], *tb = &trk->tracks[trk->merge[k].b];
+        mtt_track *keep, *drop;
+        mtt_real tra, trb;
+        if (ta->dead || tb->dead) {
+            continue;
+        }
+        tra = ta->P[0][0] + ta->P[1][1];
+        trb = tb->P[0][0] + tb->P[1][1];
+        /* a has the lower index, hence the lower identity: it wins full ties. */
+        if (tra < trb || (tra == trb && ta->existence >= tb->existence)) {
+            keep = ta;
+            drop = tb;
+        } else {
+            keep = tb;
+            drop = ta;
+        }
+        if (drop->existence > keep->existence) {
+            keep->existence = drop->existence;
+        }
+        keep->confirmed = (uint8_t)(keep->confirmed | drop->confirmed);
+        drop->dead = 1;
+        trk->stats.last.merges++;
+    }
+}

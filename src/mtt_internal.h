@@ -1,0 +1,119 @@
+/* mtt_internal.h - stage functions shared by the source files and the unit
+ * tests.  Not installed; not part of the API.  Section numbers refer to
+ * ALGORITHMS.md ("spec"). */
+#ifndef MTT_INTERNAL_H
+#define MTT_INTERNAL_H
+
+#include "mtt/mtt.h"
+
+#define MTT_MAGIC 0x4d54545fu /* "MTT_" : set by mtt_tracker_init */
+#define MTT_NONE16 ((uint16_t)0xffffu)
+#define MTT_PI MTT_R(3.14159265358979323846)
+
+/* ---- sort.c: heap sort and sift for small fixed arrays (no recursion) ---- */
+typedef int (*mtt_less_fn)(const void *a, const void *b, const void *ctx);
+void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *ctx);
+/* Restore the heap property below node i of a heap whose root is the
+ * element that is NOT less than any other ("max-heap" for `less`). */
+void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less, const void *ctx);
+
+/* ---- kalman.c: CV model and Kalman filter (spec 2, 3, 6) ---- */
+void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4]);
+void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real P[4][4],
+                        mtt_real xp[4], mtt_real Pp[4][4]);
+/* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
+ * Returns 0, or -1 when det S is not positive and finite (spec 3). */
+int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
+                     mtt_real Si[3], mtt_real *det, mtt_real K[4][2]);
+mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
+/* Joseph form P_c = (I-KH) Pp (I-KH)' + K R K', symmetrised. */
+void mtt_kalman_joseph(mtt_real Pp[4][4], mtt_real K[4][2], const mtt_real R[3],
+                       mtt_real Pc[4][4]);
+/* PDA update with m measurements (spec 6); with m = 1 and beta0 = 1 - beta
+ * this is the IHPDA single-measurement update of spec 7.4. */
+void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2],
+                    const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
+void mtt_sym4(mtt_real P[4][4]);
+/* Solve (A) y = b for a symmetric positive definite 4x4 A by Cholesky;
+ * returns d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
+int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2);
+
+/* ---- gate.c: gating, gate area, likelihood (spec 4) ---- */
+mtt_real mtt_gate_gamma(mtt_real pg);
+mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s);
+mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N / PG */
+/* Frame stage: fills trk->pairs (sorted by track, then measurement), each
+ * track frame's pair range, S, gate area, has_all_amp, and the CSR lists of
+ * pairs per measurement.  Needs trk->tf[].xp/Pp/S/Si/det_s/valid. */
+void mtt_gate_frame(mtt_tracker *trk);
+
+/* ---- lm_clutter.c: clutter densities (spec 5.2, 8) ---- */
+mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg);
+/* Frame stage: per-track lambda (known or spec 5.2), then pair.lam = lambda
+ * (lm = 0) or the LM density lambda~ (lm = 1, spec 8.2). */
+void mtt_clutter_frame(mtt_tracker *trk, int lm);
+
+/* ---- ihpda.c: intensity order statistics and IHPDA (spec 7) ---- */
+/* P_r(l | m, rho), l = 1..m, into out[0..m-1], product/recurrence form (spec 7.2). */
+void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out);
+/* Index of row m (1-based m) of the tabulated P_r triangle. */
+#define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
+/* One IHPDA candidate set: p_j, lambda_j, amplitude, input order. */
+typedef struct mtt_cand {
+    mtt_real p, lam, amp;
+    uint16_t idx;         /* measurement index (for the tie rules) */
+    uint8_t has_amp;
+} mtt_cand;
+/* beta_j and L_j (spec 7.3) of the m candidates; prank = P_r(1..m) for
+ * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
+ * NULL) receives the 1-based rank of each candidate. */
+void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
+                     const mtt_cand *c, uint16_t m, mtt_real *beta, mtt_real *L, uint8_t *rank_out);
+/* Compute the IHPDA row of track ti over its gated pairs: with excl_used,
+ * pairs whose measurement is used (assigned) are left out, except the pair
+ * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);
+ * returns the number of candidates m; *best gets the argmax pair index (-1
+ * when m = 0) under the tie rule `rule` (0: lowest measurement index,
+ * spec 10.1; 1: smaller rank, then lower index, spec 7.4). */
+uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
+                       int16_t *best);
+
+/* ---- ipda.c: IPDA (spec 6) ---- */
+void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
+                    uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L);
+
+/* ---- existence.c: Markov chain one and the existence update (spec 11, 6) ---- */
+mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21);
+mtt_real mtt_existence_update(mtt_real ex_pred, mtt_real L);
+
+/* ---- cluster.c: clusters by union-find (spec 9) ---- */
+void mtt_cluster_frame(mtt_tracker *trk);
+
+/* ---- mmr.c: MMR assignment with recomputation (spec 10.1) ---- */
+/* Assigns within cluster c; recompute = 0 runs the static greedy on the
+ * pair.beta values as they are (spec 10.1 without recomputation, TV9). */
+void mtt_mmr_cluster(mtt_tracker *trk, uint16_t c, int recompute);
+
+/* ---- update.c: state and existence update of every track (spec 6, 7.4, 10.3) ---- */
+void mtt_update_frame(mtt_tracker *trk);
+
+/* ---- initiate.c: two-point initiation (spec 12.1, 12.2) ---- */
+mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I);
+/* Two-point covariance [[R, R/dt], [R/dt, 2R/dt^2]] for a full R (spec 12.1). */
+void mtt_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_real P[4][4]);
+/* Velocity/intensity gate of a pair (a at k-1, b at k); 1 = accept. */
+int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt);
+void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
+
+/* ---- merge.c: track merging (spec 12.3) ---- */
+/* d^2 of two states; returns -1 when P_a + P_b is not positive definite. */
+int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2);
+void mtt_merge_frame(mtt_tracker *trk);
+
+/* ---- tracker.c ---- */
+/* Append a track; returns its index or -1 when the table is full. */
+int mtt_track_append(mtt_tracker *trk, const mtt_real x[4], mtt_real P[4][4],
+                     mtt_real existence, int confirmed, int born);
+
+#endif /* MTT_INTERNAL_H */

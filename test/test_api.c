@@ -1,0 +1,264 @@
+/* test_api.c - bounds, bad data and API misuse through the public API
+ * (issue 2, end-to-end d and e; DESIGN.md "Errors and bad input"). */
+#include <math.h>
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "unity.h"
+
+static mtt_tracker trk, copy;
+static mtt_meas big[3 * MTT_MAX_MEAS];
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static void init_default(void)
+{
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_R(1e-4);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+}
+
+static mtt_meas mk(mtt_real x, mtt_real y, mtt_real a, int has)
+{
+    mtt_meas m;
+    m.x = x;
+    m.y = y;
+    m.amplitude = a;
+    m.has_amplitude = has;
+    return m;
+}
+
+/* (d) 3 x MTT_MAX_MEAS measurements: the strongest MTT_MAX_MEAS stay, in
+ * input order, and the rest are counted. */
+void test_overflow_keeps_strongest(void)
+{
+    const uint32_t n = 3u * MTT_MAX_MEAS;
+    mtt_stats st;
+    uint32_t i, kept_prev = 0;
+    init_default();
+    /* Amplitude is a permutation of 0..n-1 (i * 7 mod n, n not a multiple of 7),
+     * so exactly the inputs with amplitude >= 2 MTT_MAX_MEAS are the strongest. */
+    for (i = 0; i < n; ++i) {
+        uint32_t a = (i * 7u) % n;
+        big[i] = mk((mtt_real)(i % 97u) * MTT_R(10.0), (mtt_real)(i / 97u) * MTT_R(10.0), (mtt_real)a, 1);
+    }
+    TEST_ASSERT_EQUAL_INT(0, (int)(n % 7u == 0u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(n, st.last.meas_in);
+    TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, st.last.meas_dropped);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, trk.n_meas);
+    for (i = 0; i < trk.n_meas; ++i) {
+        uint32_t src = trk.meas[i].src;
+        TEST_ASSERT_TRUE((src * 7u) % n >= 2u * MTT_MAX_MEAS);
+        if (i > 0) {
+            TEST_ASSERT_TRUE(src > kept_prev); /* input order kept */
+        }
+        kept_prev = src;
+    }
+}
+
+/* Without amplitudes, the first MTT_MAX_MEAS inputs stay. */
+void test_overflow_without_amplitude_keeps_first(void)
+{
+    const uint32_t n = MTT_MAX_MEAS + 5u;
+    mtt_stats st;
+    uint32_t i;
+    init_default();
+    for (i = 0; i < n; ++i) {
+        big[i] = mk((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_dropped);
+    TEST_ASSERT_EQUAL_UINT32(MTT_MAX_MEAS - 1u, trk.meas[trk.n_meas - 1u].src);
+}
+
+/* (e) Bad data inside a valid call is skipped and counted. */
+void test_bad_data_skipped_and_counted(void)
+{
+    mtt_meas m[7];
+    mtt_stats st;
+    volatile mtt_real zero = MTT_R(0.0);
+    init_default();
+    m[0] = mk(zero / zero, MTT_R(1.0), MTT_R(1.0), 1);       /* NaN x */
+    m[1] = mk(MTT_R(1.0), MTT_R(1.0) / zero, MTT_R(1.0), 1); /* Inf y */
+    m[2] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 1);       /* negative amplitude */
+    m[3] = mk(MTT_R(5.0), MTT_R(5.0), zero / zero, 1);       /* NaN amplitude */
+    m[4] = mk(MTT_R(10.0), MTT_R(20.0), MTT_R(2.0), 1);      /* good */
+    m[5] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 0);       /* no amplitude: value ignored, good */
+    m[6] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(1.0) / zero, 1); /* Inf amplitude */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 7));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(7u, st.last.meas_in);
+    TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT(2u, trk.n_meas);
+    TEST_ASSERT_EQUAL_UINT32(4u, trk.meas[0].src);
+    TEST_ASSERT_EQUAL_UINT32(5u, trk.meas[1].src);
+    /* Both good detections still pair with the next frame's one (within
+     * vmax = 60 of it: 2.2 and 17.5 away): two births. */
+    m[0] = mk(MTT_R(12.0), MTT_R(21.0), MTT_R(2.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(2u, st.last.births);
+    TEST_ASSERT_EQUAL_UINT32(5u, st.total.meas_bad);
+}
+
+/* (e) API misuse returns an error and changes nothing. */
+void test_misuse_changes_nothing(void)
+{
+    mtt_meas m = mk(MTT_R(1.0), MTT_R(2.0), MTT_R(1.0), 1);
+    volatile mtt_real zero = MTT_R(0.0);
+    mtt_params p;
+    mtt_track_view v;
+    mtt_stats st;
+    size_t cnt;
+    const char *field = "x";
+    mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(1.0)};
+    mtt_real P[16];
+    uint32_t id;
+    int i;
+
+    init_default();
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(5.0), &m, 1));
+    memcpy(&copy, &trk, sizeof trk);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(NULL, MTT_R(6.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(&trk, MTT_R(6.0), NULL, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(5.0), &m, 1)); /* equal */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(4.0), &m, 1)); /* backwards */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, zero / zero, &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(1.0) / zero, &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_count(&trk, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_track(&trk, 0, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_tracker_track(&trk, 1000, &v));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_stats(NULL, &st));
+    /* add_track: NULL, not finite, not symmetric, not positive definite */
+    for (i = 0; i < 16; ++i) {
+        P[i] = (i % 5 == 0) ? MTT_R(1.0) : MTT_R(0.0); /* identity */
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_add_track(&trk, NULL, P, &id));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_add_track(&trk, x, NULL, &id));
+    x[1] = zero / zero;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
+    x[1] = MTT_R(0.0);
+    P[1] = MTT_R(0.5); /* P[0][1] != P[1][0] */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
+    P[1] = MTT_R(0.0);
+    P[15] = MTT_R(-1.0); /* not positive definite */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &trk, sizeof trk);
+
+    /* invalid parameters: error, the first bad field named, tracker untouched */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.pd = MTT_R(1.5);
+    p.pg = MTT_R(2.0);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
+    TEST_ASSERT_EQUAL_STRING("pd", field);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &trk, sizeof trk);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_init(NULL, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_init(&trk, NULL));
+
+    /* an uninitialised tracker is an error, not undefined behaviour */
+    memset(&trk, 0, sizeof trk);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_step(&trk, MTT_R(1.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_count(&trk, &cnt));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_add_track(&trk, x, P, &id));
+}
+
+/* A full table: seeding past MTT_MAX_TRACKS fails; births are counted as dropped. */
+void test_full_table(void)
+{
+    mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_real P[16];
+    mtt_stats st;
+    mtt_meas m[2];
+    uint32_t id = 0;
+    int i;
+    init_default();
+    for (i = 0; i < 16; ++i) {
+        P[i] = (i % 5 == 0) ? MTT_R(4.0) : MTT_R(0.0);
+    }
+    for (i = 0; i < MTT_MAX_TRACKS; ++i) {
+        x[0] = (mtt_real)i * MTT_R(1000.0); /* far apart: no merging */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)i, id); /* identities 0, 1, ... */
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_FULL, mtt_tracker_add_track(&trk, x, P, &id));
+    /* two frames with a far-away detection pair: a birth is wanted, none possible */
+    m[0] = mk(MTT_R(-5000.0), MTT_R(-5000.0), MTT_R(1.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 1));
+    m[0] = mk(MTT_R(-4998.0), MTT_R(-5000.0), MTT_R(1.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(0u, st.last.births);
+    TEST_ASSERT_EQUAL_UINT32(1u, st.last.births_dropped);
+}
+
+/* Same input, same output: two trackers fed identically end bit-identical. */
+void test_deterministic(void)
+{
+    static mtt_tracker a, b;
+    mtt_params p;
+    mtt_meas m[20];
+    int k, j;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_R(1e-3);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&a, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&b, &p));
+    for (k = 0; k < 30; ++k) {
+        for (j = 0; j < 20; ++j) {
+            unsigned h = (unsigned)(k * 131 + j * 71) % 997u;
+            m[j] = mk((mtt_real)h * MTT_R(0.3) + (mtt_real)k, (mtt_real)(j * 11),
+                      (mtt_real)(h % 13u), (int)(h % 3u != 0u));
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k, m, 20));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&b, (mtt_real)k, m, 20));
+    }
+    TEST_ASSERT_TRUE(a.n_tracks > 0u);
+    TEST_ASSERT_EQUAL_MEMORY(&a.tracks, &b.tracks, sizeof a.tracks);
+    TEST_ASSERT_EQUAL_MEMORY(&a.stats, &b.stats, sizeof a.stats);
+}
+
+/* The optional cycle counter fills per-stage costs. */
+static uint32_t fake_clock;
+static uint32_t tick(void *ctx)
+{
+    (void)ctx;
+    fake_clock += 10u;
+    return fake_clock;
+}
+
+void test_cycle_counter(void)
+{
+    mtt_params p;
+    mtt_stats st;
+    mtt_meas m = mk(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), 1);
+    int s;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.cycle_counter = tick;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    for (s = 0; s < MTT_STAGE_COUNT; ++s) {
+        TEST_ASSERT_EQUAL_UINT32(10u, st.stage_cycles[s]); /* one tick per stage */
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_overflow_keeps_strongest);
+    RUN_TEST(test_overflow_without_amplitude_keeps_first);
+    RUN_TEST(test_bad_data_skipped_and_counted);
+    RUN_TEST(test_misuse_changes_nothing);
+    RUN_TEST(test_full_table);
+    RUN_TEST(test_deterministic);
+    RUN_TEST(test_cycle_counter);
+    return UNITY_END();
+}

@@ -1,0 +1,177 @@
+#!/usr/bin/env bash
+# tools/dev.sh - the one entry point for developers and CI.
+#
+#   ./tools/dev.sh deps    install what the build needs (idempotent)
+#   ./tools/dev.sh test    deps, then the workflows test-float, test-double,
+#                          test-float-small (configure + build + ctest each);
+#                          ends with the line "N passed, M failed"
+#   ./tools/dev.sh demo    deps, build host-float, run the Monte Carlo demo of
+#                          scenarios/crossing3.json into out/demo
+#   ./tools/dev.sh --help
+#
+# Works from any directory.  deps needs root for apt (as on CI); elsewhere it
+# only reports what is missing.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
+PY_MODULES=(numpy matplotlib)
+WORKFLOWS=(test-float test-double test-float-small)
+
+say() { printf 'dev.sh: %s\n' "$*"; }
+die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }
+
+usage() {
+  sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+}
+
+is_root() { [[ "$(id -u)" -eq 0 ]]; }
+
+# ---------------------------------------------------------------- deps
+apt_updated=0
+apt_update_once() {
+  if ((apt_updated == 0)); then
+    say "apt-get update"
+    apt-get update -qq
+    apt_updated=1
+  fi
+}
+
+deb_installed() {
+  [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
+}
+
+deps_debian() {
+  local missing=() p
+  for p in "${DEB_PACKAGES[@]}"; do
+    deb_installed "$p" || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    say "Debian packages present: ${DEB_PACKAGES[*]}"
+    return 0
+  fi
+  if ! is_root || ! command -v apt-get >/dev/null 2>&1; then
+    die "missing Debian packages: ${missing[*]} (run 'apt-get install ${missing[*]}' as root)"
+  fi
+  apt_update_once
+  say "apt-get install ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+}
+
+deps_other() {
+  # No dpkg: check the commands and say what is missing.
+  local c missing=()
+  for c in cmake ninja cc pkg-config; do
+    command -v "$c" >/dev/null 2>&1 || missing+=("$c")
+  done
+  ((${#missing[@]} == 0)) || die "missing tools: ${missing[*]} (and cJSON headers for tools/)"
+}
+
+check_cmake_version() {
+  local v
+  v="$(cmake --version | sed -n 's/^cmake version \([0-9][0-9]*\.[0-9][0-9]*\).*/\1/p')"
+  local major="${v%%.*}" minor="${v#*.}"
+  if ((major < 3 || (major == 3 && minor < 25))); then
+    die "cmake >= 3.25 needed (CMakePresets.json version 6), found ${v:-unknown}"
+  fi
+}
+
+deps_python() {
+  command -v python3 >/dev/null 2>&1 || die "python3 not found"
+  local mods
+  mods="$(IFS=,; echo "${PY_MODULES[*]}")"
+  if python3 -c "import $mods" 2>/dev/null; then
+    say "python3 modules present: ${PY_MODULES[*]}"
+    return 0
+  fi
+  say "python3 -m pip install ${PY_MODULES[*]}"
+  if PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore \
+       python3 -m pip install --quiet "${PY_MODULES[@]}"; then
+    return 0
+  fi
+  # A Debian system python refuses pip (PEP 668): take Debian's packages.
+  if [[ "$(command -v python3)" == /usr/bin/python3 ]] && is_root && command -v apt-get >/dev/null 2>&1; then
+    apt_update_once
+    say "apt-get install python3-numpy python3-matplotlib"
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+      python3-numpy python3-matplotlib >/dev/null
+    python3 -c "import $mods" && return 0
+  fi
+  die "could not install python modules ${PY_MODULES[*]}"
+}
+
+cmd_deps() {
+  if command -v dpkg-query >/dev/null 2>&1; then
+    deps_debian
+  else
+    deps_other
+  fi
+  check_cmake_version
+  "$ROOT/tools/setup-unity.sh"
+  deps_python
+}
+
+# ---------------------------------------------------------------- test
+cmd_test() {
+  cmd_deps
+  local passed=0 failed=0 wf log rc line total nfail
+  log="$(mktemp "${TMPDIR:-/tmp}/mtt-dev-test.XXXXXX")"
+  # shellcheck disable=SC2064
+  trap "rm -f '$log'" EXIT
+  for wf in "${WORKFLOWS[@]}"; do
+    say "=== cmake --workflow --preset $wf"
+    rc=0
+    cmake --workflow --preset "$wf" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+    # ctest: "100% tests passed, 0 tests failed out of 12"
+    #        "83% tests passed, 2 tests failed out of 12"
+    line="$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n1 || true)"
+    if [[ -n "$line" ]]; then
+      nfail="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")"
+      total="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")"
+      passed=$((passed + total - nfail))
+      failed=$((failed + nfail))
+    fi
+    if ((rc != 0)); then
+      say "workflow $wf failed (exit $rc); stopping"
+      if [[ -z "$line" ]]; then
+        # configure or build failed: count it as one failure
+        failed=$((failed + 1))
+      fi
+      echo "$passed passed, $failed failed"
+      return "$rc"
+    fi
+  done
+  echo "$passed passed, $failed failed"
+  ((failed == 0))
+}
+
+# ---------------------------------------------------------------- demo
+cmd_demo() {
+  cmd_deps
+  if [[ ! -f tools/mc.py ]]; then
+    die "tools/mc.py (the Monte Carlo runner) does not exist yet; the demo needs it"
+  fi
+  if [[ ! -f scenarios/crossing3.json ]]; then
+    die "scenarios/crossing3.json does not exist yet; the demo needs it"
+  fi
+  cmake --preset host-float
+  cmake --build --preset host-float
+  [[ -x build/host-float/tools/mtt-track ]] \
+    || die "build/host-float/tools/mtt-track was not built (tools/CMakeLists.txt must build it)"
+  mkdir -p out/demo
+  python3 tools/mc.py --scenario scenarios/crossing3.json --runs 20 --jobs 2 \
+    --out out/demo --mtt-track build/host-float/tools/mtt-track
+  say "demo output in $ROOT/out/demo"
+}
+
+case "${1:-}" in
+  deps) cmd_deps ;;
+  test) cmd_test ;;
+  demo) cmd_demo ;;
+  -h|--help|help) usage ;;
+  "") usage; exit 2 ;;
+  *) printf 'dev.sh: unknown command %s\n\n' "$1" >&2; usage >&2; exit 2 ;;
+esac
