@@ -57,10 +57,10 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
                        int16_t *best)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
-    mtt_cand c[MTT_MAX_GATED];
-    uint16_t pk[MTT_MAX_GATED];
-    mtt_real beta[MTT_MAX_GATED], L[MTT_MAX_GATED];
-    uint8_t rank[MTT_MAX_GATED];
+    mtt_cand *c = trk->row.cand;
+    uint16_t *pk = trk->row.pair;
+    mtt_real *beta = trk->row.beta, *L = trk->row.L;
+    uint8_t *rank = trk->row.rank;
     const mtt_real *prank = NULL;
     uint16_t m = 0, k, b = 0;
 

@@ -59,12 +59,6 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm);
 void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out);
 /* Index of row m (1-based m) of the tabulated P_r triangle. */
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
-/* One IHPDA candidate set: p_j, lambda_j, amplitude, input order. */
-typedef struct mtt_cand {
-    mtt_real p, lam, amp;
-    uint16_t idx;         /* measurement index (for the tie rules) */
-    uint8_t has_amp;
-} mtt_cand;
 /* beta_j and L_j (spec 7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
  * NULL) receives the 1-based rank of each candidate. */

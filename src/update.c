@@ -50,13 +50,10 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
-    mtt_real p[MTT_MAX_GATED], lam[MTT_MAX_GATED], beta[MTT_MAX_GATED], nu[MTT_MAX_GATED][2];
+    mtt_real *p = trk->row.p, *lam = trk->row.lam, *beta = trk->row.beta;
+    mtt_real(*nu)[2] = trk->row.nu;
     mtt_real beta0, L;
     uint16_t m = tf->pair_count, j, b = 0;
-    for (j = 0; j < MTT_MAX_GATED; ++j) {
-        p[j] = MTT_R(0.0); /* silences a false maybe-uninitialized; 32 stores */
-        lam[j] = MTT_R(1.0);
-    }
     for (j = 0; j < m; ++j) {
         const mtt_pair *pp = &trk->pairs[tf->pair_first + j];
         p[j] = pp->p;

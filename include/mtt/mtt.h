@@ -223,6 +223,26 @@ typedef struct mtt_mstore {
     uint8_t used;        /* assigned / selected / gated: not available for initiation */
 } mtt_mstore;
 
+/** One IHPDA candidate: p_j, lambda_j, amplitude, measurement index. */
+typedef struct mtt_cand {
+    mtt_real p, lam, amp;
+    uint16_t idx;         /* measurement index (for the tie rules) */
+    uint8_t has_amp;
+} mtt_cand;
+
+/** Per-row scratch of the association stages: a member of the tracker,
+ *  not the stack, so mtt_tracker_step's stack stays small and bounded. */
+typedef struct mtt_row_scratch {
+    mtt_cand cand[MTT_MAX_GATED];
+    uint16_t pair[MTT_MAX_GATED];
+    mtt_real beta[MTT_MAX_GATED];
+    mtt_real L[MTT_MAX_GATED];
+    mtt_real p[MTT_MAX_GATED];
+    mtt_real lam[MTT_MAX_GATED];
+    mtt_real nu[MTT_MAX_GATED][2];
+    uint8_t rank[MTT_MAX_GATED];
+} mtt_row_scratch;
+
 /** A track pair that passed the merge test (spec 12.3). */
 typedef struct mtt_merge_cand {
     mtt_real d2;
@@ -258,6 +278,7 @@ typedef struct mtt_tracker {
     uint16_t n_clusters;
     uint16_t n_merge;
     mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
+    mtt_row_scratch row;
     /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
     uint16_t n_prev;
     mtt_mstore prev[MTT_MAX_MEAS];
