@@ -95,7 +95,7 @@ typedef struct mtt_params {
     mtt_assoc association;      /**< default MTT_ASSOC_LM_IHPDA */
     mtt_real process_psd;       /**< Sw of the CV model, > 0 (default 5) */
     mtt_real meas_sigma[2];     /**< sx, sy > 0 (default 1, 1) */
-    mtt_real pd;                /**< detection probability in (0, 1) (default 0.9) */
+    mtt_real pd;                /**< detection probability in (0, 1] (default 0.9); PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability in (0, 1) (default 0.999) */
     mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (spec 5.2) (default 0) */
     mtt_real snr_rho;           /**< rho in [0, 1e6]; 0 ignores amplitude (default 0) */
@@ -319,7 +319,8 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
 
 /** Add a known (seeded) track: confirmed, existence 1 (FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16
- *         values), symmetric (to 1e-6 relative) and positive definite.
+ *         values; pass &P[0][0] for a mtt_real[4][4]), symmetric (to 1e-6
+ *         relative) and positive definite.
  *  @param id if not NULL, receives the new track's identity.
  *  @return MTT_OK; MTT_ERR_NULL (trk, x or P); MTT_ERR_NOT_INIT; MTT_ERR_VALUE
  *          if x or P is not finite or P is not symmetric positive definite;
