@@ -22,16 +22,6 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
     return mtt_exp(MTT_R(-0.5) * d2) / (MTT_R(2.0) * MTT_PI * mtt_sqrt(det_s) * pg);
 }
 
-static int less_x(const void *a, const void *b, const void *ctx)
-{
-    const mtt_mstore *m = (const mtt_mstore *)ctx;
-    uint16_t i = *(const uint16_t *)a, j = *(const uint16_t *)b;
-    if (m[i].x != m[j].x) {
-        return m[i].x < m[j].x;
-    }
-    return i < j;
-}
-
 static int less_pair(const void *a, const void *b, const void *ctx)
 {
     const mtt_pair *p = (const mtt_pair *)a, *q = (const mtt_pair *)b;
@@ -89,7 +79,7 @@ void mtt_gate_frame(mtt_tracker *trk)
     for (i = 0; i < n; ++i) {
         trk->order[i] = i;
     }
-    mtt_sort(trk->order, n, sizeof trk->order[0], less_x, trk->meas);
+    mtt_sort_by_x(trk->order, trk->init_cand, n, trk->meas);
     trk->n_pairs = 0;
 
     for (i = 0; i < trk->n_tracks; ++i) {

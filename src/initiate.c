@@ -5,7 +5,8 @@
  *
  * U_k = measurements of frame k not used by any track; U_k-1 = the same of
  * the previous frame minus those that already started a track.  Every
- * accepted pair starts one tentative track (merging removes duplicates). */
+ * accepted pair starts one tentative track (merging removes duplicates).
+ * Cost: O((|U_k| + |U_k-1| + pairs within reach) log n), by an x sweep. */
 #include "mtt_internal.h"
 
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
@@ -71,18 +72,73 @@ int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_msto
     return dx * dx + dy * dy <= (trk->par.vmax * dt) * (trk->par.vmax * dt);
 }
 
+static int idx_less(const void *a, const void *b, const void *ctx)
+{
+    (void)ctx;
+    return *(const uint16_t *)a < *(const uint16_t *)b;
+}
+
+/* Largest |dx| any pair gate can accept this frame: vmax dT for the circle;
+ * for the intensity gate the x-extent of d' S0^-1 d <= gamma, which is
+ * sqrt(gamma (sigma_P^2 + R_xx)) = sqrt(f^2 + gamma R_xx). */
+static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
+{
+    mtt_real r = trk->par.vmax * dt;
+    uint16_t a;
+    if (trk->par.init_gate != MTT_INIT_GATE_INTENSITY) {
+        return r;
+    }
+    for (a = 0; a < trk->n_prev; ++a) {
+        if (trk->prev[a].has_amp) {
+            mtt_real f = mtt_init_intensity_f(&trk->par, trk->prev[a].amp);
+            mtt_real ra = mtt_sqrt(f * f + trk->gamma * trk->R[0]);
+            r = (ra > r) ? ra : r;
+        }
+    }
+    return r;
+}
+
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
 {
-    uint16_t j, a;
-    if (trk->par.initiate && dt > MTT_R(0.0)) {
+    uint16_t j, a, k;
+    if (trk->par.initiate && dt > MTT_R(0.0) && trk->n_prev > 0u) {
+        /* U_k-1 sorted along x once: each z_k scans only the slice within
+         * reach, O((n + pairs) log n) instead of |U_k| x |U_k-1|. */
+        const mtt_real r = reach_x(trk, dt);
         for (j = 0; j < trk->n_meas; ++j) {
             mtt_mstore *b = &trk->meas[j];
+            uint16_t lo = 0, hi = trk->n_prev, nc = 0;
             int started = 0;
             if (b->used) {
                 continue;
             }
-            for (a = 0; a < trk->n_prev; ++a) {
-                const mtt_mstore *pa = &trk->prev[a];
+            while (lo < hi) {
+                uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
+                if (trk->prev[trk->prev_order[mid]].x < b->x - r) {
+                    lo = (uint16_t)(mid + 1u);
+                } else {
+                    hi = mid;
+                }
+            }
+            for (k = lo; k < trk->n_prev && trk->prev[trk->prev_order[k]].x <= b->x + r; ++k) {
+                trk->init_cand[nc++] = trk->prev_order[k];
+            }
+            /* Births in input order of z_k-1, as a plain double loop would;
+             * the slice is short, so insertion sort unless it is not. */
+            if (nc > 16u) {
+                mtt_sort(trk->init_cand, nc, sizeof trk->init_cand[0], idx_less, NULL);
+            } else {
+                uint16_t q, v;
+                for (k = 1; k < nc; ++k) {
+                    v = trk->init_cand[k];
+                    for (q = k; q > 0u && trk->init_cand[q - 1u] > v; --q) {
+                        trk->init_cand[q] = trk->init_cand[q - 1u];
+                    }
+                    trk->init_cand[q] = v;
+                }
+            }
+            for (k = 0; k < nc; ++k) {
+                const mtt_mstore *pa = &trk->prev[trk->init_cand[k]];
                 mtt_real x[4], P[4][4];
                 if (!mtt_init_pair_ok(trk, pa, b, dt)) {
                     continue;
@@ -104,10 +160,20 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             }
         }
     }
+    /* Store U_k for the next frame, with its x order taken from this
+     * frame's gating sort (order[]), so the next frame sorts nothing;
+     * init_cand maps a measurement to its place in prev. */
     trk->n_prev = 0;
     for (j = 0; j < trk->n_meas; ++j) {
         if (!trk->meas[j].used) {
+            trk->init_cand[j] = trk->n_prev;
             trk->prev[trk->n_prev++] = trk->meas[j];
+        }
+    }
+    for (k = 0, a = 0; k < trk->n_meas; ++k) {
+        j = trk->order[k];
+        if (!trk->meas[j].used) {
+            trk->prev_order[a++] = trk->init_cand[j];
         }
     }
 }

@@ -17,6 +17,11 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
  * element that is NOT less than any other ("max-heap" for `less`). */
 void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less, const void *ctx);
 
+/* Sort idx[0..n) ascending by meas[idx].x, ties by index (stable merge
+ * sort, bottom-up: no recursion; tmp holds n entries).  The hot-path sort:
+ * typed compares, no byte swaps. */
+void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
+
 /* ---- kalman.c: CV model and Kalman filter (spec 2, 3, 6) ---- */
 void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4]);
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real P[4][4],
@@ -88,6 +93,49 @@ void mtt_cluster_frame(mtt_tracker *trk);
 /* Assigns within cluster c; recompute = 0 runs the static greedy on the
  * pair.beta values as they are (spec 10.1 without recomputation, TV9). */
 void mtt_mmr_cluster(mtt_tracker *trk, uint16_t c, int recompute);
+
+/* ---- assign2d.c: optimal 2-D assignment (spec 10.2) ---- */
+/* Fills w[0..m-1] with the weights (>= 0; 0 = not allowed) of row r. */
+typedef void (*mtt_row_fn)(const void *ctx, uint16_t r, mtt_real *w);
+/* Maximise sum of w over a one-to-one matching of n rows (n <=
+ * MTT_MAX_ASSIGN_TRACKS) to m columns (m + n <= MTT_ASSIGN_COLS), by the
+ * Hungarian method with one dummy column per row; zero-weight matches are
+ * dropped.  Result: s->col_row[r] = column or -1.  Cost O(n^2 (m + n)). */
+void mtt_assign2d_solve(mtt_assign_scratch *s, uint16_t n, uint16_t m, mtt_row_fn fill,
+                        const void *ctx);
+/* ihpda-2d, cluster c: static IHPDA rows over the full gates, optimal
+ * assignment on w = beta + (n_c + 1); clusters over MTT_MAX_ASSIGN_TRACKS
+ * use MMR with recomputation.  Sets tf.assigned and meas.used. */
+void mtt_assign2d_cluster(mtt_tracker *trk, uint16_t c);
+void mtt_assign2d_frame(mtt_tracker *trk);
+
+/* ---- jpda.c: exact JPDA, JPDA*, JIPDA (spec 13.1, 13.2, 13.6) and the
+ *      per-mode dispatch of the JPDA family ---- */
+enum { MTT_JPDA_EXACT = 0, MTT_JPDA_STAR = 1, MTT_JPDA_JIPDA = 2 };
+/* Per frame: jp.pa (A of each pair), jp.tb (B of each track) and every
+ * track's IPDA existence in tf.ex_post (spec 13, 13.2 CHOICE). */
+void mtt_jpda_weights(mtt_tracker *trk);
+/* Exact enumeration over cluster c; kind = MTT_JPDA_*.  Writes pair.beta,
+ * tf.beta0 (and tf.ex_post for JIPDA).  Returns 0, or -1 (nothing written)
+ * when the cluster exceeds MTT_MAX_JPDA_TRACKS / _MEAS / _EVENTS. */
+int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind);
+/* The association stage of the JPDA-family modes, all clusters. */
+void mtt_jpda_frame(mtt_tracker *trk);
+
+/* ---- jpda_approx.c: Cheap and Suboptimal JPDA (spec 13.3, 13.4) ---- */
+void mtt_cheap_jpda(mtt_tracker *trk, uint16_t c, int normalise);
+/* per_track_b: the library's B_t of spec 13.4 (1) or the constant B (0). */
+void mtt_subopt_jpda(mtt_tracker *trk, uint16_t c, int per_track_b);
+
+/* ---- nnjpda.c: NNJPDA (spec 13.5) ---- */
+/* Static MMR on the betas of cluster c with the nnjpda threshold. */
+void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c);
+
+/* ---- jpda_adaptive.c: adaptive JPDA (spec 13.7) ---- */
+/* Before gating: tf.shrink = 1 for tracks that overlap another track. */
+void mtt_adaptive_gates(mtt_tracker *trk);
+/* After the JPDA betas of cluster c: equal split for shared measurements. */
+void mtt_adaptive_split(mtt_tracker *trk, uint16_t c);
 
 /* ---- update.c: state and existence update of every track (spec 6, 7.4, 10.3) ---- */
 void mtt_update_frame(mtt_tracker *trk);

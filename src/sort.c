@@ -51,3 +51,35 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
         mtt_heap_sift(base, i, size, 0u, less, ctx);
     }
 }
+
+void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas)
+{
+    uint16_t *src = idx, *dst = tmp, *t;
+    uint32_t width, lo;
+    /* Runs of 1, 2, 4, ...: at most log2(n) passes of n moves each. */
+    for (width = 1u; width < n; width *= 2u) {
+        for (lo = 0; lo < n; lo += 2u * width) {
+            uint32_t mid = lo + width < n ? lo + width : n;
+            uint32_t hi = lo + 2u * width < n ? lo + 2u * width : n;
+            uint32_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi) {
+                /* '<=' keeps equal keys in their current (index) order. */
+                dst[k++] = (meas[src[i]].x <= meas[src[j]].x) ? src[i++] : src[j++];
+            }
+            while (i < mid) {
+                dst[k++] = src[i++];
+            }
+            while (j < hi) {
+                dst[k++] = src[j++];
+            }
+        }
+        t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != idx) {
+        for (lo = 0; lo < n; ++lo) {
+            idx[lo] = src[lo];
+        }
+    }
+}

@@ -1,7 +1,8 @@
 /* mtt/mtt.h - public API of mtt, a bounded multi-target tracker.
  *
  * Per frame: constant-velocity Kalman prediction, ellipsoidal gating,
- * LM-IHPDA association (or IPDA, LM-IPDA, IHPDA), MMR assignment, Markov
+ * LM-IHPDA association (or IPDA, LM-IPDA, IHPDA, IHPDA with optimal 2-D
+ * assignment, JIPDA and the JPDA family), MMR assignment, Markov
  * existence, two-point initiation, merging, confirm/delete.  The algorithm
  * reference is ALGORITHMS.md ("spec"); section numbers below point into it.
  *
@@ -56,14 +57,16 @@ typedef enum mtt_assoc {
     MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (spec 7.4) */
     MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (spec 6, 8) */
     MTT_ASSOC_IPDA,         /**< IPDA per track (spec 6) */
-    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment (spec 10.2): not yet built */
-    MTT_ASSOC_JIPDA,        /**< spec 13.2: not yet built */
-    MTT_ASSOC_JPDA,         /**< spec 13.1: not yet built */
-    MTT_ASSOC_CHEAP_JPDA,   /**< spec 13.3: not yet built */
-    MTT_ASSOC_SUBOPT_JPDA,  /**< spec 13.4: not yet built */
-    MTT_ASSOC_NNJPDA,       /**< spec 13.5: not yet built */
-    MTT_ASSOC_JPDA_STAR,    /**< spec 13.6: not yet built */
-    MTT_ASSOC_ADAPTIVE_JPDA,/**< spec 13.7: not yet built */
+    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment per cluster, plain lambda (spec 10.2, 10.3);
+                                 clusters over MTT_MAX_ASSIGN_TRACKS use MMR (counts.assign_fallbacks) */
+    MTT_ASSOC_JIPDA,        /**< JIPDA: exact enumeration, beta and existence (spec 13.2); clusters over
+                                 the MTT_MAX_JPDA_* bounds use per-track IPDA (counts.jpda_fallbacks) */
+    MTT_ASSOC_JPDA,         /**< exact JPDA (spec 13.1); over the bounds Cheap JPDA (counts.jpda_fallbacks) */
+    MTT_ASSOC_CHEAP_JPDA,   /**< Cheap JPDA, rows normalised (spec 13.3) */
+    MTT_ASSOC_SUBOPT_JPDA,  /**< Suboptimal JPDA with the per-track B_t (spec 13.4) */
+    MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (spec 13.5) */
+    MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (spec 13.6) */
+    MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (spec 13.7) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
 
@@ -155,6 +158,9 @@ typedef struct mtt_counts {
     uint32_t deletions;       /**< tracks deleted on existence */
     uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (spec 3) */
     uint32_t confirmations;   /**< tracks confirmed */
+    uint32_t assign_fallbacks;/**< ihpda-2d clusters over MTT_MAX_ASSIGN_TRACKS, resolved by MMR */
+    uint32_t jpda_fallbacks;  /**< clusters over the exact-JPDA bounds (tracks, measurements, events):
+                                   Cheap JPDA instead (per-track IPDA in jipda) */
 } mtt_counts;
 
 /** Statistics: the last frame, the tracker's life, and per-stage cycles. */
@@ -199,8 +205,11 @@ typedef struct mtt_track_frame {
     uint16_t cluster;
     int16_t best;        /* MMR: pair index of the row's best beta, -1 */
     mtt_real best_beta;  /* MMR: that beta */
+    mtt_real beta0;      /* JPDA family: beta of "no measurement" (spec 13) */
+    mtt_real ex_post;    /* JPDA family: updated existence (spec 13.2) */
     uint8_t has_all_amp; /* every gated measurement has an amplitude */
     uint8_t valid;       /* S positive definite */
+    uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (spec 13.7) */
 } mtt_track_frame;
 
 /** A gated (track, measurement) pair. */
@@ -243,6 +252,59 @@ typedef struct mtt_row_scratch {
     uint8_t rank[MTT_MAX_GATED];
 } mtt_row_scratch;
 
+/** Columns of the optimal 2-D assignment: the measurements one cluster can
+ *  gate, plus one dummy ("unassigned") column per track. */
+#define MTT_ASSIGN_COLS                                                             \
+    (((MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) < MTT_MAX_MEAS ? (MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) \
+                                                             : MTT_MAX_MEAS) + MTT_MAX_ASSIGN_TRACKS)
+
+/** Scratch of the optimal 2-D assignment (spec 10.2), one cluster at a time. */
+typedef struct mtt_assign_scratch {
+    mtt_real u[MTT_MAX_ASSIGN_TRACKS + 1];  /* row potentials */
+    mtt_real v[MTT_ASSIGN_COLS + 1];        /* column potentials */
+    mtt_real minv[MTT_ASSIGN_COLS + 1];
+    mtt_real row[MTT_ASSIGN_COLS];          /* weights of one row */
+    uint16_t p[MTT_ASSIGN_COLS + 1];        /* row matched to each column (1-based), 0 none */
+    uint16_t way[MTT_ASSIGN_COLS + 1];
+    uint8_t done[MTT_ASSIGN_COLS + 1];
+    uint16_t col_meas[MTT_ASSIGN_COLS];     /* measurement of each column */
+    uint16_t col_of[MTT_MAX_MEAS];          /* column of each measurement, or none */
+    int16_t col_row[MTT_MAX_ASSIGN_TRACKS]; /* result: column of each row, -1 */
+} mtt_assign_scratch;
+
+/** Scratch of the JPDA family (spec 13): per-frame weights, one dense
+ *  cluster, the explicit depth-first stack and the events of the last
+ *  enumeration (JPDA* grouping). */
+typedef struct mtt_jpda_scratch {
+    mtt_real pa[MTT_MAX_PAIRS];      /* A of each gated pair */
+    mtt_real tb[MTT_MAX_TRACKS];     /* B of each track */
+    mtt_real max1[MTT_MAX_TRACKS];   /* Suboptimal JPDA: largest A of each row ... */
+    mtt_real max2[MTT_MAX_TRACKS];   /* ... and the second largest (0 if none) */
+    uint16_t arg1[MTT_MAX_TRACKS];   /* measurement of max1 */
+    uint16_t mark[MTT_MAX_TRACKS];   /* neighbour set L_t: mark = t + 1 */
+    uint16_t nb[MTT_MAX_TRACKS];     /* neighbour list of one track */
+    uint16_t n, m;                   /* dense cluster: tracks, measurements */
+    uint16_t trk_of[MTT_MAX_JPDA_TRACKS];
+    uint16_t meas_of[MTT_MAX_JPDA_MEAS];
+    mtt_real A[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* rows scaled by 1/scale */
+    mtt_real B[MTT_MAX_JPDA_TRACKS];
+    mtt_real scale[MTT_MAX_JPDA_TRACKS];
+    uint32_t gmask[MTT_MAX_JPDA_TRACKS];
+    mtt_real S[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* sum of w over events with t -> j */
+    mtt_real S0[MTT_MAX_JPDA_TRACKS];                   /* sum of w over events with t missed */
+    mtt_real W;                                         /* sum of w */
+    int8_t choice[MTT_MAX_JPDA_TRACKS];                 /* depth-first stack */
+    mtt_real prod[MTT_MAX_JPDA_TRACKS + 1];
+    uint32_t used[MTT_MAX_JPDA_TRACKS + 1];
+    uint16_t det[MTT_MAX_JPDA_TRACKS + 1];
+    uint32_t n_events, n_kept;
+    uint32_t ev_used[MTT_MAX_JPDA_EVENTS];   /* measurements used by each event */
+    uint16_t ev_det[MTT_MAX_JPDA_EVENTS];    /* tracks detected in each event */
+    mtt_real ev_w[MTT_MAX_JPDA_EVENTS];      /* scaled weight */
+    uint16_t ev_idx[MTT_MAX_JPDA_EVENTS];    /* sort order */
+    uint8_t ev_keep[(MTT_MAX_JPDA_EVENTS + 7) / 8];
+} mtt_jpda_scratch;
+
 /** A track pair that passed the merge test (spec 12.3). */
 typedef struct mtt_merge_cand {
     mtt_real d2;
@@ -279,9 +341,13 @@ typedef struct mtt_tracker {
     uint16_t n_merge;
     mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
     mtt_row_scratch row;
+    mtt_assign_scratch asg;         /* ihpda-2d */
+    mtt_jpda_scratch jp;            /* JPDA family */
     /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
     uint16_t n_prev;
     mtt_mstore prev[MTT_MAX_MEAS];
+    uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
+    uint16_t init_cand[MTT_MAX_MEAS];  /* U_{k-1} within reach of one z_k */
     mtt_stats stats;
 } mtt_tracker;
 
