@@ -38,6 +38,26 @@
 #define MTT_MAX_MERGE_PAIRS (2 * MTT_MAX_TRACKS)
 #endif
 
+/* Tracks of one cluster solved by the optimal 2-D assignment (ihpda-2d,
+ * spec 10.2); larger clusters fall back to MMR (counted in the stats). */
+#ifndef MTT_MAX_ASSIGN_TRACKS
+#define MTT_MAX_ASSIGN_TRACKS 16
+#endif
+
+/* Exact JPDA enumeration (jpda, jipda, nnjpda, jpda-star, adaptive-jpda,
+ * spec 13.1, 16): tracks and measurements of one cluster, and feasible
+ * joint events.  Beyond any of them the cluster falls back (counted in the
+ * stats): to Cheap JPDA, or to per-track IPDA in jipda. */
+#ifndef MTT_MAX_JPDA_TRACKS
+#define MTT_MAX_JPDA_TRACKS 8
+#endif
+#ifndef MTT_MAX_JPDA_MEAS
+#define MTT_MAX_JPDA_MEAS 32
+#endif
+#ifndef MTT_MAX_JPDA_EVENTS
+#define MTT_MAX_JPDA_EVENTS 2048
+#endif
+
 #if MTT_MAX_TRACKS < 1 || MTT_MAX_TRACKS > 4096
 #error "MTT_MAX_TRACKS must be in [1, 4096]"
 #endif
@@ -52,6 +72,19 @@
 #endif
 #if MTT_MAX_MERGE_PAIRS < 1 || MTT_MAX_MERGE_PAIRS > 65535
 #error "MTT_MAX_MERGE_PAIRS must be in [1, 65535]"
+#endif
+
+#if MTT_MAX_ASSIGN_TRACKS < 1 || MTT_MAX_ASSIGN_TRACKS > 255
+#error "MTT_MAX_ASSIGN_TRACKS must be in [1, 255]"
+#endif
+#if MTT_MAX_JPDA_TRACKS < 1 || MTT_MAX_JPDA_TRACKS > 16
+#error "MTT_MAX_JPDA_TRACKS must be in [1, 16] (detected-track bit mask)"
+#endif
+#if MTT_MAX_JPDA_MEAS < 1 || MTT_MAX_JPDA_MEAS > 32
+#error "MTT_MAX_JPDA_MEAS must be in [1, 32] (used-measurement bit mask, spec 13.1)"
+#endif
+#if MTT_MAX_JPDA_EVENTS < 1 || MTT_MAX_JPDA_EVENTS > 65535
+#error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"
 #endif
 
 #endif /* MTT_CONFIG_H */
