@@ -9,7 +9,7 @@
 
 typedef struct { uint64_t s; } sim_rng;
 
-static uint64_t sim_next(sim_rng *r)
+static inline uint64_t sim_next(sim_rng *r)
 {
     uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -18,19 +18,19 @@ static uint64_t sim_next(sim_rng *r)
 }
 
 /* Uniform in (0, 1). */
-static double sim_unif(sim_rng *r)
+static inline double sim_unif(sim_rng *r)
 {
     return ((double)(sim_next(r) >> 11) + 0.5) / 9007199254740992.0;
 }
 
-static double sim_gauss(sim_rng *r)
+static inline double sim_gauss(sim_rng *r)
 {
     double u1 = sim_unif(r), u2 = sim_unif(r);
     return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
 }
 
 /* Poisson by inversion (small means only). */
-static int sim_poisson(sim_rng *r, double mean)
+static inline int sim_poisson(sim_rng *r, double mean)
 {
     double L = exp(-mean), p = 1.0;
     int k = 0;
