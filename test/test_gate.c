@@ -1,0 +1,243 @@
+/* test_gate.c - gate threshold, gate area, likelihood, gate test and the
+ * gate frame stage.  Expected numbers: test_vectors.md TV3 (and TV8 for the
+ * two-track frame). */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
+#include "unity.h"
+
+static mtt_tracker trk;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* TV2 prediction and R (TV3 uses S and z_hat of TV2). */
+static const mtt_real tv2_R[3] = {MTT_R(1.0), MTT_R(0.3), MTT_R(2.0)};
+
+static void tv2_pred(mtt_real xp[4], mtt_real Pp[4][4])
+{
+    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+    mtt_real P0[4][4] = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
+                         {MTT_R(1.0), MTT_R(4.0), MTT_R(0.0), MTT_R(1.0)},
+                         {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
+                         {MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)}};
+    mtt_kalman_predict(MTT_R(1.0), MTT_R(5.0), x0, P0, xp, Pp);
+}
+
+/* TV3 candidates: offsets from z_hat and expected values (c4 not gated). */
+static const mtt_real tv3_off[5][2] = {{MTT_R(0.8), MTT_R(-0.5)}, {MTT_R(-3.5), MTT_R(2.4)},
+                                       {MTT_R(5.0), MTT_R(3.0)},  {MTT_R(8.0), MTT_R(-7.0)},
+                                       {MTT_R(9.0), MTT_R(0.0)}};
+static const double tv3_d2[5] = {0.1013924342, 2.052695582, 3.10257562, 12.83690663, 8.518936448};
+static const int tv3_gated[5] = {1, 1, 1, 0, 1};
+static const double tv3_N[5] = {0.01502238411, 0.005662637589, 0.00334996457, 0.0, 0.0002233018927};
+static const double tv3_p[5] = {0.01517412536, 0.005719835949, 0.003383802596, 0.0, 0.0002255574674};
+
+static void test_tv3_gamma_volume_det(void)
+{
+    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], gamma;
+    tv2_pred(xp, Pp);
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
+    gamma = mtt_gate_gamma(MTT_R(0.99));
+    TV_ASSERT_REAL(9.210340372, gamma);                     /* TV3 gamma */
+    TV_ASSERT_REAL(101.4211111, det);                       /* TV3 det S */
+    TV_ASSERT_REAL(291.4001257, mtt_gate_volume(gamma, det)); /* TV3 V_G */
+}
+
+static void test_tv3_candidates(void)
+{
+    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], gamma;
+    int c;
+    tv2_pred(xp, Pp);
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
+    gamma = mtt_gate_gamma(MTT_R(0.99));
+    for (c = 0; c < 5; ++c) {
+        /* z = z_hat + offset, nu = z - z_hat (as the tracker computes it) */
+        mtt_real zx = xp[0] + tv3_off[c][0], zy = xp[1] + tv3_off[c][1];
+        mtt_real d2 = mtt_mahal2(Si, zx - xp[0], zy - xp[1]);
+        TV_ASSERT_REAL_MSG(tv3_d2[c], d2, "TV3 d2");
+        TEST_ASSERT_EQUAL_INT_MESSAGE(tv3_gated[c], d2 <= gamma, "TV3 gated");
+        if (tv3_gated[c]) {
+            mtt_real p = mtt_gate_likelihood(d2, det, MTT_R(0.99));
+            TV_ASSERT_REAL_MSG(tv3_p[c], p, "TV3 p = N/PG");
+            TV_ASSERT_REAL_MSG(tv3_N[c], p * MTT_R(0.99), "TV3 N(nu;0,S)");
+        }
+    }
+}
+
+static void tv3_tracker(void)
+{
+    mtt_params p;
+    mtt_real xp[4], Pp[4][4];
+    int c;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.pg = MTT_R(0.99); /* TV3 PG */
+    tv_init(&trk, &p);
+    trk.R[0] = tv2_R[0];
+    trk.R[1] = tv2_R[1];
+    trk.R[2] = tv2_R[2];
+    tv2_pred(xp, Pp);
+    (void)tv_add_track_xp(&trk, xp, Pp, MTT_R(0.6));
+    for (c = 0; c < 5; ++c) {
+        (void)tv_add_meas(&trk, xp[0] + tv3_off[c][0], xp[1] + tv3_off[c][1], MTT_R(1.0), 1);
+    }
+}
+
+static void test_tv3_gate_frame(void)
+{
+    static const uint16_t want_meas[4] = {0, 1, 2, 4}; /* TV3: c4 not gated */
+    int k;
+    tv3_tracker();
+    trk.tf[0].vg = MTT_R(0.0); /* gate_frame must compute it */
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_first);
+    TEST_ASSERT_EQUAL_UINT(4, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tf[0].has_all_amp);
+    TV_ASSERT_REAL(9.210340372, trk.gamma);    /* TV3 gamma */
+    TV_ASSERT_REAL(291.4001257, trk.tf[0].vg); /* TV3 V_G */
+    for (k = 0; k < 4; ++k) {
+        const mtt_pair *pp = &trk.pairs[k];
+        TEST_ASSERT_EQUAL_UINT(0, pp->track);
+        TEST_ASSERT_EQUAL_UINT(want_meas[k], pp->meas);
+        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], pp->d2, "TV3 d2");
+        TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]], pp->p, "TV3 p");
+    }
+    /* CSR: each gated measurement lists its one pair, c4 none. */
+    TEST_ASSERT_EQUAL_UINT(0, trk.mp_first[0]);
+    TEST_ASSERT_EQUAL_UINT(1, trk.mp_first[1]);
+    TEST_ASSERT_EQUAL_UINT(2, trk.mp_first[2]);
+    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[3]);
+    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[4]); /* c4: empty */
+    TEST_ASSERT_EQUAL_UINT(4, trk.mp_first[5]);
+    TEST_ASSERT_EQUAL_UINT(3, trk.mp_list[3]);
+    TEST_ASSERT_EQUAL_UINT(4, trk.stats.last.pairs);
+}
+
+static void test_gate_frame_has_all_amp(void)
+{
+    tv3_tracker();
+    trk.meas[2].has_amp = 0;
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].has_all_amp);
+    /* An ungated measurement without amplitude does not matter (c4). */
+    tv3_tracker();
+    trk.meas[3].has_amp = 0;
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tf[0].has_all_amp);
+}
+
+static void test_gate_frame_skips_invalid_track(void)
+{
+    tv3_tracker();
+    trk.tf[0].valid = 0;
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_count);
+}
+
+static void test_gate_bound_is_inclusive(void)
+{
+    /* Spec 4: gated iff d2 <= gamma.  With gamma = 4 and S = I a measurement
+     * at distance exactly 2 has d2 = gamma exactly; one ulp-ish further out
+     * does not. */
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    tv_init(&trk, &p);
+    (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.5));
+    trk.gamma = MTT_R(4.0);
+    (void)tv_add_meas(&trk, MTT_R(2.0), MTT_R(0.0), MTT_R(1.0), 1);   /* d2 = 4: in */
+    (void)tv_add_meas(&trk, MTT_R(0.0), MTT_R(-2.0), MTT_R(1.0), 1);  /* d2 = 4: in */
+    (void)tv_add_meas(&trk, MTT_R(2.0001), MTT_R(0.0), MTT_R(1.0), 1); /* out */
+    (void)tv_add_meas(&trk, MTT_R(0.0), MTT_R(2.0001), MTT_R(1.0), 1); /* out */
+    (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(1.5), MTT_R(1.0), 1);  /* d2 = 4.5: out */
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(2, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(0, trk.pairs[0].meas);
+    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[1].meas);
+    TEST_ASSERT_TRUE(trk.pairs[0].d2 == MTT_R(4.0));
+}
+
+static void test_tv8_two_track_gate_frame(void)
+{
+    /* TV8: tracks given by z_hat and S, PG = 0.99. */
+    mtt_params p;
+    int k;
+    static const uint16_t pt[4] = {0, 0, 1, 1}, pm[4] = {0, 1, 1, 2};
+    static const double d2[4] = {0.8409090909, 1.472727273, 2.311186441, 1.738983051};
+    static const double pv[4] = {0.03183372832, 0.02321079044, 0.01318017474, 0.01754581538};
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.pg = MTT_R(0.99);
+    tv_init(&trk, &p);
+    (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(4.0), MTT_R(1.0), MTT_R(3.0), MTT_R(0.8));
+    (void)tv_add_track_s(&trk, MTT_R(5.0), MTT_R(1.0), MTT_R(3.0), MTT_R(-0.5), MTT_R(5.0), MTT_R(0.5));
+    /* Input order deliberately not sorted in x: z3 first would be fine too. */
+    (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(0.5), MTT_R(50.0), 1);
+    (void)tv_add_meas(&trk, MTT_R(2.4), MTT_R(0.9), MTT_R(120.0), 1);
+    (void)tv_add_meas(&trk, MTT_R(6.8), MTT_R(2.5), MTT_R(70.0), 1);
+    mtt_gate_frame(&trk);
+    TV_ASSERT_REAL(95.96699484, trk.tf[0].vg);  /* TV8 T1 V_G */
+    TV_ASSERT_REAL(111.1275048, trk.tf[1].vg);  /* TV8 T2 V_G */
+    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);     /* TV8: T1 {z1, z2}, T2 {z2, z3} */
+    for (k = 0; k < 4; ++k) {
+        TEST_ASSERT_EQUAL_UINT(pt[k], trk.pairs[k].track);
+        TEST_ASSERT_EQUAL_UINT(pm[k], trk.pairs[k].meas);
+        TV_ASSERT_REAL_MSG(d2[k], trk.pairs[k].d2, "TV8 d2");
+        TV_ASSERT_REAL_MSG(pv[k], trk.pairs[k].p, "TV8 p");
+    }
+    /* TV8 ungated: T1 z3 d2 = 11.79272727, T2 z1 d2 = 14.59322034 > gamma */
+    TV_ASSERT_REAL(11.79272727, mtt_mahal2(trk.tf[0].Si, MTT_R(6.8), MTT_R(2.5)));
+    TV_ASSERT_REAL(14.59322034, mtt_mahal2(trk.tf[1].Si, MTT_R(-6.5), MTT_R(-0.5)));
+    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_first);
+    TEST_ASSERT_EQUAL_UINT(2, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT(2, trk.tf[1].pair_first);
+    TEST_ASSERT_EQUAL_UINT(2, trk.tf[1].pair_count);
+    /* CSR: z1 -> {pair 0}, z2 -> {pairs 1, 2} (ascending track), z3 -> {3} */
+    TEST_ASSERT_EQUAL_UINT(0, trk.mp_first[0]);
+    TEST_ASSERT_EQUAL_UINT(1, trk.mp_first[1]);
+    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[2]);
+    TEST_ASSERT_EQUAL_UINT(4, trk.mp_first[3]);
+    TEST_ASSERT_EQUAL_UINT(0, trk.mp_list[0]);
+    TEST_ASSERT_EQUAL_UINT(1, trk.mp_list[1]);
+    TEST_ASSERT_EQUAL_UINT(2, trk.mp_list[2]);
+    TEST_ASSERT_EQUAL_UINT(3, trk.mp_list[3]);
+}
+
+static void test_gate_frame_unsorted_input(void)
+{
+    /* Same as TV8 with the measurements in reverse input order: the pairs
+     * still come sorted by (track, measurement index). */
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.pg = MTT_R(0.99);
+    tv_init(&trk, &p);
+    (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(4.0), MTT_R(1.0), MTT_R(3.0), MTT_R(0.8));
+    (void)tv_add_track_s(&trk, MTT_R(5.0), MTT_R(1.0), MTT_R(3.0), MTT_R(-0.5), MTT_R(5.0), MTT_R(0.5));
+    (void)tv_add_meas(&trk, MTT_R(6.8), MTT_R(2.5), MTT_R(70.0), 1);  /* z3 */
+    (void)tv_add_meas(&trk, MTT_R(2.4), MTT_R(0.9), MTT_R(120.0), 1); /* z2 */
+    (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(0.5), MTT_R(50.0), 1); /* z1 */
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[0].meas); /* T1 z2 */
+    TEST_ASSERT_EQUAL_UINT(2, trk.pairs[1].meas); /* T1 z1 */
+    TEST_ASSERT_EQUAL_UINT(0, trk.pairs[2].meas); /* T2 z3 */
+    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[3].meas); /* T2 z2 */
+    TV_ASSERT_REAL(1.472727273, trk.pairs[0].d2); /* TV8 T1 z2 */
+    TV_ASSERT_REAL(1.738983051, trk.pairs[2].d2); /* TV8 T2 z3 */
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_tv3_gamma_volume_det);
+    RUN_TEST(test_tv3_candidates);
+    RUN_TEST(test_tv3_gate_frame);
+    RUN_TEST(test_gate_frame_has_all_amp);
+    RUN_TEST(test_gate_frame_skips_invalid_track);
+    RUN_TEST(test_gate_bound_is_inclusive);
+    RUN_TEST(test_tv8_two_track_gate_frame);
+    RUN_TEST(test_gate_frame_unsorted_input);
+    return UNITY_END();
+}

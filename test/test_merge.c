@@ -1,0 +1,207 @@
+/* test_merge.c - track merge test and survivor rule (spec 12.3, TV11). */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
+#include "unity.h"
+
+static mtt_tracker trk;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* TV11 inputs */
+static const mtt_real xa[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+static const mtt_real xb1[4] = {MTT_R(100.6), MTT_R(49.7), MTT_R(10.3), MTT_R(-5.2)};
+static const mtt_real xb2[4] = {MTT_R(101.5), MTT_R(49.0), MTT_R(10.3), MTT_R(-5.2)};
+
+static void set_track(mtt_track *t, const mtt_real x[4], mtt_real pos, mtt_real vel,
+                      mtt_real existence, int confirmed, uint32_t id)
+{
+    memset(t, 0, sizeof *t);
+    memcpy(t->x, x, sizeof t->x);
+    t->P[0][0] = pos;
+    t->P[1][1] = pos;
+    t->P[2][2] = vel;
+    t->P[3][3] = vel;
+    t->existence = existence;
+    t->confirmed = (uint8_t)confirmed;
+    t->id = id;
+    t->meas = -1;
+}
+
+/* a: P_a = diag(1, 1, 0.5, 0.5); b: P_b = diag(2, 2, 1, 1) (TV11) */
+static void set_a(mtt_track *t, mtt_real ex, int conf, uint32_t id)
+{
+    set_track(t, xa, MTT_R(1.0), MTT_R(0.5), ex, conf, id);
+}
+static void set_b(mtt_track *t, const mtt_real *xb, mtt_real ex, int conf, uint32_t id)
+{
+    set_track(t, xb, MTT_R(2.0), MTT_R(1.0), ex, conf, id);
+}
+
+static void test_tv11_d2(void)
+{
+    mtt_track a, b;
+    mtt_real d2 = MTT_R(-1.0);
+    set_a(&a, MTT_R(0.5), 0, 0);
+    set_b(&b, xb1, MTT_R(0.5), 0, 1);
+    TEST_ASSERT_EQUAL_INT(0, mtt_merge_d2(&a, &b, &d2));
+    TV_ASSERT_REAL(0.2366666667, d2);    /* TV11 case 1 d2 */
+    TEST_ASSERT_TRUE(d2 < MTT_R(1.0));   /* TV11 case 1: merge = true */
+    TEST_ASSERT_EQUAL_INT(0, mtt_merge_d2(&b, &a, &d2));
+    TV_ASSERT_REAL(0.2366666667, d2);    /* symmetric in a, b */
+    set_b(&b, xb2, MTT_R(0.5), 0, 1);
+    TEST_ASSERT_EQUAL_INT(0, mtt_merge_d2(&a, &b, &d2));
+    TV_ASSERT_REAL(1.17, d2);            /* TV11 case 2 d2 */
+    TEST_ASSERT_FALSE(d2 < MTT_R(1.0));  /* TV11 case 2: merge = false */
+}
+
+static void test_merge_d2_not_pd(void)
+{
+    mtt_track a, b;
+    mtt_real d2 = MTT_R(5.0);
+    set_track(&a, xa, MTT_R(0.0), MTT_R(0.0), MTT_R(0.5), 0, 0);
+    set_track(&b, xb1, MTT_R(0.0), MTT_R(0.0), MTT_R(0.5), 0, 1);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_merge_d2(&a, &b, &d2));
+    TEST_ASSERT_TRUE(d2 == MTT_R(5.0));
+}
+
+/* Tracker with two tracks in one cluster, as the merge stage sees it. */
+static void two_track_cluster(void)
+{
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.merge_threshold = MTT_R(1.0); /* TV11 t_merge */
+    tv_init(&trk, &p);
+    trk.n_tracks = 2;
+    trk.n_clusters = 1;
+    trk.cl_first[0] = 0;
+    trk.cl_first[1] = 2;
+    trk.cl_list[0] = 0;
+    trk.cl_list[1] = 1;
+}
+
+static void test_tv11_case1_survivor_a(void)
+{
+    /* Survivor: a (position trace 2 < 4); existence = max, confirmed = OR;
+     * a keeps its own state. */
+    static const double want_x[4] = {100, 50, 10, -5}; /* TV11 x_a */
+    two_track_cluster();
+    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
+    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(1, trk.n_merge);
+    TV_ASSERT_REAL(0.2366666667, trk.merge[0].d2); /* TV11 case 1 */
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
+    TV_ASSERT_REAL(0.9, trk.tracks[0].existence);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed);
+    TV_ASSERT_VEC(want_x, trk.tracks[0].x, 4);
+    TV_ASSERT_REAL(1.0, trk.tracks[0].P[0][0]);
+    TEST_ASSERT_EQUAL_UINT(1, trk.stats.last.merges);
+}
+
+static void test_tv11_case1_survivor_a_at_higher_index(void)
+{
+    /* Same pair with b first: the survivor is still a (smaller trace). */
+    two_track_cluster();
+    set_b(&trk.tracks[0], xb1, MTT_R(0.2), 0, 0);
+    set_a(&trk.tracks[1], MTT_R(0.7), 0, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TV_ASSERT_REAL(0.7, trk.tracks[1].existence);       /* max(0.2, 0.7) */
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].confirmed); /* 0 OR 0 */
+    TV_ASSERT_REAL(100.0, trk.tracks[1].x[0]);          /* TV11 x_a */
+}
+
+static void test_tv11_case2_no_merge(void)
+{
+    two_track_cluster();
+    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
+    set_b(&trk.tracks[1], xb2, MTT_R(0.9), 1, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);             /* TV11 case 2: d2 = 1.17 >= 1 */
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TV_ASSERT_REAL(0.3, trk.tracks[0].existence);
+}
+
+static void test_survivor_ties(void)
+{
+    /* Equal traces: the higher existence survives; then the lower index. */
+    two_track_cluster();
+    set_a(&trk.tracks[0], MTT_R(0.4), 0, 0);
+    set_a(&trk.tracks[1], MTT_R(0.8), 1, 1);
+    trk.tracks[1].x[0] = MTT_R(100.6); /* TV11 case 1 offset in x */
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    two_track_cluster();
+    set_a(&trk.tracks[0], MTT_R(0.8), 0, 0);
+    set_a(&trk.tracks[1], MTT_R(0.8), 1, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed); /* OR */
+}
+
+static void test_merge_order_by_d2(void)
+{
+    /* Three tracks: (0, 2) has the smallest d2 and merges first; 0 survives
+     * (smallest trace) and the pair (0, 1) then merges too; (1, 2) is
+     * skipped because 2 is already dead. */
+    two_track_cluster();
+    trk.n_tracks = 3;
+    trk.cl_first[1] = 3;
+    trk.cl_list[2] = 2;
+    set_a(&trk.tracks[0], MTT_R(0.5), 0, 0);
+    set_b(&trk.tracks[1], xb1, MTT_R(0.6), 0, 1); /* d2 = 0.2366666667 to track 0 */
+    set_b(&trk.tracks[2], xa, MTT_R(0.95), 1, 2); /* d2 = 0 to track 0 */
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(3, trk.n_merge);
+    TEST_ASSERT_TRUE(trk.merge[0].d2 == MTT_R(0.0));
+    TEST_ASSERT_EQUAL_UINT(2, trk.merge[0].b);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[2].dead);
+    TV_ASSERT_REAL(0.95, trk.tracks[0].existence);
+    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed);
+    TEST_ASSERT_EQUAL_UINT(2, trk.stats.last.merges);
+}
+
+static void test_merge_disabled_and_other_clusters(void)
+{
+    two_track_cluster();
+    trk.par.merge_threshold = MTT_R(0.0); /* 0 never merges */
+    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
+    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    /* different clusters are never candidates */
+    two_track_cluster();
+    trk.n_clusters = 2;
+    trk.cl_first[1] = 1;
+    trk.cl_first[2] = 2;
+    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
+    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_tv11_d2);
+    RUN_TEST(test_merge_d2_not_pd);
+    RUN_TEST(test_tv11_case1_survivor_a);
+    RUN_TEST(test_tv11_case1_survivor_a_at_higher_index);
+    RUN_TEST(test_tv11_case2_no_merge);
+    RUN_TEST(test_survivor_ties);
+    RUN_TEST(test_merge_order_by_d2);
+    RUN_TEST(test_merge_disabled_and_other_clusters);
+    return UNITY_END();
+}

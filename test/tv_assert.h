@@ -1,0 +1,93 @@
+/* tv_assert.h - the one tolerance rule of the unit tests (spec 16,
+ * test_vectors.md header): double builds 1e-6 relative with a 1e-9 absolute
+ * floor; float builds 1e-4 relative with a 1e-6 absolute floor.
+ *
+ *   TV_ASSERT_REAL(expected, actual)          expected: a test-vector number
+ *   TV_ASSERT_REAL_MSG(expected, actual, s)   s names the quantity on failure
+ *
+ * Both print the expected and the actual value when they fail.  The
+ * expected value is taken as double (test-vector literals stay exact); the
+ * actual value is converted explicitly, so no implicit promotion happens. */
+#ifndef TV_ASSERT_H
+#define TV_ASSERT_H
+
+#include <math.h>
+#include <stdio.h>
+
+#include "mtt/real.h"
+#include "unity.h"
+
+#ifdef MTT_REAL_DOUBLE
+#define TV_REL 1e-6
+#define TV_ABS 1e-9
+#else
+#define TV_REL 1e-4
+#define TV_ABS 1e-6
+#endif
+
+/* 1 when actual is within the build's tolerance of expected. */
+static inline int tv_close(double expected, double actual)
+{
+    double tol = TV_REL * fabs(expected);
+    if (tol < TV_ABS) {
+        tol = TV_ABS;
+    }
+    return fabs(actual - expected) <= tol; /* NaN fails */
+}
+
+static inline void tv_assert_real(double expected, double actual, const char *what, int line)
+{
+    char msg[256];
+    if (!tv_close(expected, actual)) {
+        double tol = TV_REL * fabs(expected);
+        if (tol < TV_ABS) {
+            tol = TV_ABS;
+        }
+        snprintf(msg, sizeof msg, "%s: expected %.10g, actual %.10g (|diff| %.3g > tol %.3g)",
+                 what, expected, actual, fabs(actual - expected), tol);
+        UNITY_TEST_FAIL((UNITY_LINE_TYPE)line, msg);
+    }
+}
+
+#define TV_ASSERT_REAL(expected, actual) \
+    tv_assert_real((double)(expected), (double)(actual), #actual, __LINE__)
+#define TV_ASSERT_REAL_MSG(expected, actual, what) \
+    tv_assert_real((double)(expected), (double)(actual), (what), __LINE__)
+
+/* Element-wise over a 4x4 matrix given as 16 row-major doubles. */
+#define TV_ASSERT_MAT4(expected16, M)                                          \
+    do {                                                                       \
+        int tv_i_, tv_j_;                                                      \
+        char tv_w_[64];                                                        \
+        for (tv_i_ = 0; tv_i_ < 4; ++tv_i_) {                                  \
+            for (tv_j_ = 0; tv_j_ < 4; ++tv_j_) {                              \
+                snprintf(tv_w_, sizeof tv_w_, "%s[%d][%d]", #M, tv_i_, tv_j_); \
+                tv_assert_real((expected16)[4 * tv_i_ + tv_j_],                \
+                               (double)(M)[tv_i_][tv_j_], tv_w_, __LINE__);    \
+            }                                                                  \
+        }                                                                      \
+    } while (0)
+
+#define TV_ASSERT_VEC(expected, v, n)                                          \
+    do {                                                                       \
+        int tv_i_;                                                             \
+        char tv_w_[64];                                                        \
+        for (tv_i_ = 0; tv_i_ < (int)(n); ++tv_i_) {                           \
+            snprintf(tv_w_, sizeof tv_w_, "%s[%d]", #v, tv_i_);                \
+            tv_assert_real((expected)[tv_i_], (double)(v)[tv_i_], tv_w_, __LINE__); \
+        }                                                                      \
+    } while (0)
+
+/* Exact symmetry (the library symmetrises every covariance it outputs). */
+#define TV_ASSERT_SYM4(M)                                                      \
+    do {                                                                       \
+        int tv_i_, tv_j_;                                                      \
+        for (tv_i_ = 0; tv_i_ < 4; ++tv_i_) {                                  \
+            for (tv_j_ = tv_i_ + 1; tv_j_ < 4; ++tv_j_) {                      \
+                TEST_ASSERT_TRUE_MESSAGE((M)[tv_i_][tv_j_] == (M)[tv_j_][tv_i_], \
+                                         #M " is not symmetric");              \
+            }                                                                  \
+        }                                                                      \
+    } while (0)
+
+#endif /* TV_ASSERT_H */

@@ -1,0 +1,133 @@
+/* tv_fixture.h - hand-built tracker states for the stage tests.
+ *
+ * The stage functions work on an mtt_tracker; these helpers fill just what
+ * a stage reads: a track frame from a predicted measurement and an
+ * innovation covariance (as TV8 gives its tracks), measurements, gated
+ * pairs and their CSR lists.  Include after tv_assert.h. */
+#ifndef TV_FIXTURE_H
+#define TV_FIXTURE_H
+
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "unity.h"
+
+/* Initialise trk with p (must succeed); no tracks, no measurements. */
+static inline void tv_init(mtt_tracker *trk, const mtt_params *p)
+{
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(trk, p));
+}
+
+/* Add track i with prediction xp and covariance Pp (innovation from trk->R).
+ * Also copies the prediction into the track itself. */
+static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_real xp[4],
+                                       mtt_real Pp[4][4], mtt_real ex_pred)
+{
+    uint16_t i = trk->n_tracks++;
+    mtt_track_frame *tf = &trk->tf[i];
+    mtt_track *t = &trk->tracks[i];
+    memset(tf, 0, sizeof *tf);
+    memset(t, 0, sizeof *t);
+    memcpy(tf->xp, xp, sizeof tf->xp);
+    memcpy(tf->Pp, Pp, sizeof tf->Pp);
+    memcpy(t->x, xp, sizeof t->x);
+    memcpy(t->P, Pp, sizeof t->P);
+    t->id = trk->next_id++;
+    t->existence = ex_pred;
+    t->meas = -1;
+    tf->ex_pred = ex_pred;
+    tf->assigned = -1;
+    tf->best = -1;
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K));
+    tf->vg = mtt_gate_volume(trk->gamma, tf->det_s);
+    tf->valid = 1;
+    return i;
+}
+
+/* Track given by its predicted measurement z_hat and innovation covariance
+ * S = [s11, s12; s12, s22]: position block of Pp = S - R, velocity block I. */
+static inline uint16_t tv_add_track_s(mtt_tracker *trk, mtt_real zx, mtt_real zy, mtt_real s11,
+                                      mtt_real s12, mtt_real s22, mtt_real ex_pred)
+{
+    mtt_real xp[4], Pp[4][4];
+    memset(Pp, 0, sizeof Pp);
+    xp[0] = zx;
+    xp[1] = zy;
+    xp[2] = MTT_R(0.0);
+    xp[3] = MTT_R(0.0);
+    Pp[0][0] = s11 - trk->R[0];
+    Pp[0][1] = s12 - trk->R[1];
+    Pp[1][0] = s12 - trk->R[1];
+    Pp[1][1] = s22 - trk->R[2];
+    Pp[2][2] = MTT_R(1.0);
+    Pp[3][3] = MTT_R(1.0);
+    return tv_add_track_xp(trk, xp, Pp, ex_pred);
+}
+
+static inline uint16_t tv_add_meas(mtt_tracker *trk, mtt_real x, mtt_real y, mtt_real amp,
+                                   int has_amp)
+{
+    uint16_t j = trk->n_meas++;
+    mtt_mstore *m = &trk->meas[j];
+    m->x = x;
+    m->y = y;
+    m->amp = has_amp ? amp : MTT_R(0.0);
+    m->has_amp = (uint8_t)(has_amp != 0);
+    m->src = j;
+    m->used = 0;
+    return j;
+}
+
+/* Append a pair (must come in track, then measurement order) with a beta. */
+static inline void tv_add_pair(mtt_tracker *trk, uint16_t t, uint16_t j, mtt_real beta)
+{
+    mtt_pair *pp = &trk->pairs[trk->n_pairs++];
+    memset(pp, 0, sizeof *pp);
+    pp->track = t;
+    pp->meas = j;
+    pp->beta = beta;
+}
+
+/* Per-track pair ranges and the per-measurement CSR lists from trk->pairs. */
+static inline void tv_index_pairs(mtt_tracker *trk)
+{
+    uint16_t i, k, c = 0;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        trk->tf[i].pair_first = 0;
+        trk->tf[i].pair_count = 0;
+        trk->tf[i].has_all_amp = 1;
+    }
+    for (k = 0; k < trk->n_pairs; ++k) {
+        mtt_track_frame *tf = &trk->tf[trk->pairs[k].track];
+        if (tf->pair_count == 0u) {
+            tf->pair_first = k;
+        }
+        tf->pair_count++;
+        if (!trk->meas[trk->pairs[k].meas].has_amp) {
+            tf->has_all_amp = 0;
+        }
+    }
+    for (i = 0; i < trk->n_meas; ++i) {
+        trk->mp_first[i] = c;
+        for (k = 0; k < trk->n_pairs; ++k) {
+            if (trk->pairs[k].meas == i) {
+                trk->mp_list[c++] = k;
+            }
+        }
+    }
+    trk->mp_first[trk->n_meas] = c;
+}
+
+/* Index of the pair (t, j), or -1. */
+static inline int tv_find_pair(const mtt_tracker *trk, uint16_t t, uint16_t j)
+{
+    uint16_t k;
+    for (k = 0; k < trk->n_pairs; ++k) {
+        if (trk->pairs[k].track == t && trk->pairs[k].meas == j) {
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
+#endif /* TV_FIXTURE_H */
