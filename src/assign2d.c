@@ -91,6 +91,7 @@ void mtt_assign2d_solve(mtt_assign_scratch *s, uint16_t n, uint16_t m, mtt_row_f
 typedef struct {
     const mtt_tracker *trk;
     uint16_t c;
+    uint16_t m;      /* real columns */
     mtt_real offset; /* n_c + 1 */
 } cluster_ctx;
 
@@ -100,10 +101,8 @@ static void cluster_row(const void *vctx, uint16_t r, mtt_real *w)
     const cluster_ctx *cx = (const cluster_ctx *)vctx;
     const mtt_tracker *trk = cx->trk;
     const mtt_track_frame *tf = &trk->tf[trk->cl_list[trk->cl_first[cx->c] + r]];
-    const uint16_t m = (uint16_t)(trk->cl_first[cx->c + 1u] - trk->cl_first[cx->c]);
     uint16_t j, k;
-    (void)m;
-    for (j = 0; j < MTT_ASSIGN_COLS; ++j) {
+    for (j = 0; j < cx->m; ++j) {
         w[j] = MTT_R(0.0);
     }
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
@@ -140,6 +139,7 @@ void mtt_assign2d_cluster(mtt_tracker *trk, uint16_t c)
     }
     cx.trk = trk;
     cx.c = c;
+    cx.m = m;
     cx.offset = (mtt_real)n + MTT_R(1.0);
     mtt_assign2d_solve(s, n, m, cluster_row, &cx);
     for (q = first; q < end; ++q) {

@@ -84,14 +84,17 @@ void mtt_gate_frame(mtt_tracker *trk)
 
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        mtt_real zx = tf->xp[0], zy = tf->xp[1], wx, wy;
+        mtt_real zx = tf->xp[0], zy = tf->xp[1], wx, wy, gamma = trk->gamma;
         uint16_t nc = 0, a, b;
         if (!tf->valid) {
             continue;
         }
-        tf->vg = mtt_gate_volume(trk->gamma, tf->det_s);
-        wx = mtt_sqrt(trk->gamma * tf->S[0]);
-        wy = mtt_sqrt(trk->gamma * tf->S[2]);
+        if (tf->shrink) {
+            gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (spec 13.7) */
+        }
+        tf->vg = mtt_gate_volume(gamma, tf->det_s);
+        wx = mtt_sqrt(gamma * tf->S[0]);
+        wy = mtt_sqrt(gamma * tf->S[2]);
         for (k = lower_bound_x(trk, zx - wx); k < n; ++k) {
             uint16_t j = trk->order[k];
             mtt_real dx = trk->meas[j].x - zx, dy = trk->meas[j].y - zy, d2;
@@ -102,7 +105,7 @@ void mtt_gate_frame(mtt_tracker *trk)
                 continue;
             }
             d2 = mtt_mahal2(tf->Si, dx, dy);
-            if (!(d2 <= trk->gamma)) {
+            if (!(d2 <= gamma)) {
                 continue;
             }
             if (nc < MTT_MAX_GATED) {

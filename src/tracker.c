@@ -147,6 +147,7 @@ static void predict_all(mtt_tracker *trk, mtt_real dt)
         }
         tf->assigned = -1;
         tf->best = -1;
+        tf->shrink = 0;
         tf->pair_first = 0;
         tf->pair_count = 0;
         tf->valid = (uint8_t)(finite4(tf->xp) &&
@@ -201,6 +202,8 @@ static void add_counts(mtt_counts *tot, const mtt_counts *c)
     tot->deletions += c->deletions;
     tot->numeric_deletions += c->numeric_deletions;
     tot->confirmations += c->confirmations;
+    tot->assign_fallbacks += c->assign_fallbacks;
+    tot->jpda_fallbacks += c->jpda_fallbacks;
 }
 
 /* ---- public ---- */
@@ -257,6 +260,9 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     select_meas(trk, meas, n);
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     predict_all(trk, dt);
+    if (mode == MTT_ASSOC_ADAPTIVE_JPDA) {
+        mtt_adaptive_gates(trk); /* per-track gate thresholds (spec 13.7) */
+    }
     charge(trk, MTT_STAGE_PREDICT, &mark);
     mtt_gate_frame(trk);
     charge(trk, MTT_STAGE_GATE, &mark);
@@ -267,6 +273,10 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
         for (c = 0; c < trk->n_clusters; ++c) {
             mtt_mmr_cluster(trk, c, 1);
         }
+    } else if (mode == MTT_ASSOC_IHPDA_2D) {
+        mtt_assign2d_frame(trk);
+    } else if (mode >= MTT_ASSOC_JIPDA) {
+        mtt_jpda_frame(trk); /* JIPDA and the JPDA family (spec 13) */
     }
     charge(trk, MTT_STAGE_ASSOCIATE, &mark);
     mtt_update_frame(trk);

@@ -5,12 +5,21 @@
  * measurements assigned to other tracks; existence P = L_s P^/(1-P^+L_s P^);
  * state x = x^ + beta_s K nu_s, P = beta0 P^ + beta_s P_c + beta_s beta0 K nu nu' K'.
  * IPDA modes (spec 6): all gated measurements, PDA update.
+ * JPDA family (spec 13.8): the PDA update with the track's beta row from
+ * jpda.c / jpda_approx.c / jpda_adaptive.c; NNJPDA the hard Kalman update
+ * with the assigned measurement (beta 1, beta0 0); existence from the
+ * association stage (spec 13.2).
  * A track with no measurement keeps its prediction, with L = 1 - PD PG. */
 #include "mtt_internal.h"
 
 static int is_ihpda_mode(mtt_assoc a)
 {
     return a == MTT_ASSOC_LM_IHPDA || a == MTT_ASSOC_IHPDA || a == MTT_ASSOC_IHPDA_2D;
+}
+
+static int is_jpda_mode(mtt_assoc a)
+{
+    return a >= MTT_ASSOC_JIPDA && a < MTT_ASSOC_COUNT;
 }
 
 static void keep_prediction(mtt_tracker *trk, uint16_t ti)
@@ -72,6 +81,49 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
 
+/* JPDA family: PDA update with the beta row of the association stage
+ * (spec 13.8); the reported measurement is the largest beta. */
+static void update_jpda(mtt_tracker *trk, uint16_t ti)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real *beta = trk->row.beta;
+    mtt_real(*nu)[2] = trk->row.nu;
+    uint16_t m = tf->pair_count, j, b = 0;
+    for (j = 0; j < m; ++j) {
+        const mtt_pair *pp = &trk->pairs[tf->pair_first + j];
+        beta[j] = pp->beta;
+        nu[j][0] = trk->meas[pp->meas].x - tf->xp[0];
+        nu[j][1] = trk->meas[pp->meas].y - tf->xp[1];
+        if (beta[j] > beta[b]) {
+            b = j;
+        }
+    }
+    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
+    t->existence = tf->ex_post;
+    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
+}
+
+/* NNJPDA: hard Kalman update with the assigned pair (spec 13.5), or the
+ * prediction; existence per spec 13.2 either way. */
+static void update_nn(mtt_tracker *trk, uint16_t ti)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    if (tf->assigned < 0) {
+        keep_prediction(trk, ti);
+    } else {
+        const mtt_mstore *ms = &trk->meas[trk->pairs[tf->assigned].meas];
+        mtt_real nu[1][2];
+        const mtt_real one[1] = {MTT_R(1.0)};
+        nu[0][0] = ms->x - tf->xp[0];
+        nu[0][1] = ms->y - tf->xp[1];
+        mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, 1, nu, one, MTT_R(0.0), t->x, t->P);
+        t->meas = (int32_t)ms->src;
+    }
+    t->existence = tf->ex_post;
+}
+
 void mtt_update_frame(mtt_tracker *trk)
 {
     const mtt_assoc mode = trk->par.association;
@@ -111,12 +163,17 @@ void mtt_update_frame(mtt_tracker *trk)
             }
         } else if (tf->pair_count == 0u) {
             keep_prediction(trk, i);
+        } else if (mode == MTT_ASSOC_NNJPDA) {
+            update_nn(trk, i);
+        } else if (is_jpda_mode(mode)) {
+            update_jpda(trk, i);
         } else {
             update_pda(trk, i);
         }
     }
-    if (!is_ihpda_mode(mode)) {
-        /* PDA modes: a measurement inside any gate is used (spec 15.1). */
+    if (!is_ihpda_mode(mode) && mode != MTT_ASSOC_NNJPDA) {
+        /* PDA modes: a measurement inside any gate is used; NNJPDA and the
+         * IHPDA modes mark assigned / selected ones only (spec 15.1). */
         for (k = 0; k < trk->n_pairs; ++k) {
             trk->meas[trk->pairs[k].meas].used = 1;
         }

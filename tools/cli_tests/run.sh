@@ -301,9 +301,13 @@ cfg_sigma_out_of_range) cfg_fail cfg_sigma_out_of_range "key 'meas_sigma[1]': mu
 cfg_array_length)       cfg_fail cfg_array_length "key 'meas_sigma': must be an array of 2 numbers" ;;
 cfg_bad_association)    cfg_fail cfg_bad_association "key 'association': unknown association 'lm-ihpdaa'" ;;
 cfg_unsupported_association)
-    expect_fail 2 "association 'jpda' is not implemented in this version" \
-        "$data/cfg_unsupported_association.json" "$data/valid.det.csv"
-    stderr_has "cfg_unsupported_association.json: key 'association': "
+    # Every association mode is built since issue 4: the former example of
+    # an unsupported mode, jpda, now runs.
+    rm -f "$out"
+    run --config "$data/cfg_unsupported_association.json" --detections "$data/valid.det.csv" \
+        --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0 (jpda is built)"
+    [ -f "$out" ] || fail "no tracks file written"
     ;;
 cfg_bad_init_gate)      cfg_fail cfg_bad_init_gate "key 'init_gate': unknown initial gate 'circle'" ;;
 cfg_intensity_subkey)   cfg_fail cfg_intensity_subkey "key 'intensity_gate.f3': unknown key" ;;

@@ -1,0 +1,248 @@
+/* test_assign2d.c - optimal 2-D assignment (spec 10.2) and the ihpda-2d
+ * mode's cluster stage: TV9 (static matrix), TV8 (optimal result with the
+ * final recomputation of spec 10.3), and the solver against brute force. */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static mtt_assign_scratch ws;
+static mtt_tracker trk;
+
+/* A dense test matrix: w[r][c] (0 = not allowed). */
+typedef struct {
+    uint16_t m;
+    mtt_real w[8][8];
+} dense;
+
+static void dense_row(const void *ctx, uint16_t r, mtt_real *w)
+{
+    const dense *d = (const dense *)ctx;
+    uint16_t j;
+    for (j = 0; j < d->m; ++j) {
+        w[j] = d->w[r][j];
+    }
+}
+
+/* TV9: B = [0.7, 0.6, 0, 0.1; 0.65, 0.05, 0, 0.2; 0, 0.55, 0.5, 0]. */
+static void test_tv9_optimal(void)
+{
+    static const double B[3][4] = {{0.7, 0.6, 0, 0.1}, {0.65, 0.05, 0, 0.2}, {0, 0.55, 0.5, 0}};
+    dense d;
+    uint16_t r, j;
+    double total = 0.0;
+    memset(&d, 0, sizeof d);
+    d.m = 4;
+    for (r = 0; r < 3; ++r) {
+        for (j = 0; j < 4; ++j) {
+            d.w[r][j] = (B[r][j] > 0.0) ? (mtt_real)B[r][j] + MTT_R(4.0) : MTT_R(0.0); /* n_c + 1 = 4 */
+        }
+    }
+    mtt_assign2d_solve(&ws, 3, 4, dense_row, &d);
+    TEST_ASSERT_EQUAL_INT(1, ws.col_row[0]); /* TV9: T1 -> z2 */
+    TEST_ASSERT_EQUAL_INT(0, ws.col_row[1]); /* TV9: T2 -> z1 */
+    TEST_ASSERT_EQUAL_INT(2, ws.col_row[2]); /* TV9: T3 -> z3 */
+    for (r = 0; r < 3; ++r) {
+        total += B[r][ws.col_row[r]];
+    }
+    TV_ASSERT_REAL(1.75, total); /* TV9 optimal total */
+}
+
+/* Fixed-seed generator (LCG, Numerical Recipes constants). */
+static uint32_t rng_state;
+static uint32_t rng_u32(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return rng_state;
+}
+static double rng_unit(void)
+{
+    return (double)(rng_u32() >> 8) / 16777216.0;
+}
+
+/* Best (count, sum) over all partial matchings, by exhaustive search. */
+static void brute(double b[8][8], int n, int m, int r, uint32_t used, int cnt, double sum,
+                  int *best_cnt, double *best_sum)
+{
+    int j;
+    if (r == n) {
+        if (cnt > *best_cnt || (cnt == *best_cnt && sum > *best_sum)) {
+            *best_cnt = cnt;
+            *best_sum = sum;
+        }
+        return;
+    }
+    brute(b, n, m, r + 1, used, cnt, sum, best_cnt, best_sum);
+    for (j = 0; j < m; ++j) {
+        if (b[r][j] > 0.0 && !(used & (1u << j))) {
+            brute(b, n, m, r + 1, used | (1u << j), cnt + 1, sum + b[r][j], best_cnt, best_sum);
+        }
+    }
+}
+
+static void test_optimal_vs_brute_force(void)
+{
+    int trial;
+    rng_state = 12345u;
+    for (trial = 0; trial < 1500; ++trial) {
+        double b[8][8];
+        dense d;
+        const int n = 1 + (int)(rng_u32() % 6u), m = 1 + (int)(rng_u32() % 7u);
+        const double density = 0.2 + 0.8 * rng_unit();
+        int r, j, best_cnt = -1, cnt = 0;
+        double best_sum = -1.0, sum = 0.0;
+        uint32_t used = 0;
+        memset(&d, 0, sizeof d);
+        d.m = (uint16_t)m;
+        for (r = 0; r < n; ++r) {
+            for (j = 0; j < m; ++j) {
+                b[r][j] = (rng_unit() < density) ? 0.001 + 0.999 * rng_unit() : 0.0;
+                d.w[r][j] = (b[r][j] > 0.0) ? (mtt_real)b[r][j] + (mtt_real)(n + 1) : MTT_R(0.0);
+            }
+        }
+        brute(b, n, m, 0, 0u, 0, 0.0, &best_cnt, &best_sum);
+        mtt_assign2d_solve(&ws, (uint16_t)n, (uint16_t)m, dense_row, &d);
+        for (r = 0; r < n; ++r) {
+            const int c = ws.col_row[r];
+            if (c < 0) {
+                continue;
+            }
+            TEST_ASSERT_TRUE(c < m);
+            TEST_ASSERT_TRUE(b[r][c] > 0.0);          /* only gated pairs */
+            TEST_ASSERT_FALSE(used & (1u << c));      /* one-to-one */
+            used |= 1u << c;
+            ++cnt;
+            sum += b[r][c];
+        }
+        TEST_ASSERT_EQUAL_INT(best_cnt, cnt);         /* cardinality first */
+        TEST_ASSERT_TRUE_MESSAGE(tv_close(best_sum, sum) || fabs(best_sum - sum) < 1e-5,
+                                 "sum of beta is not the optimum");
+    }
+}
+
+/* ---- TV8: LM-IHPDA initial matrix, optimal assignment, final recomputation ---- */
+
+static uint16_t add_track_s(double zx, double zy, double s11, double s12, double s22, double ex)
+{
+    uint16_t i = trk.n_tracks++;
+    mtt_track_frame *tf = &trk.tf[i];
+    mtt_track *t = &trk.tracks[i];
+    memset(tf, 0, sizeof *tf);
+    memset(t, 0, sizeof *t);
+    tf->xp[0] = (mtt_real)zx;
+    tf->xp[1] = (mtt_real)zy;
+    tf->Pp[0][0] = (mtt_real)s11 - trk.R[0];
+    tf->Pp[0][1] = (mtt_real)s12;
+    tf->Pp[1][0] = (mtt_real)s12;
+    tf->Pp[1][1] = (mtt_real)s22 - trk.R[2];
+    tf->Pp[2][2] = MTT_R(1.0);
+    tf->Pp[3][3] = MTT_R(1.0);
+    tf->ex_pred = (mtt_real)ex;
+    tf->assigned = -1;
+    tf->best = -1;
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(tf->Pp, trk.R, tf->S, tf->Si, &tf->det_s, tf->K));
+    tf->valid = 1;
+    t->meas = -1;
+    t->id = trk.next_id++;
+    return i;
+}
+
+static void add_meas(double x, double y, double amp)
+{
+    mtt_mstore *m = &trk.meas[trk.n_meas];
+    memset(m, 0, sizeof *m);
+    m->x = (mtt_real)x;
+    m->y = (mtt_real)y;
+    m->amp = (mtt_real)amp;
+    m->has_amp = 1;
+    m->src = trk.n_meas++;
+}
+
+static int pair_of(uint16_t t, uint16_t j)
+{
+    uint16_t k;
+    for (k = 0; k < trk.n_pairs; ++k) {
+        if (trk.pairs[k].track == t && trk.pairs[k].meas == j) {
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
+static void test_tv8_optimal_and_final_recomputation(void)
+{
+    mtt_params p;
+    double sum;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_IHPDA_2D;
+    p.pd = MTT_R(0.9);
+    p.pg = MTT_R(0.99);
+    p.clutter_density = MTT_R(0.002);
+    p.snr_rho = MTT_R(3.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    add_track_s(0, 0, 4, 1, 3, 0.8);     /* TV8 T1 */
+    add_track_s(5, 1, 3, -0.5, 5, 0.5);  /* TV8 T2 */
+    add_meas(-1.5, 0.5, 50);             /* TV8 z1 */
+    add_meas(2.4, 0.9, 120);             /* TV8 z2 */
+    add_meas(6.8, 2.5, 70);              /* TV8 z3 */
+    mtt_gate_frame(&trk);
+    mtt_clutter_frame(&trk, 1); /* TV8 uses the LM matrix (spec 10.2: lambda~ in LM mode) */
+    mtt_cluster_frame(&trk);
+    mtt_assign2d_frame(&trk);
+    TEST_ASSERT_EQUAL_INT(pair_of(0, 0), trk.tf[0].assigned); /* TV8: T1 -> z1 */
+    TEST_ASSERT_EQUAL_INT(pair_of(1, 1), trk.tf[1].assigned); /* TV8: T2 -> z2 */
+    sum = (double)trk.pairs[trk.tf[0].assigned].beta + (double)trk.pairs[trk.tf[1].assigned].beta;
+    TV_ASSERT_REAL(1.235805911, sum); /* TV8: sum of beta of the optimal assignment */
+    TV_ASSERT_REAL(0.4294519828, trk.pairs[pair_of(0, 0)].beta); /* TV8 initial matrix */
+    TV_ASSERT_REAL(0.8063539279, trk.pairs[pair_of(1, 1)].beta);
+    mtt_update_frame(&trk);
+    TV_ASSERT_REAL(0.9923727825, trk.pairs[pair_of(0, 0)].beta); /* TV8 final: T1 beta */
+    TV_ASSERT_REAL(0.9828071472, trk.tracks[0].existence);       /* TV8 final: T1 P */
+    TV_ASSERT_REAL(0.8063539279, trk.pairs[pair_of(1, 1)].beta); /* TV8 final: T2 beta */
+    TV_ASSERT_REAL(0.6605542449, trk.tracks[1].existence);       /* TV8 final: T2 P */
+    TEST_ASSERT_EQUAL_INT(0, (int)trk.tracks[0].meas);
+    TEST_ASSERT_EQUAL_INT(1, (int)trk.tracks[1].meas);
+    TEST_ASSERT_EQUAL_UINT32(0u, trk.stats.last.assign_fallbacks);
+}
+
+#if MTT_MAX_TRACKS > MTT_MAX_ASSIGN_TRACKS
+/* A cluster over MTT_MAX_ASSIGN_TRACKS falls back to MMR, counted. */
+static void test_large_cluster_falls_back_to_mmr(void)
+{
+    mtt_params p;
+    uint16_t i;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_IHPDA_2D;
+    p.clutter_density = MTT_R(0.001);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    for (i = 0; i <= MTT_MAX_ASSIGN_TRACKS; ++i) {
+        add_track_s(0.1 * i, 0, 4, 0, 4, 0.9);
+        add_meas(0.1 * i + 0.05, 0.1, 1);
+    }
+    mtt_gate_frame(&trk);
+    mtt_clutter_frame(&trk, 0);
+    mtt_cluster_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT16(1u, trk.n_clusters);
+    mtt_assign2d_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.assign_fallbacks);
+    for (i = 0; i <= MTT_MAX_ASSIGN_TRACKS; ++i) {
+        TEST_ASSERT_TRUE(trk.tf[i].assigned >= 0); /* one measurement each */
+    }
+}
+#endif
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_tv9_optimal);
+    RUN_TEST(test_optimal_vs_brute_force);
+    RUN_TEST(test_tv8_optimal_and_final_recomputation);
+#if MTT_MAX_TRACKS > MTT_MAX_ASSIGN_TRACKS
+    RUN_TEST(test_large_cluster_falls_back_to_mmr);
+#endif
+    return UNITY_END();
+}

@@ -1,0 +1,377 @@
+/* test_jpda.c - the JPDA family on TV13 (spec 13): Cheap JPDA raw and
+ * normalised, Suboptimal JPDA (N, D, both B choices), exact JPDA (8 events
+ * and their weights), NNJPDA, the 2x2 JPDA* case, JIPDA, the N x N claim
+ * checks, the event counts, and the counted fallbacks. */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static mtt_tracker trk;
+
+#define PD_TV 0.9
+#define PG_TV 0.99
+
+/* n tracks x m measurements; a[t*m + j] > 0 is a gated pair with
+ * likelihood A (JPDA modes) or likelihood ratio p/lambda (jipda).  B > 0 is
+ * jpda_bias; B = 0 forces every B_t to 0 after the weights. */
+static void problem(mtt_assoc mode, int n, int m, const double *a, double B, const double *pbar)
+{
+    mtt_params p;
+    int t, j;
+    uint16_t k;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = mode;
+    p.pd = (mtt_real)PD_TV;
+    p.pg = (mtt_real)PG_TV;
+    p.jpda_bias = (B > 0.0) ? (mtt_real)B : MTT_R(1.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    trk.n_tracks = (uint16_t)n;
+    trk.n_meas = (uint16_t)m;
+    for (j = 0; j < m; ++j) {
+        trk.meas[j].x = (mtt_real)j;
+        trk.meas[j].src = (uint32_t)j;
+    }
+    trk.n_pairs = 0;
+    for (t = 0; t < n; ++t) {
+        mtt_track_frame *tf = &trk.tf[t];
+        memset(tf, 0, sizeof *tf);
+        tf->valid = 1;
+        tf->assigned = -1;
+        tf->best = -1;
+        tf->ex_pred = (pbar != NULL) ? (mtt_real)pbar[t] : MTT_R(1.0);
+        tf->lambda = MTT_R(1.0);
+        tf->pair_first = trk.n_pairs;
+        for (j = 0; j < m; ++j) {
+            if (a[t * m + j] > 0.0) {
+                mtt_pair *pp = &trk.pairs[trk.n_pairs++];
+                memset(pp, 0, sizeof *pp);
+                pp->track = (uint16_t)t;
+                pp->meas = (uint16_t)j;
+                pp->lam = MTT_R(1.0);
+                pp->p = (mode == MTT_ASSOC_JIPDA) ? (mtt_real)a[t * m + j]
+                                                  : (mtt_real)(a[t * m + j] / PG_TV); /* A = PG p */
+                tf->pair_count++;
+            }
+        }
+    }
+    /* pairs of each measurement (CSR) */
+    k = 0;
+    for (j = 0; j < m; ++j) {
+        uint16_t q;
+        trk.mp_first[j] = k;
+        for (q = 0; q < trk.n_pairs; ++q) {
+            if (trk.pairs[q].meas == j) {
+                trk.mp_list[k++] = q;
+            }
+        }
+    }
+    trk.mp_first[m] = k;
+    mtt_cluster_frame(&trk);
+    mtt_jpda_weights(&trk);
+    if (!(B > 0.0) && mode != MTT_ASSOC_JIPDA) {
+        for (t = 0; t < n; ++t) {
+            trk.jp.tb[t] = MTT_R(0.0);
+        }
+    }
+}
+
+static double beta(int t, int j)
+{
+    uint16_t k;
+    for (k = 0; k < trk.n_pairs; ++k) {
+        if (trk.pairs[k].track == t && trk.pairs[k].meas == j) {
+            return (double)trk.pairs[k].beta;
+        }
+    }
+    return 0.0; /* not gated */
+}
+
+/* Row t against expected (beta_t0, beta_t1..tm). */
+static void assert_row(int t, int m, double b0, const double *b, const char *what)
+{
+    char w[96];
+    int j;
+    snprintf(w, sizeof w, "%s: T%d beta_t0", what, t + 1);
+    tv_assert_real(b0, (double)trk.tf[t].beta0, w, __LINE__);
+    for (j = 0; j < m; ++j) {
+        snprintf(w, sizeof w, "%s: T%d beta_t%d", what, t + 1, j + 1);
+        tv_assert_real(b[j], beta(t, j), w, __LINE__);
+    }
+}
+
+/* TV13 inputs: A = [0.5, 0.3, 0; 0, 0.4, 0.2], B = 0.1. */
+static const double A13[6] = {0.5, 0.3, 0, 0, 0.4, 0.2};
+
+static void test_tv13_cheap_raw(void)
+{
+    static const double r1[3] = {0.5555555556, 0.2307692308, 0}, r2[3] = {0, 0.4, 0.2857142857};
+    problem(MTT_ASSOC_CHEAP_JPDA, 2, 3, A13, 0.1, NULL);
+    TEST_ASSERT_EQUAL_UINT16(1u, trk.n_clusters);
+    TV_ASSERT_REAL(0.8, trk.jp.pa[0] + trk.jp.pa[1]); /* TV13 T_1 */
+    TV_ASSERT_REAL(0.6, trk.jp.pa[2] + trk.jp.pa[3]); /* TV13 T_2 */
+    TV_ASSERT_REAL(0.7, trk.jp.pa[1] + trk.jp.pa[2]); /* TV13 M_2 */
+    mtt_cheap_jpda(&trk, 0, 0);
+    assert_row(0, 3, 0.1111111111, r1, "TV13 Cheap raw");
+    assert_row(1, 3, 0.1428571429, r2, "TV13 Cheap raw");
+    TV_ASSERT_REAL(0.8974358974, (double)trk.tf[0].beta0 + beta(0, 0) + beta(0, 1)); /* TV13 row sum */
+    TV_ASSERT_REAL(0.8285714286, (double)trk.tf[1].beta0 + beta(1, 1) + beta(1, 2)); /* TV13 row sum */
+}
+
+static void test_tv13_cheap_normalised(void)
+{
+    static const double r1[3] = {0.619047619, 0.2571428571, 0};
+    static const double r2[3] = {0, 0.4827586207, 0.3448275862};
+    problem(MTT_ASSOC_CHEAP_JPDA, 2, 3, A13, 0.1, NULL);
+    mtt_cheap_jpda(&trk, 0, 1);
+    assert_row(0, 3, 0.1238095238, r1, "TV13 Cheap normalised");
+    assert_row(1, 3, 0.1724137931, r2, "TV13 Cheap normalised");
+}
+
+static void test_tv13_suboptimal(void)
+{
+    static const double N[2][3] = {{0.3, 0.5, 0.5}, {0.4, 0.2, 0.4}}; /* TV13 N[s][j] */
+    static const double D[2][3] = {{0.2, 0.06, 0}, {0, 0.2, 0.1}};   /* TV13 D */
+    static const double c1[3] = {0.5555555556, 0.1666666667, 0}, c2[3] = {0, 0.5, 0.25};
+    static const double p1[3] = {0.6666666667, 0.2, 0}, p2[3] = {0, 0.5714285714, 0.2857142857};
+    int s, j;
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
+    mtt_subopt_jpda(&trk, 0, 0); /* constant B */
+    for (s = 0; s < 2; ++s) {
+        for (j = 0; j < 3; ++j) {
+            double n_sj = (trk.jp.arg1[s] == j) ? (double)trk.jp.max2[s] : (double)trk.jp.max1[s];
+            TV_ASSERT_REAL_MSG(N[s][j], n_sj, "TV13 N[s][j]");
+            /* D = beta * B / beta_0 (constant B) */
+            TV_ASSERT_REAL_MSG(D[s][j], beta(s, j) * 0.1 / (double)trk.tf[s].beta0, "TV13 D");
+        }
+    }
+    assert_row(0, 3, 0.2777777778, c1, "TV13 Suboptimal constant B");
+    assert_row(1, 3, 0.25, c2, "TV13 Suboptimal constant B");
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
+    mtt_subopt_jpda(&trk, 0, 1); /* library default B_1 = 0.04, B_2 = 0.05 */
+    TV_ASSERT_REAL(0.04, 0.1 * (double)trk.jp.max1[1]); /* TV13 B_1 */
+    TV_ASSERT_REAL(0.05, 0.1 * (double)trk.jp.max1[0]); /* TV13 B_2 */
+    assert_row(0, 3, 0.1333333333, p1, "TV13 Suboptimal B_t");
+    assert_row(1, 3, 0.1428571429, p2, "TV13 Suboptimal B_t");
+}
+
+static void test_tv13_exact_jpda_events(void)
+{
+    /* TV13, enumeration order: T1 none / z1 / z2, then T2 none / z2 / z3. */
+    static const double w[8] = {0.01, 0.04, 0.02, 0.05, 0.2, 0.1, 0.03, 0.06};
+    static const double r1[3] = {0.6862745098, 0.1764705882, 0};
+    static const double r2[3] = {0, 0.4705882353, 0.3529411765};
+    double sc, total = 0.0;
+    int e;
+    problem(MTT_ASSOC_JPDA, 2, 3, A13, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    TEST_ASSERT_EQUAL_UINT32(8u, trk.jp.n_events); /* TV13: 8 feasible events */
+    sc = (double)trk.jp.scale[0] * (double)trk.jp.scale[1]; /* rows are scaled */
+    for (e = 0; e < 8; ++e) {
+        TV_ASSERT_REAL_MSG(w[e], (double)trk.jp.ev_w[e] * sc, "TV13 event weight");
+        total += (double)trk.jp.ev_w[e] * sc;
+    }
+    TV_ASSERT_REAL(0.51, total); /* TV13 total weight */
+    assert_row(0, 3, 0.137254902, r1, "TV13 exact JPDA");
+    assert_row(1, 3, 0.1764705882, r2, "TV13 exact JPDA");
+}
+
+static void test_tv13_jpda_star_equals_jpda_here(void)
+{
+    static const double r1[3] = {0.6862745098, 0.1764705882, 0};
+    problem(MTT_ASSOC_JPDA_STAR, 2, 3, A13, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
+    TEST_ASSERT_EQUAL_UINT32(8u, trk.jp.n_kept); /* TV13: JPDA* prunes nothing here */
+    assert_row(0, 3, 0.137254902, r1, "TV13 JPDA*");
+}
+
+static void test_tv13_nnjpda(void)
+{
+    problem(MTT_ASSOC_NNJPDA, 2, 3, A13, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    mtt_nnjpda_cluster(&trk, 0);
+    TEST_ASSERT_TRUE(trk.tf[0].assigned >= 0 && trk.tf[1].assigned >= 0);
+    TEST_ASSERT_EQUAL_UINT16(0u, trk.pairs[trk.tf[0].assigned].meas); /* TV13: T1 -> z1 */
+    TEST_ASSERT_EQUAL_UINT16(1u, trk.pairs[trk.tf[1].assigned].meas); /* TV13: T2 -> z2 */
+    TV_ASSERT_REAL(0.6862745098, trk.pairs[trk.tf[0].assigned].beta);
+    TV_ASSERT_REAL(0.4705882353, trk.pairs[trk.tf[1].assigned].beta);
+}
+
+static void test_nnjpda_threshold(void)
+{
+    problem(MTT_ASSOC_NNJPDA, 2, 3, A13, 0.1, NULL);
+    trk.par.nnjpda_threshold = MTT_R(0.5);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    mtt_nnjpda_cluster(&trk, 0);
+    TEST_ASSERT_EQUAL_UINT16(0u, trk.pairs[trk.tf[0].assigned].meas); /* 0.686 >= 0.5 */
+    TEST_ASSERT_EQUAL_INT(-1, trk.tf[1].assigned);                    /* 0.471 < 0.5 */
+}
+
+/* TV13 JPDA* two-track / two-measurement case: A = [0.5, 0.4; 0.45, 0.3]. */
+static const double A22[4] = {0.5, 0.4, 0.45, 0.3};
+
+static void test_tv13_2x2_jpda_and_star(void)
+{
+    static const double j1[2] = {0.396039604, 0.4356435644}, j2[2] = {0.4455445545, 0.3564356436};
+    static const double s1[2] = {0.1408450704, 0.6197183099}, s2[2] = {0.6338028169, 0.08450704225};
+    problem(MTT_ASSOC_JPDA, 2, 2, A22, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    TEST_ASSERT_EQUAL_UINT32(7u, trk.jp.n_events); /* TV13: JPDA 7 events */
+    assert_row(0, 2, 0.1683168317, j1, "TV13 2x2 JPDA");
+    assert_row(1, 2, 0.198019802, j2, "TV13 2x2 JPDA");
+    problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
+    TEST_ASSERT_EQUAL_UINT32(6u, trk.jp.n_kept); /* TV13: 6 kept */
+    /* TV13: (T1->z1, T2->z2), the 5th event in enumeration order, is pruned. */
+    TEST_ASSERT_EQUAL_INT(0, (trk.jp.ev_keep[0] >> 4) & 1);
+    assert_row(0, 2, 0.2394366197, s1, "TV13 2x2 JPDA*");
+    assert_row(1, 2, 0.2816901408, s2, "TV13 2x2 JPDA*");
+}
+
+/* Optional pruning: kept weights (TV13) 0.01, 0.045, 0.03, 0.05, 0.04, 0.18
+ * (sum 0.355); p_prune = 0.1 drops 0.01 and 0.03, leaving sum 0.315. */
+static void test_jpda_star_pruning(void)
+{
+    static const double s1[2] = {0.05 / 0.315, 0.22 / 0.315}, s2[2] = {0.225 / 0.315, 0.0};
+    problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
+    trk.par.jpda_star_threshold = MTT_R(0.1);
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
+    TEST_ASSERT_EQUAL_UINT32(4u, trk.jp.n_kept);
+    assert_row(0, 2, 0.045 / 0.315, s1, "JPDA* pruned");
+    assert_row(1, 2, 0.09 / 0.315, s2, "JPDA* pruned");
+}
+
+static void test_tv13_2x2_suboptimal(void)
+{
+    static const double c1[2] = {0.3488372093, 0.4186046512}, c2[2] = {0.4186046512, 0.3488372093};
+    static const double z1[2] = {0.4545454545, 0.5454545455}, z2[2] = {0.5454545455, 0.4545454545};
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 2, A22, 0.1, NULL);
+    mtt_subopt_jpda(&trk, 0, 0);
+    assert_row(0, 2, 0.2325581395, c1, "TV13 2x2 Suboptimal");
+    assert_row(1, 2, 0.2325581395, c2, "TV13 2x2 Suboptimal");
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 2, A22, 0.0, NULL); /* B = 0 */
+    mtt_subopt_jpda(&trk, 0, 0);
+    assert_row(0, 2, 0.0, z1, "TV13 2x2 Suboptimal B = 0");
+    assert_row(1, 2, 0.0, z2, "TV13 2x2 Suboptimal B = 0");
+    problem(MTT_ASSOC_JPDA, 2, 2, A22, 0.0, NULL); /* = exact JPDA, PD = 1, no clutter */
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    assert_row(0, 2, 0.0, z1, "exact JPDA B = 0");
+}
+
+static void test_tv13_jipda(void)
+{
+    static const double pbar[2] = {0.8, 0.5};
+    static const double r1[3] = {0.5832385648, 0.2740610905, 0};
+    static const double r2[3] = {0, 0.4822577193, 0.3212453845};
+    problem(MTT_ASSOC_JIPDA, 2, 3, A13, 0.0, pbar); /* A13 read as p_tj / lambda_j */
+    TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_JIPDA));
+    TV_ASSERT_REAL(0.7534123731, trk.tf[0].ex_post); /* TV13 JIPDA T1 P(exist|Z^k) */
+    TV_ASSERT_REAL(0.356795769, trk.tf[1].ex_post);  /* TV13 JIPDA T2 */
+    assert_row(0, 3, 0.1427003447, r1, "TV13 JIPDA");
+    assert_row(1, 3, 0.1964968962, r2, "TV13 JIPDA");
+}
+
+/* TV13 claim check: N tracks, N measurements, all A = 1, B = 0. */
+static void test_tv13_claims_n_by_n(void)
+{
+    double a[16];
+    int N, t, j;
+    for (N = 2; N <= 4; ++N) {
+        for (j = 0; j < N * N; ++j) {
+            a[j] = 1.0;
+        }
+        problem(MTT_ASSOC_CHEAP_JPDA, N, N, a, 0.0, NULL);
+        mtt_cheap_jpda(&trk, 0, 0);
+        for (t = 0; t < N; ++t) {
+            for (j = 0; j < N; ++j) {
+                TV_ASSERT_REAL_MSG(1.0 / (2 * N - 1), beta(t, j), "TV13 Cheap 1/(2N-1)");
+            }
+        }
+        problem(MTT_ASSOC_SUBOPT_JPDA, N, N, a, 0.0, NULL);
+        mtt_subopt_jpda(&trk, 0, 1);
+        for (t = 0; t < N; ++t) {
+            for (j = 0; j < N; ++j) {
+                TV_ASSERT_REAL_MSG(1.0 / N, beta(t, j), "TV13 Suboptimal 1/N");
+            }
+        }
+        problem(MTT_ASSOC_JPDA, N, N, a, 0.0, NULL);
+        TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+        for (t = 0; t < N; ++t) {
+            for (j = 0; j < N; ++j) {
+                TV_ASSERT_REAL_MSG(1.0 / N, beta(t, j), "TV13 exact 1/N");
+            }
+        }
+    }
+}
+
+/* TV13 event counts sum_k C(n,k) C(m,k) k!: 13, 34, 229, 1045. */
+static void test_tv13_event_counts(void)
+{
+    static const int nm[4][2] = {{2, 3}, {3, 3}, {3, 6}, {4, 6}};
+    static const uint32_t count[4] = {13u, 34u, 229u, 1045u};
+    double a[24];
+    int c, j;
+    for (j = 0; j < 24; ++j) {
+        a[j] = 1.0;
+    }
+    for (c = 0; c < 4; ++c) {
+        problem(MTT_ASSOC_JPDA, nm[c][0], nm[c][1], a, 0.1, NULL);
+        TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+        TEST_ASSERT_EQUAL_UINT32(count[c], trk.jp.n_events);
+    }
+}
+
+/* Over MTT_MAX_JPDA_EVENTS (5 x 8 all gated: 19081 events) the cluster
+ * falls back to Cheap JPDA, counted; jipda falls back to per-track IPDA. */
+static void test_event_bound_fallback(void)
+{
+    double a[40];
+    double cheap[5][8];
+    int t, j;
+    for (j = 0; j < 40; ++j) {
+        a[j] = 0.1 + 0.01 * j;
+    }
+    problem(MTT_ASSOC_JPDA, 5, 8, a, 0.1, NULL);
+    mtt_cheap_jpda(&trk, 0, 1);
+    for (t = 0; t < 5; ++t) {
+        for (j = 0; j < 8; ++j) {
+            cheap[t][j] = beta(t, j);
+        }
+    }
+    problem(MTT_ASSOC_JPDA, 5, 8, a, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
+    mtt_jpda_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
+    for (t = 0; t < 5; ++t) {
+        for (j = 0; j < 8; ++j) {
+            TV_ASSERT_REAL_MSG(cheap[t][j], beta(t, j), "fallback = Cheap JPDA");
+        }
+    }
+    problem(MTT_ASSOC_JIPDA, 5, 8, a, 0.0, NULL);
+    mtt_jpda_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_tv13_cheap_raw);
+    RUN_TEST(test_tv13_cheap_normalised);
+    RUN_TEST(test_tv13_suboptimal);
+    RUN_TEST(test_tv13_exact_jpda_events);
+    RUN_TEST(test_tv13_jpda_star_equals_jpda_here);
+    RUN_TEST(test_tv13_nnjpda);
+    RUN_TEST(test_nnjpda_threshold);
+    RUN_TEST(test_tv13_2x2_jpda_and_star);
+    RUN_TEST(test_jpda_star_pruning);
+    RUN_TEST(test_tv13_2x2_suboptimal);
+    RUN_TEST(test_tv13_jipda);
+    RUN_TEST(test_tv13_claims_n_by_n);
+    RUN_TEST(test_tv13_event_counts);
+    RUN_TEST(test_event_bound_fallback);
+    return UNITY_END();
+}
