@@ -157,7 +157,7 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
 
 int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
 {
-    mtt_real L[4][4], y[4];
+    mtt_real L[4][4], y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis: each y[k] is written before it is read */
     mtt_real acc = MTT_R(0.0);
     int i, j, k;
     for (i = 0; i < 4; ++i) {

@@ -3,7 +3,9 @@
 #
 #   ./tools/dev.sh deps    install what the build needs (idempotent)
 #   ./tools/dev.sh test    deps, then the workflows test-float, test-double,
-#                          test-float-small (configure + build + ctest each);
+#                          test-float-small (configure + build + ctest each),
+#                          then tools/ci-firmware.sh (cross builds, qemu,
+#                          static analysis; each check one test);
 #                          ends with the line "N passed, M failed"
 #   ./tools/dev.sh demo    deps, build host-float, run the Monte Carlo demo of
 #                          scenarios/crossing3.json into out/demo
@@ -24,7 +26,7 @@ say() { printf 'dev.sh: %s\n' "$*"; }
 die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 is_root() { [[ "$(id -u)" -eq 0 ]]; }
@@ -144,6 +146,19 @@ cmd_test() {
       return "$rc"
     fi
   done
+  # The firmware proof (issue 5): cross builds, qemu, static analysis.
+  # Each of its checks counts as one test; it prints "ci-firmware: N passed, M failed".
+  say "=== tools/ci-firmware.sh"
+  rc=0
+  "$ROOT/tools/ci-firmware.sh" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  line="$(grep -E '^ci-firmware: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n1 || true)"
+  if [[ -n "$line" ]]; then
+    passed=$((passed + $(sed -E 's/^ci-firmware: ([0-9]+) passed.*/\1/' <<<"$line")))
+    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
+  fi
+  if ((rc != 0)) && [[ -z "$line" || "$failed" -eq 0 ]]; then
+    failed=$((failed + 1))
+  fi
   echo "$passed passed, $failed failed"
   ((failed == 0))
 }

@@ -1,0 +1,90 @@
+/* fmt.c - integer, fixed-point and hex formatting for the firmware
+ * example: no printf, no double, no division by non-constants. */
+#include "fw.h"
+
+char *fmt_str(char *buf, const char *s)
+{
+    while (*s != '\0') {
+        *buf++ = *s++;
+    }
+    *buf = '\0';
+    return buf;
+}
+
+char *fmt_u32(char *buf, uint32_t v)
+{
+    char tmp[10];
+    int n = 0;
+    do {
+        tmp[n++] = (char)('0' + (v % 10u));
+        v /= 10u;
+    } while (v != 0u);
+    while (n > 0) {
+        *buf++ = tmp[--n];
+    }
+    *buf = '\0';
+    return buf;
+}
+
+char *fmt_i32(char *buf, int32_t v)
+{
+    if (v < 0) {
+        *buf++ = '-';
+        return fmt_u32(buf, 0u - (uint32_t)v);
+    }
+    return fmt_u32(buf, (uint32_t)v);
+}
+
+char *fmt_fixed(char *buf, float v, int decimals)
+{
+    static const float scale[7] = {1.0f, 10.0f, 100.0f, 1e3f, 1e4f, 1e5f, 1e6f};
+    static const uint32_t iscale[7] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u};
+    float a;
+    uint32_t q, ip, fp, d;
+    int i;
+    if (decimals < 0) {
+        decimals = 0;
+    }
+    if (decimals > 6) {
+        decimals = 6;
+    }
+    if (!(v == v)) {
+        return fmt_str(buf, "nan");
+    }
+    a = (v < 0.0f) ? -v : v;
+    a = a * scale[decimals] + 0.5f;
+    if (!(a < 2.0e9f)) {
+        return fmt_str(buf, "ovf");
+    }
+    q = (uint32_t)a;
+    if (v < 0.0f && q != 0u) {
+        *buf++ = '-';
+    }
+    ip = q / iscale[decimals];
+    fp = q % iscale[decimals];
+    buf = fmt_u32(buf, ip);
+    if (decimals > 0) {
+        *buf++ = '.';
+        for (i = decimals - 1, d = iscale[decimals - 1]; i >= 0; --i, d /= 10u) {
+            *buf++ = (char)('0' + (fp / d) % 10u);
+        }
+        *buf = '\0';
+    }
+    return buf;
+}
+
+char *fmt_hex(char *buf, float v)
+{
+    static const char digits[] = "0123456789abcdef";
+    union {
+        float f;
+        uint32_t u;
+    } bits;
+    int i;
+    bits.f = v;
+    for (i = 7; i >= 0; --i) {
+        *buf++ = digits[(bits.u >> (4 * i)) & 0xfu];
+    }
+    *buf = '\0';
+    return buf;
+}

@@ -1,0 +1,447 @@
+#!/usr/bin/env python3
+"""fwcheck.py - checks and figures of the firmware proof (issue 5).
+
+  fwcheck.py doubles --nm NM ELF...          no double-precision helpers in the images
+  fwcheck.py qemu --qemu Q --out F --elf E -- <machine args>
+                                             run the image, save its output, expect "END ok"
+  fwcheck.py compare --target F --host EXE   per-frame confirmed counts equal,
+                                             final states within tolerance
+  fwcheck.py size --size SIZE --nm NM --lib E --base E [--archive A]
+                                             library .text/.data/.bss in a firmware
+  fwcheck.py stack --build DIR --elf E --objdump OD --src DIR [--root F]
+                                             worst-case stack depth of F's call graph
+  fwcheck.py insns --out F                   instructions per frame from the icount run
+
+Python 3 standard library only.  Methods: README, section "Firmware".
+"""
+import argparse
+import os
+import re
+import struct
+import subprocess
+import sys
+
+# ---------------------------------------------------------------- doubles
+
+# Run-time ABI double helpers (__aeabi_dadd, __aeabi_f2d, __aeabi_i2d, ...) and
+# their libgcc names (__adddf3, __extendsfdf2, __floatsidf, ...).
+DOUBLE_HELPER = re.compile(
+    r"^(__aeabi_(d[a-z0-9]+|f2d|i2d|ui2d|l2d|ul2d)|__[a-z]+df[0-9]?|__(fix|fixuns)df[a-z]i)$")
+# Double-precision libm entry points (the float build must call the f versions).
+DOUBLE_LIBM = {
+    "sqrt", "exp", "log", "pow", "fabs", "sin", "cos", "tan", "atan", "atan2", "asin",
+    "acos", "exp2", "log2", "log10", "log1p", "expm1", "floor", "ceil", "round", "fmod",
+    "hypot", "cbrt", "erf", "erfc", "lgamma", "tgamma", "ldexp", "frexp", "modf",
+    "sinh", "cosh", "tanh", "trunc", "fmin", "fmax", "fma", "scalbn",
+}
+
+
+def nm_symbols(nm, path):
+    out = subprocess.run([nm, path], check=True, capture_output=True, text=True).stdout
+    syms = []
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) >= 2:
+            syms.append((parts[-2], parts[-1]))
+    return syms
+
+
+def cmd_doubles(a):
+    bad_total = 0
+    for elf in a.elf:
+        bad = sorted({name for kind, name in nm_symbols(a.nm, elf)
+                      if DOUBLE_HELPER.match(name) or name in DOUBLE_LIBM})
+        print(f"{os.path.basename(elf)}: {len(bad)} double-precision helper(s)"
+              + (": " + " ".join(bad) if bad else ""))
+        bad_total += len(bad)
+    return 1 if bad_total else 0
+
+
+# ---------------------------------------------------------------- qemu
+
+QEMU_COMMON = ["-semihosting-config", "enable=on,target=native", "-nographic",
+               "-monitor", "none", "-serial", "none", "-icount", "shift=0"]
+
+
+def cmd_qemu(a):
+    if not a.qemu or not os.path.exists(a.qemu):
+        print("qemu-system-arm not found (Debian package qemu-system-arm)")
+        return 1
+    cmd = [a.qemu] + a.machine + QEMU_COMMON + ["-kernel", a.elf]
+    print("$ " + " ".join(cmd))
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout,
+                           stdin=subprocess.DEVNULL)
+    except subprocess.TimeoutExpired:
+        print(f"qemu: no exit within {a.timeout} s")
+        return 1
+    # Semihosting console output arrives on qemu's stderr.
+    text = r.stdout + r.stderr
+    with open(a.out, "w") as f:
+        f.write(text)
+    lines = text.splitlines()
+    frames = sum(1 for l in lines if l.startswith("F "))
+    ok = r.returncode == 0 and "END ok" in lines
+    print(f"qemu exit {r.returncode}; {frames} frames; "
+          f"{'END ok' if ok else 'FAILED'}; output in {a.out}")
+    if not ok:
+        print("\n".join(lines[-20:]))
+    return 0 if ok else 1
+
+
+# ---------------------------------------------------------------- compare
+
+def parse_run(text):
+    frames, tracks, end = {}, [], None
+    for line in text.splitlines():
+        f = line.split()
+        if not f:
+            continue
+        if f[0] == "F":
+            frames[int(f[1])] = {"meas": int(f[3]), "live": int(f[5]), "conf": int(f[7])}
+        elif f[0] == "T":
+            h = f[f.index("hex") + 1:]
+            vals = [struct.unpack(">f", bytes.fromhex(w))[0] for w in h]
+            tracks.append({"id": int(f[1]), "conf": int(f[3]), "v": vals})
+        elif f[0] == "END":
+            end = " ".join(f[1:])
+    return frames, tracks, end
+
+
+def cmd_compare(a):
+    rel, absol = a.rel, a.abs
+    with open(a.target) as f:
+        tf, tt, tend = parse_run(f.read())
+    r = subprocess.run([a.host], capture_output=True, text=True, timeout=120)
+    hf, ht, hend = parse_run(r.stdout)
+    errs = []
+    if r.returncode != 0 or hend != "ok":
+        errs.append(f"host run failed (exit {r.returncode}, END {hend})")
+    if tend != "ok":
+        errs.append(f"target run did not end ok (END {tend})")
+    if sorted(tf) != sorted(hf) or not tf:
+        errs.append(f"frame sets differ: target {len(tf)} frames, host {len(hf)}")
+    live_diff = 0
+    for k in sorted(set(tf) & set(hf)):
+        if tf[k]["meas"] != hf[k]["meas"]:
+            errs.append(f"frame {k}: measurement count {tf[k]['meas']} != host {hf[k]['meas']}")
+        if tf[k]["conf"] != hf[k]["conf"]:
+            errs.append(f"frame {k}: confirmed {tf[k]['conf']} != host {hf[k]['conf']}")
+        live_diff += tf[k]["live"] != hf[k]["live"]
+    if len(tt) != len(ht):
+        errs.append(f"final tracks: target {len(tt)} != host {len(ht)}")
+    worst = 0.0
+    names = ["x", "y", "vx", "vy", "existence"]
+    for t, h in zip(tt, ht):
+        if t["id"] != h["id"] or t["conf"] != h["conf"]:
+            errs.append(f"track id/conf {t['id']}/{t['conf']} != host {h['id']}/{h['conf']}")
+        for i, (x, y) in enumerate(zip(t["v"], h["v"])):
+            d = abs(x - y)
+            tol = rel * max(abs(x), abs(y)) + absol
+            worst = max(worst, d / tol)
+            if not d <= tol:
+                errs.append(f"track {t['id']} {names[i]}: target {x!r} host {y!r} (|d| {d:.3g} > {tol:.3g})")
+    print(f"compared {len(tf)} frames (confirmed counts: "
+          f"{'equal' if not any('confirmed' in e for e in errs) else 'DIFFER'}; "
+          f"live counts differing in {live_diff} frames) and {len(tt)} final tracks; "
+          f"largest |d| / tolerance {worst:.3g} (tolerance {rel:g} relative + {absol:g} absolute)")
+    for e in errs:
+        print("  " + e)
+    return 1 if errs else 0
+
+
+# ---------------------------------------------------------------- size
+
+def size_of(size, path):
+    out = subprocess.run([size, "-A", path], check=True, capture_output=True, text=True).stdout
+    sec = {}
+    for line in out.splitlines():
+        f = line.split()
+        if len(f) >= 2 and f[0].startswith(".") and f[1].isdigit():
+            sec[f[0]] = int(f[1])
+    text = sum(v for k, v in sec.items() if k in (".isr_vector", ".text", ".ARM.exidx"))
+    return {"text": text, "data": sec.get(".data", 0), "bss": sec.get(".bss", 0)}
+
+
+def cmd_size(a):
+    lib, base = size_of(a.size, a.lib), size_of(a.size, a.base)
+    d = {k: lib[k] - base[k] for k in lib}
+    trk = None
+    out = subprocess.run([a.nm, "-S", a.base], check=True, capture_output=True, text=True).stdout
+    for line in out.splitlines():
+        f = line.split()
+        if len(f) == 4 and f[3] == "trk":
+            trk = int(f[1], 16)
+    label = a.label or os.path.basename(os.path.dirname(os.path.dirname(a.lib)))
+    print(f"{label}: library in a firmware (image difference): .text {d['text']} "
+          f".data {d['data']} .bss {d['bss']} bytes; sizeof(mtt_tracker) {trk} bytes")
+    if a.archive:
+        out = subprocess.run([a.size, "-t", a.archive], check=True, capture_output=True,
+                             text=True).stdout.splitlines()
+        tot = out[-1].split()
+        print(f"{label}: per-object sum of libmtt.a (before --gc-sections, no libm): "
+              f".text {tot[0]} .data {tot[1]} .bss {tot[2]} bytes")
+    if a.text_limit and d["text"] > a.text_limit:
+        print(f"{label}: note: .text {d['text']} > target {a.text_limit}")
+    return 0
+
+
+# ---------------------------------------------------------------- stack
+
+CI_NODE = re.compile(r'^node: \{ title: "([^"]*)" label: "([^"]*)"')
+CI_EDGE = re.compile(r'^edge: \{ sourcename: "([^"]*)" targetname: "([^"]*)"')
+
+
+def strip_clone(name):
+    return re.sub(r"\.(constprop|isra|part|cold|lto_priv)\.\d+", "", name)
+
+
+def read_ci(build):
+    """Frames and edges from every .ci file of the library's objects."""
+    frames, edges, files = {}, {}, []
+    for root, _, names in os.walk(os.path.join(build, "CMakeFiles", "mtt.dir")):
+        files += [os.path.join(root, n) for n in names if n.endswith(".ci")]
+    for path in sorted(files):
+        with open(path) as f:
+            for line in f:
+                m = CI_NODE.match(line)
+                if m:
+                    title, label = m.groups()
+                    s = re.search(r"\\n(\d+) bytes \(([^)]*)\)", label)
+                    if s:
+                        if "dynamic" in s.group(2) and "bounded" not in s.group(2):
+                            raise SystemExit(f"unbounded dynamic stack in {title}")
+                        frames[title] = int(s.group(1))
+                    continue
+                m = CI_EDGE.match(line)
+                if m:
+                    edges.setdefault(m.group(1), set()).add(m.group(2))
+    return frames, edges, files
+
+
+def address_taken(src_dir, names):
+    """Library functions whose address is taken (the candidates of every
+    indirect call inside the library): named in the source other than as
+    a call or a declaration, i.e. not followed by '('."""
+    plain = {}
+    for t in names:
+        plain.setdefault(strip_clone(t.split(":")[-1]), []).append(t)
+    taken = set()
+    for fn in sorted(os.listdir(src_dir)):
+        if not fn.endswith(".c"):
+            continue
+        with open(os.path.join(src_dir, fn)) as f:
+            text = f.read()
+        text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+        text = re.sub(r"//[^\n]*", " ", text)
+        for m in re.finditer(r"\b([A-Za-z_]\w*)\b(?!\s*\()", text):
+            for t in plain.get(m.group(1), []):
+                if t == m.group(1) or t.split(":")[0].endswith("/" + fn):
+                    taken.add(t)
+    return taken
+
+
+PUSH = re.compile(r"\b(push|stmdb\s+sp!,)\s*\{([^}]*)\}")
+VPUSH = re.compile(r"\bvpush\s*\{([^}]*)\}")
+SUBSP = re.compile(r"\bsub(?:s|\.w|w)?\s+sp,\s*(?:sp,\s*)?#(\d+)")
+CALL = re.compile(r"\b(bl|blx|b\.w|b)\s+[0-9a-f]+\s+<([^>+]+)>")
+
+
+def reg_count(regs):
+    n = 0
+    for part in regs.split(","):
+        part = part.strip()
+        m = re.match(r"([a-z]+)(\d+)-[a-z]+(\d+)", part)
+        n += int(m.group(3)) - int(m.group(2)) + 1 if m else (1 if part else 0)
+    return n
+
+
+def objdump_functions(objdump, elf):
+    """Per function symbol of the image: its stack frame from the prologue
+    (push / vpush / sub sp) and the functions it calls or tail-calls."""
+    out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True,
+                         capture_output=True, text=True).stdout
+    funcs, cur = {}, None
+    for line in out.splitlines():
+        m = re.match(r"^[0-9a-f]+ <([^>]+)>:$", line)
+        if m:
+            cur = funcs.setdefault(m.group(1), {"frame": 0, "calls": set(), "seen_sub": False})
+            continue
+        if cur is None or ":" not in line:
+            continue
+        ins = line.split(":", 1)[1].strip()
+        m = PUSH.search(ins)
+        if m:
+            cur["frame"] += 4 * reg_count(m.group(2))
+        m = VPUSH.search(ins)
+        if m:
+            regs = m.group(1)
+            cur["frame"] += (8 if regs.strip().startswith("d") else 4) * reg_count(regs)
+        m = SUBSP.search(ins)
+        if m:
+            cur["frame"] += int(m.group(1))
+        m = CALL.search(ins)
+        if m:
+            cur["calls"].add(m.group(2))
+    for name, f in funcs.items():
+        f["calls"].discard(name)  # branches inside the function
+    return funcs
+
+
+def cmd_stack(a):
+    frames, edges, files = read_ci(a.build)
+    if not files:
+        print("no .ci files (build with -fcallgraph-info=su)")
+        return 1
+    lib_funcs = set(frames)
+    taken = address_taken(a.src, lib_funcs)
+    image = objdump_functions(a.objdump, a.elf) if a.elf else {}
+    by_plain = {}
+    for t in lib_funcs:
+        by_plain.setdefault(strip_clone(t.split(":")[-1]), []).append(t)
+
+    def callees(node):
+        out = set()
+        for t in edges.get(node, ()):
+            if t == "__indirect_call":
+                out.add("__indirect_call")
+            elif t in lib_funcs:
+                out.add(t)
+            elif t in by_plain:  # a global declared in another file
+                out.update(by_plain[t])
+            else:
+                out.add("ext:" + t)
+        if node in lib_funcs:
+            # library calls the compiler emitted (soft-float, division, mem*):
+            # from the linked image, under the function's symbol name.
+            sym = node.split(":")[-1]
+            for c in image.get(sym, {}).get("calls", ()):
+                if strip_clone(c) in by_plain:
+                    out.update(by_plain[strip_clone(c)])
+                else:
+                    out.add("ext:" + c)
+        elif node.startswith("ext:"):
+            for c in image.get(node[4:], {}).get("calls", ()):
+                out.add(("ext:" + c) if strip_clone(c) not in by_plain else by_plain[strip_clone(c)][0])
+        elif node == "__indirect_call":
+            out.update(taken)
+        return out
+
+    def frame(node):
+        if node in frames:
+            return frames[node]
+        if node.startswith("ext:"):
+            return image.get(node[4:], {}).get("frame", 0)
+        return 0
+
+    memo, missing = {}, set()
+
+    def worst(node, path):
+        if node in path:
+            raise SystemExit("recursion: " + " -> ".join(path + [node]))
+        if node in memo:
+            return memo[node]
+        if node.startswith("ext:") and node[4:] not in image:
+            missing.add(node[4:])
+        best, best_path = 0, []
+        for c in sorted(callees(node)):
+            d, p = worst(c, path + [node])
+            if d > best:
+                best, best_path = d, p
+        memo[node] = (frame(node) + best, [node] + best_path)
+        return memo[node]
+
+    root = a.root
+    if root not in lib_funcs:
+        print(f"{root}: not found in the .ci files")
+        return 1
+    total, path = worst(root, [])
+    lib_only = sum(frame(n) for n in path if n in lib_funcs)
+    label = a.label or os.path.basename(os.path.normpath(a.build))
+    print(f"{label}: worst-case stack of {root}: {total} bytes "
+          f"({lib_only} in library frames, {total - lib_only} in libm/libgcc/libc frames)")
+    print(f"{label}:   deepest path: " + " -> ".join(
+        f"{n.split(':')[-1].replace('ext:', '')}({frame(n)})" for n in path))
+    print(f"{label}:   indirect-call candidates (address-taken library functions): "
+          + " ".join(sorted(t.split(":")[-1] for t in taken)))
+    if missing:
+        print(f"{label}:   not in the image (frame counted 0): " + " ".join(sorted(missing)))
+    if a.limit and total > a.limit:
+        print(f"{label}:   note: {total} > target {a.limit}")
+    return 0
+
+
+# ---------------------------------------------------------------- insns
+
+def cmd_insns(a):
+    rows, cal = [], None
+    with open(a.out) as f:
+        for line in f:
+            w = line.split()
+            if w and w[0] == "C":
+                rows.append((int(w[3]), int(w[1]), [int(x) for x in w[5:]]))
+            elif w and w[0] == "K":
+                cal = (int(w[2]), int(w[4]))
+    if not rows:
+        print("no C lines (tick counts) in " + a.out)
+        return 1
+    ratio = a.ns_per_tick
+    if cal:
+        print(f"calibration: a loop of {cal[0]} instructions measured {cal[1]} ticks "
+              f"= {cal[0] / cal[1]:.2f} instructions per tick (expected {ratio})")
+    ticks, k, stages = max(rows)
+    mean = sum(r[0] for r in rows) / len(rows)
+    names = ["validate", "predict", "gate", "lm_clutter", "associate", "update",
+             "initiate", "merge", "manage"]
+    label = a.label or "mtt_tracker_step"
+    print(f"{label}: busiest frame {k}: {ticks} ticks = {ticks * ratio} instructions "
+          f"(+-{ratio}); mean over {len(rows)} frames {mean * ratio:.0f} instructions")
+    print(f"{label}:   per stage (instructions): " + ", ".join(
+        f"{n} {s * ratio}" for n, s in zip(names, stages)))
+    return 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    p = sub.add_parser("doubles")
+    p.add_argument("--nm", required=True)
+    p.add_argument("elf", nargs="+")
+    p = sub.add_parser("qemu")
+    p.add_argument("--qemu", default="")
+    p.add_argument("--out", required=True)
+    p.add_argument("--elf", required=True)
+    p.add_argument("--timeout", type=int, default=240)
+    p.add_argument("machine", nargs="*")
+    p = sub.add_parser("compare")
+    p.add_argument("--target", required=True)
+    p.add_argument("--host", required=True)
+    p.add_argument("--rel", type=float, default=1e-3)
+    p.add_argument("--abs", type=float, default=1e-3)
+    p = sub.add_parser("size")
+    p.add_argument("--size", required=True)
+    p.add_argument("--nm", required=True)
+    p.add_argument("--lib", required=True)
+    p.add_argument("--base", required=True)
+    p.add_argument("--archive")
+    p.add_argument("--label")
+    p.add_argument("--text-limit", type=int, default=0)
+    p = sub.add_parser("stack")
+    p.add_argument("--build", required=True)
+    p.add_argument("--src", required=True)
+    p.add_argument("--elf")
+    p.add_argument("--objdump", default="arm-none-eabi-objdump")
+    p.add_argument("--root", default="mtt_tracker_step")
+    p.add_argument("--label")
+    p.add_argument("--limit", type=int, default=0)
+    p = sub.add_parser("insns")
+    p.add_argument("--out", required=True)
+    p.add_argument("--ns-per-tick", type=int, default=40)
+    p.add_argument("--label")
+    a = ap.parse_args()
+    return {"doubles": cmd_doubles, "qemu": cmd_qemu, "compare": cmd_compare,
+            "size": cmd_size, "stack": cmd_stack, "insns": cmd_insns}[a.cmd](a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
