@@ -13,6 +13,8 @@
  * spec 10.3 is done by update.c. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_BASELINES
+
 void mtt_assign2d_solve(mtt_assign_scratch *s, uint16_t n, uint16_t m, mtt_row_fn fill,
                         const void *ctx)
 {
@@ -106,13 +108,13 @@ static void cluster_row(const void *vctx, uint16_t r, mtt_real *w)
         w[j] = MTT_R(0.0);
     }
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-        w[trk->asg.col_of[trk->pairs[k].meas]] = trk->pairs[k].beta + cx->offset;
+        w[trk->base.asg.col_of[trk->pairs[k].meas]] = trk->pairs[k].beta + cx->offset;
     }
 }
 
 void mtt_assign2d_cluster(mtt_tracker *trk, uint16_t c)
 {
-    mtt_assign_scratch *s = &trk->asg;
+    mtt_assign_scratch *s = &trk->base.asg;
     const uint16_t first = trk->cl_first[c], end = trk->cl_first[c + 1u];
     const uint16_t n = (uint16_t)(end - first);
     uint16_t q, k, m = 0;
@@ -165,9 +167,14 @@ void mtt_assign2d_frame(mtt_tracker *trk)
 {
     uint16_t j, c;
     for (j = 0; j < trk->n_meas; ++j) {
-        trk->asg.col_of[j] = MTT_NONE16;
+        trk->base.asg.col_of[j] = MTT_NONE16;
     }
     for (c = 0; c < trk->n_clusters; ++c) {
         mtt_assign2d_cluster(trk, c);
     }
 }
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_baselines_left_out;
+#endif /* MTT_WITH_BASELINES */

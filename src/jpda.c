@@ -27,6 +27,8 @@
  * mode the IPDA formula of spec 6 on the track's own gate. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_BASELINES
+
 static int is_jipda(const mtt_tracker *trk)
 {
     return trk->par.association == MTT_ASSOC_JIPDA;
@@ -41,23 +43,23 @@ void mtt_jpda_weights(mtt_tracker *trk)
         mtt_track_frame *tf = &trk->tf[i];
         const uint16_t m = tf->pair_count;
         mtt_real beta0, L;
-        trk->jp.tb[i] = MTT_R(0.0);
+        trk->base.jp.tb[i] = MTT_R(0.0);
         tf->beta0 = MTT_R(1.0);
         if (!tf->valid) {
             continue;
         }
         if (jipda) {
-            trk->jp.tb[i] = MTT_R(1.0) - pdpg * tf->ex_pred;
+            trk->base.jp.tb[i] = MTT_R(1.0) - pdpg * tf->ex_pred;
         } else if (trk->par.jpda_bias > MTT_R(0.0)) {
-            trk->jp.tb[i] = trk->par.jpda_bias;
+            trk->base.jp.tb[i] = trk->par.jpda_bias;
         } else {
-            trk->jp.tb[i] = tf->lambda * (MTT_R(1.0) - pdpg) / pd;
+            trk->base.jp.tb[i] = tf->lambda * (MTT_R(1.0) - pdpg) / pd;
         }
         for (k = 0; k < m; ++k) {
             const mtt_pair *pp = &trk->pairs[tf->pair_first + k];
             trk->row.p[k] = pp->p;
             trk->row.lam[k] = pp->lam;
-            trk->jp.pa[tf->pair_first + k] =
+            trk->base.jp.pa[tf->pair_first + k] =
                 jipda ? pdpg * tf->ex_pred * pp->p / pp->lam : pg * pp->p;
         }
         /* spec 13.2 CHOICE: IPDA existence on the own gate (jipda overwrites). */
@@ -70,7 +72,7 @@ void mtt_jpda_weights(mtt_tracker *trk)
  * scaled.  Returns -1 when over the track or measurement bound. */
 static int build_dense(mtt_tracker *trk, uint16_t c)
 {
-    mtt_jpda_scratch *s = &trk->jp;
+    mtt_jpda_scratch *s = &trk->base.jp;
     const uint16_t first = trk->cl_first[c], end = trk->cl_first[c + 1u];
     uint16_t q, k, r, j, a;
     if (end - first > MTT_MAX_JPDA_TRACKS) {
@@ -106,13 +108,13 @@ static int build_dense(mtt_tracker *trk, uint16_t c)
         for (j = 0; j < s->m; ++j) {
             s->A[r][j] = MTT_R(0.0);
         }
-        big = s->B[r] = trk->jp.tb[ti];
+        big = s->B[r] = trk->base.jp.tb[ti];
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             for (j = 0; j + 1u < s->m && s->meas_of[j] != trk->pairs[k].meas; ++j) {
             }
-            s->A[r][j] = trk->jp.pa[k];
+            s->A[r][j] = trk->base.jp.pa[k];
             s->gmask[r] |= (uint32_t)1u << j;
-            big = (trk->jp.pa[k] > big) ? trk->jp.pa[k] : big;
+            big = (trk->base.jp.pa[k] > big) ? trk->base.jp.pa[k] : big;
         }
         s->scale[r] = (big > MTT_R(0.0)) ? big : MTT_R(1.0);
         s->B[r] /= s->scale[r];
@@ -268,7 +270,7 @@ static void star_select(mtt_jpda_scratch *s, mtt_real p_prune)
 
 int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
 {
-    mtt_jpda_scratch *s = &trk->jp;
+    mtt_jpda_scratch *s = &trk->base.jp;
     const mtt_real pdpg = trk->par.pd * trk->par.pg;
     uint16_t r, k, j;
     if (build_dense(trk, c) != 0) {
@@ -387,3 +389,8 @@ void mtt_jpda_frame(mtt_tracker *trk)
         }
     }
 }
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_baselines_left_out;
+#endif /* MTT_WITH_BASELINES */

@@ -16,6 +16,8 @@
  * mode only. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_BASELINES
+
 void mtt_adaptive_gates(mtt_tracker *trk)
 {
     const mtt_real sm = (trk->par.meas_sigma[0] > trk->par.meas_sigma[1]) ? trk->par.meas_sigma[0]
@@ -82,3 +84,8 @@ void mtt_adaptive_split(mtt_tracker *trk, uint16_t c)
         }
     }
 }
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_baselines_left_out;
+#endif /* MTT_WITH_BASELINES */

@@ -17,15 +17,17 @@
  *   = 1; B'_t = B_t when L_t is empty) or the constant B'_t = B_t. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_BASELINES
+
 void mtt_cheap_jpda(mtt_tracker *trk, uint16_t c, int normalise)
 {
-    const mtt_real *pa = trk->jp.pa;
+    const mtt_real *pa = trk->base.jp.pa;
     uint16_t q, k, x;
     for (q = trk->cl_first[c]; q < trk->cl_first[c + 1u]; ++q) {
         const uint16_t ti = trk->cl_list[q];
         mtt_track_frame *tf = &trk->tf[ti];
         const uint16_t k0 = tf->pair_first, k1 = (uint16_t)(tf->pair_first + tf->pair_count);
-        const mtt_real B = trk->jp.tb[ti];
+        const mtt_real B = trk->base.jp.tb[ti];
         mtt_real T = MTT_R(0.0), sum;
         if (tf->pair_count == 0u) {
             tf->beta0 = MTT_R(1.0);
@@ -56,7 +58,7 @@ void mtt_cheap_jpda(mtt_tracker *trk, uint16_t c, int normalise)
 
 void mtt_subopt_jpda(mtt_tracker *trk, uint16_t c, int per_track_b)
 {
-    mtt_jpda_scratch *s = &trk->jp;
+    mtt_jpda_scratch *s = &trk->base.jp;
     const mtt_real *pa = s->pa;
     uint16_t q, k, x, a;
     /* Per row: the largest A, its measurement and the second largest. */
@@ -133,3 +135,8 @@ void mtt_subopt_jpda(mtt_tracker *trk, uint16_t c, int per_track_b)
         }
     }
 }
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_baselines_left_out;
+#endif /* MTT_WITH_BASELINES */

@@ -10,6 +10,8 @@
  * used (spec 15.1), the others go to initiation. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_BASELINES
+
 void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c)
 {
     const mtt_real thr = trk->par.nnjpda_threshold;
@@ -24,3 +26,8 @@ void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c)
     }
     mtt_mmr_cluster(trk, c, 0);
 }
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_baselines_left_out;
+#endif /* MTT_WITH_BASELINES */

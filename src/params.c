@@ -76,6 +76,9 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     }
     if ((int)p->association < 0 || (int)p->association >= (int)MTT_ASSOC_COUNT) {
         bad = "association";
+    } else if (!MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
+        bad = "association"; /* built with MTT_WITH_BASELINES 0 */
+        st = MTT_ERR_UNSUPPORTED;
     } else if (!in_range(p->process_psd, MTT_R(0.0), 1, big, 0)) {
         bad = "process_psd";
     } else if (!in_range(p->meas_sigma[0], MTT_R(0.0), 1, big, 0) ||

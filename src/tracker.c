@@ -260,9 +260,11 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     select_meas(trk, meas, n);
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     predict_all(trk, dt);
+#if MTT_WITH_BASELINES
     if (mode == MTT_ASSOC_ADAPTIVE_JPDA) {
         mtt_adaptive_gates(trk); /* per-track gate thresholds (spec 13.7) */
     }
+#endif
     charge(trk, MTT_STAGE_PREDICT, &mark);
     mtt_gate_frame(trk);
     charge(trk, MTT_STAGE_GATE, &mark);
@@ -273,11 +275,14 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
         for (c = 0; c < trk->n_clusters; ++c) {
             mtt_mmr_cluster(trk, c, 1);
         }
-    } else if (mode == MTT_ASSOC_IHPDA_2D) {
+    }
+#if MTT_WITH_BASELINES
+    else if (mode == MTT_ASSOC_IHPDA_2D) {
         mtt_assign2d_frame(trk);
     } else if (mode >= MTT_ASSOC_JIPDA) {
         mtt_jpda_frame(trk); /* JIPDA and the JPDA family (spec 13) */
     }
+#endif
     charge(trk, MTT_STAGE_ASSOCIATE, &mark);
     mtt_update_frame(trk);
     charge(trk, MTT_STAGE_UPDATE, &mark);

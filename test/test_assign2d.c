@@ -10,6 +10,8 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+#if MTT_WITH_BASELINES
+
 static mtt_assign_scratch ws;
 static mtt_tracker trk;
 
@@ -246,3 +248,24 @@ int main(void)
 #endif
     return UNITY_END();
 }
+
+#else /* MTT_WITH_BASELINES == 0 */
+
+/* Built without the baselines: they must be refused, not half-run. */
+static void test_baselines_refused(void)
+{
+    mtt_params p;
+    const char *field = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_IHPDA_2D;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &field));
+    TEST_ASSERT_EQUAL_STRING("association", field);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_baselines_refused);
+    return UNITY_END();
+}
+#endif

@@ -11,6 +11,8 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+#if MTT_WITH_BASELINES
+
 static mtt_tracker trk;
 
 #define PD_TV 0.9
@@ -75,7 +77,7 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
     mtt_jpda_weights(&trk);
     if (!(B > 0.0) && mode != MTT_ASSOC_JIPDA) {
         for (t = 0; t < n; ++t) {
-            trk.jp.tb[t] = MTT_R(0.0);
+            trk.base.jp.tb[t] = MTT_R(0.0);
         }
     }
 }
@@ -112,9 +114,9 @@ static void test_tv13_cheap_raw(void)
     static const double r1[3] = {0.5555555556, 0.2307692308, 0}, r2[3] = {0, 0.4, 0.2857142857};
     problem(MTT_ASSOC_CHEAP_JPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_UINT16(1u, trk.n_clusters);
-    TV_ASSERT_REAL(0.8, trk.jp.pa[0] + trk.jp.pa[1]); /* TV13 T_1 */
-    TV_ASSERT_REAL(0.6, trk.jp.pa[2] + trk.jp.pa[3]); /* TV13 T_2 */
-    TV_ASSERT_REAL(0.7, trk.jp.pa[1] + trk.jp.pa[2]); /* TV13 M_2 */
+    TV_ASSERT_REAL(0.8, trk.base.jp.pa[0] + trk.base.jp.pa[1]); /* TV13 T_1 */
+    TV_ASSERT_REAL(0.6, trk.base.jp.pa[2] + trk.base.jp.pa[3]); /* TV13 T_2 */
+    TV_ASSERT_REAL(0.7, trk.base.jp.pa[1] + trk.base.jp.pa[2]); /* TV13 M_2 */
     mtt_cheap_jpda(&trk, 0, 0);
     assert_row(0, 3, 0.1111111111, r1, "TV13 Cheap raw");
     assert_row(1, 3, 0.1428571429, r2, "TV13 Cheap raw");
@@ -143,7 +145,7 @@ static void test_tv13_suboptimal(void)
     mtt_subopt_jpda(&trk, 0, 0); /* constant B */
     for (s = 0; s < 2; ++s) {
         for (j = 0; j < 3; ++j) {
-            double n_sj = (trk.jp.arg1[s] == j) ? (double)trk.jp.max2[s] : (double)trk.jp.max1[s];
+            double n_sj = (trk.base.jp.arg1[s] == j) ? (double)trk.base.jp.max2[s] : (double)trk.base.jp.max1[s];
             TV_ASSERT_REAL_MSG(N[s][j], n_sj, "TV13 N[s][j]");
             /* D = beta * B / beta_0 (constant B) */
             TV_ASSERT_REAL_MSG(D[s][j], beta(s, j) * 0.1 / (double)trk.tf[s].beta0, "TV13 D");
@@ -153,8 +155,8 @@ static void test_tv13_suboptimal(void)
     assert_row(1, 3, 0.25, c2, "TV13 Suboptimal constant B");
     problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
     mtt_subopt_jpda(&trk, 0, 1); /* library default B_1 = 0.04, B_2 = 0.05 */
-    TV_ASSERT_REAL(0.04, 0.1 * (double)trk.jp.max1[1]); /* TV13 B_1 */
-    TV_ASSERT_REAL(0.05, 0.1 * (double)trk.jp.max1[0]); /* TV13 B_2 */
+    TV_ASSERT_REAL(0.04, 0.1 * (double)trk.base.jp.max1[1]); /* TV13 B_1 */
+    TV_ASSERT_REAL(0.05, 0.1 * (double)trk.base.jp.max1[0]); /* TV13 B_2 */
     assert_row(0, 3, 0.1333333333, p1, "TV13 Suboptimal B_t");
     assert_row(1, 3, 0.1428571429, p2, "TV13 Suboptimal B_t");
 }
@@ -169,11 +171,11 @@ static void test_tv13_exact_jpda_events(void)
     int e;
     problem(MTT_ASSOC_JPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(8u, trk.jp.n_events); /* TV13: 8 feasible events */
-    sc = (double)trk.jp.scale[0] * (double)trk.jp.scale[1]; /* rows are scaled */
+    TEST_ASSERT_EQUAL_UINT32(8u, trk.base.jp.n_events); /* TV13: 8 feasible events */
+    sc = (double)trk.base.jp.scale[0] * (double)trk.base.jp.scale[1]; /* rows are scaled */
     for (e = 0; e < 8; ++e) {
-        TV_ASSERT_REAL_MSG(w[e], (double)trk.jp.ev_w[e] * sc, "TV13 event weight");
-        total += (double)trk.jp.ev_w[e] * sc;
+        TV_ASSERT_REAL_MSG(w[e], (double)trk.base.jp.ev_w[e] * sc, "TV13 event weight");
+        total += (double)trk.base.jp.ev_w[e] * sc;
     }
     TV_ASSERT_REAL(0.51, total); /* TV13 total weight */
     assert_row(0, 3, 0.137254902, r1, "TV13 exact JPDA");
@@ -185,7 +187,7 @@ static void test_tv13_jpda_star_equals_jpda_here(void)
     static const double r1[3] = {0.6862745098, 0.1764705882, 0};
     problem(MTT_ASSOC_JPDA_STAR, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(8u, trk.jp.n_kept); /* TV13: JPDA* prunes nothing here */
+    TEST_ASSERT_EQUAL_UINT32(8u, trk.base.jp.n_kept); /* TV13: JPDA* prunes nothing here */
     assert_row(0, 3, 0.137254902, r1, "TV13 JPDA*");
 }
 
@@ -220,14 +222,14 @@ static void test_tv13_2x2_jpda_and_star(void)
     static const double s1[2] = {0.1408450704, 0.6197183099}, s2[2] = {0.6338028169, 0.08450704225};
     problem(MTT_ASSOC_JPDA, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(7u, trk.jp.n_events); /* TV13: JPDA 7 events */
+    TEST_ASSERT_EQUAL_UINT32(7u, trk.base.jp.n_events); /* TV13: JPDA 7 events */
     assert_row(0, 2, 0.1683168317, j1, "TV13 2x2 JPDA");
     assert_row(1, 2, 0.198019802, j2, "TV13 2x2 JPDA");
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(6u, trk.jp.n_kept); /* TV13: 6 kept */
+    TEST_ASSERT_EQUAL_UINT32(6u, trk.base.jp.n_kept); /* TV13: 6 kept */
     /* TV13: (T1->z1, T2->z2), the 5th event in enumeration order, is pruned. */
-    TEST_ASSERT_EQUAL_INT(0, (trk.jp.ev_keep[0] >> 4) & 1);
+    TEST_ASSERT_EQUAL_INT(0, (trk.base.jp.ev_keep[0] >> 4) & 1);
     assert_row(0, 2, 0.2394366197, s1, "TV13 2x2 JPDA*");
     assert_row(1, 2, 0.2816901408, s2, "TV13 2x2 JPDA*");
 }
@@ -240,7 +242,7 @@ static void test_jpda_star_pruning(void)
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
     trk.par.jpda_star_threshold = MTT_R(0.1);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(4u, trk.jp.n_kept);
+    TEST_ASSERT_EQUAL_UINT32(4u, trk.base.jp.n_kept);
     assert_row(0, 2, 0.045 / 0.315, s1, "JPDA* pruned");
     assert_row(1, 2, 0.09 / 0.315, s2, "JPDA* pruned");
 }
@@ -321,7 +323,7 @@ static void test_tv13_event_counts(void)
     for (c = 0; c < 4; ++c) {
         problem(MTT_ASSOC_JPDA, nm[c][0], nm[c][1], a, 0.1, NULL);
         TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-        TEST_ASSERT_EQUAL_UINT32(count[c], trk.jp.n_events);
+        TEST_ASSERT_EQUAL_UINT32(count[c], trk.base.jp.n_events);
     }
 }
 
@@ -375,3 +377,24 @@ int main(void)
     RUN_TEST(test_event_bound_fallback);
     return UNITY_END();
 }
+
+#else /* MTT_WITH_BASELINES == 0 */
+
+/* Built without the baselines: they must be refused, not half-run. */
+static void test_baselines_refused(void)
+{
+    mtt_params p;
+    const char *field = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_JPDA;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &field));
+    TEST_ASSERT_EQUAL_STRING("association", field);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_baselines_refused);
+    return UNITY_END();
+}
+#endif

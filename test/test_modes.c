@@ -10,6 +10,8 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+#if MTT_WITH_BASELINES
+
 #ifdef MTT_REAL_DOUBLE
 #define STATE_TOL 1e-9
 #else
@@ -221,3 +223,35 @@ int main(void)
     RUN_TEST(test_crossing_every_mode_confirms_both);
     return UNITY_END();
 }
+
+#else /* MTT_WITH_BASELINES == 0 */
+
+/* Built without the baselines: the four core modes run, every baseline
+ * mode is refused by mtt_params_check and mtt_tracker_init. */
+static void test_core_modes_only(void)
+{
+    static mtt_tracker t;
+    int m;
+    for (m = 0; m < (int)MTT_ASSOC_COUNT; ++m) {
+        mtt_params p;
+        const char *field = NULL;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+        p.association = (mtt_assoc)m;
+        if (m <= (int)MTT_ASSOC_IPDA) {
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &field));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&t, &p));
+        } else {
+            TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &field));
+            TEST_ASSERT_EQUAL_STRING("association", field);
+            TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_init(&t, &p));
+        }
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_core_modes_only);
+    return UNITY_END();
+}
+#endif

@@ -58,6 +58,14 @@
 #define MTT_MAX_JPDA_EVENTS 2048
 #endif
 
+/* 1: build the comparison baselines (ihpda-2d, jipda, the JPDA family).
+ * 0: leave them out -- their scratch (mostly the JPDA* event store) leaves
+ * the tracker, and those modes report MTT_ERR_UNSUPPORTED.  For firmware
+ * that runs only the LM-IHPDA / IHPDA / IPDA modes. */
+#ifndef MTT_WITH_BASELINES
+#define MTT_WITH_BASELINES 1
+#endif
+
 #if MTT_MAX_TRACKS < 1 || MTT_MAX_TRACKS > 4096
 #error "MTT_MAX_TRACKS must be in [1, 4096]"
 #endif

@@ -341,8 +341,13 @@ typedef struct mtt_tracker {
     uint16_t n_merge;
     mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
     mtt_row_scratch row;
-    mtt_assign_scratch asg;         /* ihpda-2d */
-    mtt_jpda_scratch jp;            /* JPDA family */
+#if MTT_WITH_BASELINES
+    /* One mode runs per tracker, so the baselines share their scratch. */
+    union {
+        mtt_assign_scratch asg;     /* ihpda-2d */
+        mtt_jpda_scratch jp;        /* JIPDA and the JPDA family */
+    } base;
+#endif
     /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
     uint16_t n_prev;
     mtt_mstore prev[MTT_MAX_MEAS];
