@@ -98,6 +98,24 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
     return r;
 }
 
+/* A birth needs a finite state and a positive definite covariance: with an
+ * extreme frame interval R/dt^2 underflows to 0 (huge dt, tiny sigma) or
+ * the velocity overflows (tiny dt), and such a track would report a
+ * singular or infinite P until the next frame deletes it (spec 3).  Not
+ * counted: no track was possible. */
+static int birth_ok(const mtt_real x[4], mtt_real P[4][4])
+{
+    const mtt_real zero[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_real d2;
+    int i;
+    for (i = 0; i < 4; ++i) {
+        if (!mtt_isfinite(x[i])) {
+            return 0;
+        }
+    }
+    return mtt_chol4_quad(P, zero, &d2) == 0;
+}
+
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
 {
     uint16_t j, a, k;
@@ -148,6 +166,9 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
                 x[2] = (b->x - pa->x) / dt;
                 x[3] = (b->y - pa->y) / dt;
                 mtt_two_point_cov(trk->R, dt, P);
+                if (!birth_ok(x, P)) {
+                    continue;
+                }
                 if (mtt_track_append(trk, x, P, trk->par.existence_init, 0, 1) < 0) {
                     trk->stats.last.births_dropped++;
                 } else {
