@@ -1,0 +1,311 @@
+"""Scoring: pure functions on numpy arrays (no I/O, no global state).
+
+Conventions used throughout
+---------------------------
+* Distances are Euclidean distances between 2-D positions (x, y) in the
+  scenario's length unit; velocities are not scored.
+* Only **confirmed** tracks are scored (tentative tracks are counted, never
+  matched), as in seeds 000 and 004 which report confirmed tracks.
+* **Per-scan matching rule** (:func:`match`), used for confirmed true/false
+  tracks, RMSE and the seeded-track outcome inputs: at each scan
+  independently, a one-to-one assignment between targets present in the
+  field and confirmed tracks that (1) has the largest possible number of
+  pairs whose distance is <= the association distance ``d_a`` and (2) among
+  those, the smallest total distance.  Pairs farther than ``d_a`` are never
+  matched.  It is computed exactly (Hungarian method, ``assign.py``).
+* A **confirmed true track** at a scan is a confirmed track matched to a
+  target by that rule; every other confirmed track at that scan is a
+  **confirmed false track**.  So a second track on an already followed
+  target is false, and at most one true track per target is counted (seed
+  004 Table 1 counts at most 3 per run).
+* **Position RMSE per target** at scan k over runs: sqrt(mean of the squared
+  distance between the target and its matched confirmed track), over the
+  runs where the target was matched at k.  Unmatched scans are not errors;
+  they show up in the confirmed-true count instead.
+* **GOSPA** (Rahmathullah, Garcia-Fernandez, Svensson 2017) with p = 1,
+  alpha = 2 and cut-off c, per scan, exact assignment.
+* **CLEAR-MOT** (Bernardin and Stiefelhagen 2008) with match threshold
+  ``d_a``; see :func:`clear_mot` for the exact correspondence rule.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .assign import linear_assignment
+
+__all__ = [
+    "distances", "match", "confirmed_true_false", "gospa", "clear_mot",
+    "seeded_outcome", "counts_per_scan", "time_per_frame", "frames", "score_run",
+]
+
+
+def distances(a_xy, b_xy) -> np.ndarray:
+    """Matrix D[i, j] = |a_i - b_j| (Euclidean) for (n, 2) and (m, 2) arrays."""
+    a = np.asarray(a_xy, float).reshape(-1, 2)
+    b = np.asarray(b_xy, float).reshape(-1, 2)
+    return np.sqrt(((a[:, None, :] - b[None, :, :]) ** 2).sum(axis=2))
+
+
+def match(truth_xy, track_xy, cutoff: float, dist=None) -> list[tuple[int, int]]:
+    """Per-scan matching rule (module docstring): pairs (truth index, track index).
+
+    Maximum number of pairs with distance <= cutoff, then minimum total
+    distance.  Implemented as one assignment on the cost d if d <= cutoff
+    else BIG, with BIG larger than any possible sum of admissible costs, and
+    the BIG pairs dropped afterwards.
+    """
+    d = distances(truth_xy, track_xy) if dist is None else np.asarray(dist, float)
+    n, m = d.shape
+    if n == 0 or m == 0:
+        return []
+    ok = d <= cutoff
+    if not ok.any():
+        return []
+    big = (min(n, m) + 1) * cutoff + 1.0
+    cost = np.where(ok, d, big)
+    return [(i, j) for i, j in linear_assignment(cost) if ok[i, j]]
+
+
+def confirmed_true_false(truth_xy, conf_xy, cutoff: float) -> tuple[int, int]:
+    """(confirmed true, confirmed false) track counts at one scan (module rule)."""
+    n_conf = len(np.asarray(conf_xy).reshape(-1, 2))
+    nt = len(match(truth_xy, conf_xy, cutoff))
+    return nt, n_conf - nt
+
+
+def gospa(truth_xy, est_xy, c: float, p: float = 1.0, alpha: float = 2.0) -> dict:
+    """GOSPA distance between a truth set X and an estimate set Y at one scan.
+
+    d = [ min over assignments gamma of  sum_{(i,j) in gamma} d(x_i, y_j)^p
+          + c^p / alpha * (|X| + |Y| - 2 |gamma|) ]^(1/p)
+    where only pairs with d(x_i, y_j) < c may be assigned (alpha = 2; other
+    alpha are not supported).  Computed exactly: assign the smaller set
+    fully with cost min(d, c)^p (a pair at d >= c then costs c^p, which is
+    exactly one missed plus one false target at c^p / 2 each).
+
+    Returns dict: gospa, loc (sum of d^p over real pairs), missed / false
+    (their c^p/2 terms), n_missed, n_false, n_assigned.
+    """
+    if alpha != 2.0:
+        raise ValueError("only alpha = 2 is supported")
+    X = np.asarray(truth_xy, float).reshape(-1, 2)
+    Y = np.asarray(est_xy, float).reshape(-1, 2)
+    nx, ny = len(X), len(Y)
+    half = c ** p / 2.0
+    real = []
+    if nx and ny:
+        d = distances(X, Y)
+        cost = np.minimum(d, c) ** p
+        real = [(i, j) for i, j in linear_assignment(cost) if d[i, j] < c]
+        loc = float(sum(d[i, j] ** p for i, j in real))
+    else:
+        loc = 0.0
+    na = len(real)
+    missed = half * (nx - na)
+    false = half * (ny - na)
+    return {"gospa": (loc + missed + false) ** (1.0 / p), "loc": loc, "missed": missed, "false": false,
+            "n_missed": nx - na, "n_false": ny - na, "n_assigned": na}
+
+
+def clear_mot(frame_list, cutoff: float) -> dict:
+    """CLEAR-MOT over a sequence of scans.
+
+    ``frame_list``: iterable of (gt_ids, gt_xy, hyp_ids, hyp_xy) per scan
+    (hypotheses = confirmed tracks).  Correspondence rule per scan:
+
+    1. a (target, track) pair matched at the previous scan is kept if both
+       are present and still within ``cutoff``;
+    2. the remaining targets and tracks are matched by :func:`match`;
+    3. an **ID switch** is counted for each target matched in step 2 to a
+       track other than the track it was last matched to (at any earlier
+       scan; the py-motmetrics convention);
+    4. misses FN = unmatched targets, false positives FP = unmatched tracks.
+
+    MOTA = 1 - (sum FN + sum FP + sum IDSW) / sum GT (NaN if no GT);
+    MOTP = mean distance of matched pairs (NaN if none).
+    Returns the totals plus per-scan arrays ``idsw_scan``, ``fn_scan``,
+    ``fp_scan``.
+    """
+    prev: dict[int, int] = {}
+    last: dict[int, int] = {}
+    fn_s, fp_s, sw_s = [], [], []
+    gt_total = matches_total = 0
+    dist_total = 0.0
+    for gt_ids, gt_xy, hyp_ids, hyp_xy in frame_list:
+        gt_ids = [int(a) for a in gt_ids]
+        hyp_ids = [int(a) for a in hyp_ids]
+        d = distances(gt_xy, hyp_xy)
+        hyp_index = {h: j for j, h in enumerate(hyp_ids)}
+        cur: dict[int, int] = {}
+        used_g, used_h = set(), set()
+        for gi, g in enumerate(gt_ids):
+            h = prev.get(g)
+            if h is not None and h in hyp_index and d[gi, hyp_index[h]] <= cutoff:
+                cur[g] = h
+                used_g.add(gi)
+                used_h.add(hyp_index[h])
+        rest_g = [i for i in range(len(gt_ids)) if i not in used_g]
+        rest_h = [j for j in range(len(hyp_ids)) if j not in used_h]
+        sw = 0
+        if rest_g and rest_h:
+            for a, b in match(None, None, cutoff, dist=d[np.ix_(rest_g, rest_h)]):
+                g, h = gt_ids[rest_g[a]], hyp_ids[rest_h[b]]
+                if g in last and last[g] != h:
+                    sw += 1
+                cur[g] = h
+        for g, h in cur.items():
+            dist_total += d[gt_ids.index(g), hyp_index[h]]
+        fn_s.append(len(gt_ids) - len(cur))
+        fp_s.append(len(hyp_ids) - len(cur))
+        sw_s.append(sw)
+        gt_total += len(gt_ids)
+        matches_total += len(cur)
+        prev = cur
+        last.update(cur)
+    fn, fp, idsw = int(sum(fn_s)), int(sum(fp_s)), int(sum(sw_s))
+    return {
+        "gt": gt_total, "matches": matches_total, "fn": fn, "fp": fp, "idsw": idsw,
+        "dist": dist_total,
+        "mota": (1.0 - (fn + fp + idsw) / gt_total) if gt_total else math.nan,
+        "motp": (dist_total / matches_total) if matches_total else math.nan,
+        "fn_scan": np.array(fn_s, int), "fp_scan": np.array(fp_s, int), "idsw_scan": np.array(sw_s, int),
+    }
+
+
+def seeded_outcome(seeded_targets, truth_ids, truth_xy, track_ids, track_xy, cutoff: float) -> dict:
+    """Coalescence-or-switch outcome of one run, for seeded (initial) tracks.
+
+    Seeded track number i (track id i, from ``initial_tracks`` entry i)
+    belongs to target ``seeded_targets[i]``.  At the evaluation scan (the
+    caller passes the targets present and the live tracks of that scan,
+    tentative or confirmed):
+
+    * each live seeded track is **on** the target nearest to its position,
+      if that distance is <= ``cutoff``;
+    * it is **lost** if it is not alive (deleted or merged away) or no
+      target lies within ``cutoff``.
+
+    The run is classified with three flags, not exclusive:
+
+    * ``coalescence``: some target has two or more seeded tracks on it;
+    * ``switch``: some seeded track is on a target other than its own;
+    * ``lost``: some seeded track is lost.
+
+    ``failed`` = coalescence or switch or lost, i.e. "at the end some seeded
+    track is not on its own target"; the coalescence-or-switch rate of a
+    Monte Carlo set is the fraction of runs with ``failed`` (the lost part is
+    also reported separately).  A seeded track whose own target has left the
+    field counts as lost or switched, so scenarios evaluate while every
+    seeded target is present.
+    """
+    truth_ids = [int(a) for a in truth_ids]
+    tx = np.asarray(truth_xy, float).reshape(-1, 2)
+    alive = {int(t): np.asarray(p, float) for t, p in zip(track_ids, np.asarray(track_xy, float).reshape(-1, 2))}
+    on: list[int | None] = []
+    for i, _g in enumerate(seeded_targets):
+        if i not in alive or not truth_ids:
+            on.append(None)
+            continue
+        dd = np.hypot(*(tx - alive[i]).T)
+        j = int(np.argmin(dd))
+        on.append(truth_ids[j] if dd[j] <= cutoff else None)
+    assigned = [a for a in on if a is not None]
+    coalescence = len(assigned) != len(set(assigned))
+    switch = any(a is not None and a != int(g) for a, g in zip(on, seeded_targets))
+    lost = any(a is None for a in on)
+    return {"on": on, "coalescence": coalescence, "switch": switch, "lost": lost,
+            "failed": coalescence or switch or lost}
+
+
+def counts_per_scan(track_scan, track_confirmed, nscan: int) -> tuple[np.ndarray, np.ndarray]:
+    """(tentative, confirmed) numbers of live tracks at each scan 0..nscan-1."""
+    s = np.asarray(track_scan, int)
+    c = np.asarray(track_confirmed, bool)
+    conf = np.bincount(s[c], minlength=nscan)[:nscan]
+    tent = np.bincount(s[~c], minlength=nscan)[:nscan]
+    return tent, conf
+
+
+def time_per_frame(elapsed_s: float, nscan: int) -> float:
+    """Wall time of one mtt-track call divided by its number of scans (seconds).
+
+    The runner measures ``elapsed_s`` around the whole subprocess, so it
+    includes process start-up and file parsing: an upper bound on the
+    tracker's own cost per frame.
+    """
+    return elapsed_s / nscan if nscan > 0 else math.nan
+
+
+def _slices(scan, nscan):
+    scan = np.asarray(scan, int)
+    order = np.argsort(scan, kind="stable")
+    bounds = np.searchsorted(scan[order], np.arange(nscan + 1))
+    return order, bounds
+
+
+def frames(truth: dict, tracks: dict, nscan: int, confirmed_only: bool = True):
+    """Per-scan (truth ids, truth xy, track ids, track xy) tuples, k = 0..nscan-1."""
+    to, tb = _slices(truth["scan"], nscan)
+    keep = np.asarray(tracks["confirmed"], bool) if confirmed_only else np.ones(len(tracks["scan"]), bool)
+    kidx = np.nonzero(keep)[0]
+    ro, rb = _slices(np.asarray(tracks["scan"], int)[kidx], nscan)
+    out = []
+    for k in range(nscan):
+        ti = to[tb[k]:tb[k + 1]]
+        ri = kidx[ro[rb[k]:rb[k + 1]]]
+        out.append((np.asarray(truth["target"])[ti],
+                    np.column_stack([np.asarray(truth["x"])[ti], np.asarray(truth["y"])[ti]]),
+                    np.asarray(tracks["track"])[ri],
+                    np.column_stack([np.asarray(tracks["x"])[ri], np.asarray(tracks["y"])[ri]])))
+    return out
+
+
+def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gospa_c: float,
+              seeded_targets=(), eval_scan: int = -1) -> dict:
+    """All per-run metrics of one run (tables as in csvio).
+
+    Returns per-scan arrays (length nscan): n_truth, n_tentative,
+    n_confirmed, conf_true, conf_false, gospa, gospa_loc, gospa_missed,
+    gospa_false, idsw; ``sq_err``: {target id: array of squared position
+    errors of its matched confirmed track, NaN where unmatched}; ``mot``:
+    the CLEAR-MOT totals; ``seeded``: :func:`seeded_outcome` at
+    ``eval_scan`` (negative counts from the end), or None without seeded
+    tracks.
+    """
+    fr = frames(truth, tracks, nscan, confirmed_only=True)
+    tent, conf = counts_per_scan(tracks["scan"], tracks["confirmed"], nscan)
+    out = {k: np.zeros(nscan) for k in ("gospa", "gospa_loc", "gospa_missed", "gospa_false")}
+    n_truth = np.zeros(nscan, int)
+    ct = np.zeros(nscan, int)
+    cf = np.zeros(nscan, int)
+    sq = {int(t): np.full(nscan, np.nan) for t in np.unique(np.asarray(truth["target"], int))}
+    for k, (gid, gxy, _hid, hxy) in enumerate(fr):
+        n_truth[k] = len(gid)
+        d = distances(gxy, hxy)
+        pairs = match(None, None, match_distance, dist=d) if len(gid) and len(hxy) else []
+        ct[k] = len(pairs)
+        cf[k] = len(hxy) - len(pairs)
+        for i, j in pairs:
+            sq[int(gid[i])][k] = d[i, j] ** 2
+        g = gospa(gxy, hxy, gospa_c)
+        out["gospa"][k] = g["gospa"]
+        out["gospa_loc"][k] = g["loc"]
+        out["gospa_missed"][k] = g["missed"]
+        out["gospa_false"][k] = g["false"]
+    mot = clear_mot(fr, match_distance)
+    seeded = None
+    if seeded_targets:
+        k = eval_scan if eval_scan >= 0 else nscan + eval_scan
+        allfr = frames(truth, tracks, nscan, confirmed_only=False)[k]
+        seeded = seeded_outcome(list(seeded_targets), allfr[0], allfr[1], allfr[2], allfr[3], match_distance)
+        seeded["eval_scan"] = int(k)
+    out.update({
+        "n_truth": n_truth, "n_tentative": tent, "n_confirmed": conf, "conf_true": ct, "conf_false": cf,
+        "idsw": mot["idsw_scan"], "sq_err": sq,
+        "mot": {k: mot[k] for k in ("gt", "matches", "fn", "fp", "idsw", "dist", "mota", "motp")},
+        "seeded": seeded,
+    })
+    return out
