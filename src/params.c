@@ -151,6 +151,22 @@ mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
     return MTT_OK;
 }
 
+/* strcmp(a, b) == 0 without libc's strcmp (0.7 KiB on newlib); the names
+ * are short, so at most 16 characters are compared. */
+static int same_text(const char *a, const char *b)
+{
+    int i;
+    for (i = 0; i < 16; ++i) {
+        if (a[i] != b[i]) {
+            return 0;
+        }
+        if (a[i] == '\0') {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
 {
     int k;
@@ -158,7 +174,7 @@ mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
         return MTT_ERR_NULL;
     }
     for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
-        if (strcmp(name, assoc_names[k]) == 0) {
+        if (same_text(name, assoc_names[k])) {
             *a = (mtt_assoc)k;
             return MTT_OK;
         }

@@ -17,9 +17,10 @@ static int is_ihpda_mode(mtt_assoc a)
     return a == MTT_ASSOC_LM_IHPDA || a == MTT_ASSOC_IHPDA || a == MTT_ASSOC_IHPDA_2D;
 }
 
+/* Constant 0 without the baselines, so their update code is not linked. */
 static int is_jpda_mode(mtt_assoc a)
 {
-    return a >= MTT_ASSOC_JIPDA && a < MTT_ASSOC_COUNT;
+    return MTT_WITH_BASELINES && a >= MTT_ASSOC_JIPDA && a < MTT_ASSOC_COUNT;
 }
 
 static void keep_prediction(mtt_tracker *trk, uint16_t ti)
@@ -163,7 +164,7 @@ void mtt_update_frame(mtt_tracker *trk)
             }
         } else if (tf->pair_count == 0u) {
             keep_prediction(trk, i);
-        } else if (mode == MTT_ASSOC_NNJPDA) {
+        } else if (is_jpda_mode(mode) && mode == MTT_ASSOC_NNJPDA) {
             update_nn(trk, i);
         } else if (is_jpda_mode(mode)) {
             update_jpda(trk, i);
