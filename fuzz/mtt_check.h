@@ -370,7 +370,8 @@ static inline int mtt_check_after_seed(mtt_check *c, const mtt_tracker *trk, uin
     return 1;
 }
 
-/* Is a 4x4 row-major covariance positive definite in double precision? */
+/* Is a 4x4 row-major covariance positive definite, with a margin that
+ * mtt_real arithmetic can keep (finding F1)? */
 static inline int mtt_check_pd16(const mtt_real P16[16])
 {
     double A[4][4];
@@ -378,11 +379,13 @@ static inline int mtt_check_pd16(const mtt_real P16[16])
     for (a = 0; a < 4; ++a)
         for (b = 0; b < 4; ++b)
             A[a][b] = 0.5 * ((double)P16[4 * a + b] + (double)P16[4 * b + a]);
-    return mtt_check_min_pivot((const double(*)[4])A) > 0.0;
+    /* well conditioned for mtt_real: a relative pivot below ~1000 eps
+     * cannot survive a float (or double) prediction and update */
+    return mtt_check_min_pivot((const double(*)[4])A) > 1e3 * (double)MTT_REAL_EPS;
 }
 
-/* The caller seeded track id with a P that is not positive definite in
- * double precision and the library accepted it (finding F1). */
+/* The caller seeded track id with a P that is singular, or too badly
+ * conditioned for mtt_real, and the library accepted it (finding F1). */
 static inline void mtt_check_exempt(mtt_check *c, uint32_t id)
 {
     c->singular_seeds++;

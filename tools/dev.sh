@@ -5,7 +5,8 @@
 #   ./tools/dev.sh test    deps, then the workflows test-float, test-double,
 #                          test-float-small (configure + build + ctest each),
 #                          then tools/ci-firmware.sh (cross builds, qemu,
-#                          static analysis; each check one test);
+#                          static analysis; each check one test), then
+#                          tools/ci-robustness.sh (ASan+UBSan, fuzz, soak);
 #                          ends with the line "N passed, M failed"
 #   ./tools/dev.sh demo    deps, build host-float, run the Monte Carlo demo of
 #                          scenarios/crossing3.json into out/demo
@@ -157,6 +158,20 @@ cmd_test() {
     failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
   fi
   if ((rc != 0)) && [[ -z "$line" || "$failed" -eq 0 ]]; then
+    failed=$((failed + 1))
+  fi
+  # Robustness (issue 6): unit tests under ASan+UBSan, fuzz smoke runs, soak.
+  # Each of its checks counts as one test; it prints "robustness: N passed, M failed".
+  say "=== tools/ci-robustness.sh"
+  local rfail=$failed
+  rc=0
+  "$ROOT/tools/ci-robustness.sh" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  line="$(grep -E '^robustness: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n1 || true)"
+  if [[ -n "$line" ]]; then
+    passed=$((passed + $(sed -E 's/^robustness: ([0-9]+) passed.*/\1/' <<<"$line")))
+    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
+  fi
+  if ((rc != 0)) && ((failed == rfail)); then
     failed=$((failed + 1))
   fi
   echo "$passed passed, $failed failed"
