@@ -80,6 +80,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         ++m;
     }
     *best = -1;
+    trk->tf[ti].row_m = (uint8_t)m;
     if (m == 0u) {
         return 0;
     }

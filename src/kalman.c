@@ -89,76 +89,99 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
 }
 
-/* Out = K M K' for a symmetric 2x2 M (m11, m12, m22), added with weight w. */
-static void add_kmk(mtt_real K[4][2], mtt_real m11, mtt_real m12, mtt_real m22,
-                    mtt_real w, mtt_real Out[4][4])
+void mtt_kalman_joseph(mtt_real Pp[4][4], mtt_real K[4][2], const mtt_real R[3], mtt_real Pc[4][4])
 {
-    int i, j;
-    for (i = 0; i < 4; ++i) {
-        mtt_real a = K[i][0] * m11 + K[i][1] * m12;
-        mtt_real b = K[i][0] * m12 + K[i][1] * m22;
-        for (j = 0; j < 4; ++j) {
-            Out[i][j] += w * (a * K[j][0] + b * K[j][1]);
-        }
-    }
-}
-
-void mtt_kalman_joseph(mtt_real Pp[4][4], mtt_real K[4][2], const mtt_real R[3],
-                       mtt_real Pc[4][4])
-{
-    mtt_real AP[4][4];
-    int i, j;
-    /* A = I - K H; A Pp = Pp - K (rows 0,1 of Pp). */
-    for (i = 0; i < 4; ++i) {
-        for (j = 0; j < 4; ++j) {
-            AP[i][j] = Pp[i][j] - K[i][0] * Pp[0][j] - K[i][1] * Pp[1][j];
-        }
-    }
-    /* (A Pp) A' = AP - (columns 0,1 of AP) K'. */
-    for (i = 0; i < 4; ++i) {
-        for (j = 0; j < 4; ++j) {
-            Pc[i][j] = AP[i][j] - AP[i][0] * K[j][0] - AP[i][1] * K[j][1];
-        }
-    }
-    add_kmk(K, R[0], R[1], R[2], MTT_R(1.0), Pc);
-    mtt_sym4(Pc);
+    mtt_real x[4];
+    const mtt_real xp[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    /* The PDA update with no measurement and beta0 = 0 is exactly P_c. */
+    mtt_kalman_pda(xp, Pp, K, R, 0, NULL, NULL, MTT_R(0.0), x, Pc);
 }
 
 void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2],
                     const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4])
 {
-    mtt_real Pc[4][4];
+    mtt_real AP[4][4], A[4][2];
     mtt_real cx = MTT_R(0.0), cy = MTT_R(0.0);
     mtt_real sxx = MTT_R(0.0), sxy = MTT_R(0.0), syy = MTT_R(0.0);
+    mtt_real w = MTT_R(1.0) - beta0, m11, m12, m22;
     uint16_t j;
     int i, k;
+    mtt_real bsum = MTT_R(0.0);
     for (j = 0; j < m; ++j) {
         cx += beta[j] * nu[j][0];
         cy += beta[j] * nu[j][1];
-        sxx += beta[j] * nu[j][0] * nu[j][0];
-        sxy += beta[j] * nu[j][0] * nu[j][1];
-        syy += beta[j] * nu[j][1] * nu[j][1];
+        bsum += beta[j];
+    }
+    /* Spread sum beta nu nu' - nu_c nu_c', written as
+     * sum beta (nu - nu_c)(nu - nu_c)' + (1 - sum beta) nu_c nu_c':
+     * the same in exact arithmetic, but a sum of positive semi-definite
+     * terms (sum beta <= 1), with no cancellation when the innovations are
+     * large (a wide prior). */
+    for (j = 0; j < m; ++j) {
+        const mtt_real dx = nu[j][0] - cx, dy = nu[j][1] - cy;
+        sxx += beta[j] * dx * dx;
+        sxy += beta[j] * dx * dy;
+        syy += beta[j] * dy * dy;
+    }
+    bsum = MTT_R(1.0) - bsum;
+    if (bsum > MTT_R(0.0)) {
+        sxx += bsum * cx * cx;
+        sxy += bsum * cx * cy;
+        syy += bsum * cy * cy;
     }
     for (i = 0; i < 4; ++i) {
         x[i] = xp[i] + K[i][0] * cx + K[i][1] * cy;
     }
-    mtt_kalman_joseph(Pp, K, R, Pc);
-    for (i = 0; i < 4; ++i) {
-        for (k = 0; k < 4; ++k) {
-            P[i][k] = beta0 * Pp[i][k] + (MTT_R(1.0) - beta0) * Pc[i][k];
+    /* P = beta0 Pp + (1 - beta0) P_c + K (sum beta nu nu' - nu_c nu_c') K'
+     * (spec 6, S1 Table 2 erratum applied), with the Joseph form
+     * P_c = A Pp A' + K R K', A = I - K H (spec 3).  Both K . K' terms
+     * share one 2x2 middle matrix M = (1 - beta0) R + spread. */
+    m11 = w * R[0] + sxx;
+    m12 = w * R[1] + sxy;
+    m22 = w * R[2] + syy;
+    /* A = I - K H.  Its position block I - Pp_pos S^-1 equals R S^-1
+     * exactly (S = Pp_pos + R); computing it that way avoids the
+     * cancellation of 1 - K when the prior is far wider than R (K -> 1,
+     * e.g. after a long gap), where the textbook form loses every digit in
+     * float. */
+    {
+        const mtt_real s11 = Pp[0][0] + R[0], s12 = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
+        const mtt_real s22 = Pp[1][1] + R[2];
+        const mtt_real det = s11 * s22 - s12 * s12;
+        const mtt_real i11 = s22 / det, i12 = -s12 / det, i22 = s11 / det;
+        A[0][0] = R[0] * i11 + R[1] * i12;
+        A[0][1] = R[0] * i12 + R[1] * i22;
+        A[1][0] = R[1] * i11 + R[2] * i12;
+        A[1][1] = R[1] * i12 + R[2] * i22;
+        for (i = 2; i < 4; ++i) {
+            A[i][0] = -K[i][0];
+            A[i][1] = -K[i][1];
         }
     }
-    /* Spread of the innovations: sum beta nu nu' - nu_c nu_c' (spec 6, with
-     * the S1 Table 2 erratum applied). */
-    add_kmk(K, sxx - cx * cx, sxy - cx * cy, syy - cy * cy, MTT_R(1.0), P);
-    mtt_sym4(P);
+    /* A Pp: A differs from I only in columns 0 and 1. */
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= 2) ? Pp[i][k] : MTT_R(0.0));
+        }
+    }
+    /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
+     * symmetric by construction. */
+    for (i = 0; i < 4; ++i) {
+        const mtt_real a = K[i][0] * m11 + K[i][1] * m12;
+        const mtt_real b = K[i][0] * m12 + K[i][1] * m22;
+        for (k = i; k < 4; ++k) {
+            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= 2) ? AP[i][k] : MTT_R(0.0));
+            const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
+            P[i][k] = v;
+            P[k][i] = v;
+        }
+    }
 }
 
-int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
+int mtt_chol4(mtt_real A[4][4], mtt_real L[4][4], mtt_real *min_pivot)
 {
-    mtt_real L[4][4], y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis: each y[k] is written before it is read */
-    mtt_real acc = MTT_R(0.0);
+    mtt_real pmin = MTT_REAL_MAX;
     int i, j, k;
     for (i = 0; i < 4; ++i) {
         for (j = 0; j <= i; ++j) {
@@ -170,11 +193,27 @@ int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
                 if (!(s > MTT_R(0.0)) || !mtt_isfinite(s)) {
                     return -1;
                 }
+                pmin = (s < pmin) ? s : pmin;
                 L[i][i] = mtt_sqrt(s);
             } else {
                 L[i][j] = s / L[j][j];
+                L[j][i] = MTT_R(0.0);
             }
         }
+    }
+    if (min_pivot != NULL) {
+        *min_pivot = pmin;
+    }
+    return 0;
+}
+
+int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
+{
+    mtt_real L[4][4], y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis: each y[k] is written before it is read */
+    mtt_real acc = MTT_R(0.0);
+    int i, k;
+    if (mtt_chol4(A, L, NULL) != 0) {
+        return -1;
     }
     /* b' A^-1 b = |L^-1 b|^2: one forward substitution. */
     for (i = 0; i < 4; ++i) {

@@ -81,8 +81,9 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         st = MTT_ERR_UNSUPPORTED;
     } else if (!in_range(p->process_psd, MTT_R(0.0), 1, big, 0)) {
         bad = "process_psd";
-    } else if (!in_range(p->meas_sigma[0], MTT_R(0.0), 1, big, 0) ||
-               !in_range(p->meas_sigma[1], MTT_R(0.0), 1, big, 0)) {
+    } else if (!in_range(p->meas_sigma[0], MTT_R(1e-9), 0, MTT_R(1e9), 0) ||
+               !in_range(p->meas_sigma[1], MTT_R(1e-9), 0, MTT_R(1e9), 0)) {
+        /* sigma^2 must stay a normal number, with room for R / dT^2 */
         bad = "meas_sigma";
     } else if (!in_range(p->pd, MTT_R(0.0), 1, MTT_R(1.0), 0)) {
         bad = "pd";

@@ -38,6 +38,23 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
     t->meas = -1;
 }
 
+/* spec 10.3's set G_f = G minus the measurements assigned to other tracks
+ * is a subset of the set the track's last row was computed over (MMR: the
+ * free measurements when it was assigned; 2-D assignment: all of G).  So
+ * equal sizes mean equal sets, equal rows, and the recomputation can be
+ * skipped: the common case of a track that shares nothing. */
+static int final_set_changed(const mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t k, m = 0;
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        if (!trk->meas[trk->pairs[k].meas].used || (int16_t)k == tf->assigned) {
+            ++m;
+        }
+    }
+    return m != tf->row_m;
+}
+
 /* Single-measurement update with pair k (spec 7.4). */
 static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
 {
@@ -154,10 +171,10 @@ void mtt_update_frame(mtt_tracker *trk)
             if (tf->assigned < 0) {
                 keep_prediction(trk, i);
             } else {
-                int16_t best;
-                if (mode != MTT_ASSOC_IHPDA) {
+                if (mode != MTT_ASSOC_IHPDA && final_set_changed(trk, i)) {
                     /* spec 10.3: recompute over G minus the measurements
-                     * assigned to other tracks (rows were left stale by MMR). */
+                     * assigned to other tracks. */
+                    int16_t best;
                     (void)mtt_ihpda_row(trk, i, 1, tf->assigned, 0, &best);
                 }
                 update_one(trk, i, (uint16_t)tf->assigned);

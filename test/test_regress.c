@@ -77,10 +77,107 @@ void test_birth_with_tiny_interval_is_finite(void)
     assert_tracks_sane();
 }
 
+/* F1: a seed covariance that is singular or nearly so (correlation 1 up
+ * to rounding) was accepted and later gave a singular track covariance.
+ * Now refused; a wide but well-conditioned one (different scales per
+ * state) is still accepted. */
+void test_seed_covariance_conditioning(void)
+{
+    mtt_params p;
+    mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(1.0)};
+    mtt_real P[16];
+    uint32_t id;
+    int i;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    for (i = 0; i < 16; ++i) {
+        P[i] = MTT_R(0.0);
+    }
+    P[0] = MTT_R(4.0);
+    P[5] = MTT_R(4.0);
+    P[10] = MTT_R(1.0);
+    P[15] = MTT_R(1.0);
+    P[1] = P[4] = MTT_R(4.0); /* corr(x, y) = 1: singular */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
+    P[1] = P[4] = MTT_R(3.99999); /* corr 0.9999975: inside double's margin, not float's */
+#ifndef MTT_REAL_DOUBLE
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
+#else
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+#endif
+    P[1] = P[4] = MTT_R(0.0);
+    P[0] = MTT_R(1e12); /* 1e6 sigma beside 1: wide, but well conditioned */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
+    assert_tracks_sane();
+}
+
+/* F2: a meas_sigma whose square underflows (or overflows) made R = 0 and
+ * collapsed covariances.  mtt_params_check now bounds sigma to [1e-9, 1e9]. */
+void test_meas_sigma_bounds(void)
+{
+    mtt_params p;
+    const char *field = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.meas_sigma[1] = MTT_R(1e-20);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
+    TEST_ASSERT_EQUAL_STRING("meas_sigma", field);
+    p.meas_sigma[1] = MTT_R(1e20);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
+    p.meas_sigma[1] = MTT_R(1e-9);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &field));
+}
+
+/* F4: after a very long gap (dT = 1e6 with Sw = 5: position variance 1.7e18
+ * against R = 1) the gain is 1 to float precision; 1 - K and the PDA spread
+ * cancelled and a variance came out negative (P[1][1] = -65535 in
+ * adaptive-jpda).  The update now forms I - K H from R S^-1 and the spread
+ * as a sum of positive terms.  The exact fuzzer input, which fails on the
+ * old update, is fuzz/regress/tracker/f4-long-gap-adaptive-jpda.bin
+ * (ctest fuzz.replay.tracker); this test runs the same kind of frame --
+ * two seeded tracks on one state, a 1e6 gap -- through every mode. */
+void test_long_gap_update_keeps_covariance_positive(void)
+{
+    int mode;
+    for (mode = 0; mode < (int)MTT_ASSOC_COUNT; ++mode) {
+        mtt_params p;
+        const mtt_real x[4] = {MTT_R(82.8125), MTT_R(82.8125), MTT_R(0.828125), MTT_R(0.828125)};
+        const mtt_real P0[16] = {MTT_R(3.3125), 0, MTT_R(0.4140625), 0, 0, MTT_R(3.3125), 0, MTT_R(0.4140625),
+                                 MTT_R(0.4140625), 0, MTT_R(3.3125), 0, 0, MTT_R(0.4140625), 0, MTT_R(3.3125)};
+        const mtt_real P1[16] = {MTT_R(3.3125), 0, MTT_R(0.5), 0, 0, MTT_R(3.3125), 0, MTT_R(0.5),
+                                 MTT_R(0.5), 0, MTT_R(4.0), 0, 0, MTT_R(0.5), 0, MTT_R(4.0)};
+        mtt_meas m[5];
+        uint32_t id;
+        int i;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+        p.association = (mtt_assoc)mode;
+        p.init_gate = MTT_INIT_GATE_INTENSITY;
+        if (mtt_params_check(&p, NULL) != MTT_OK) {
+            continue; /* mode not built in */
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P0, &id));
+        for (i = 0; i < 5; ++i) {
+            m[i] = mk(MTT_R(2.0), MTT_R(2.0));
+            m[i].amplitude = MTT_R(1.625);
+            m[i].has_amplitude = 1;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1e6), m, 5));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P1, &id));
+        m[0] = mk(MTT_R(-7.625), MTT_R(14.375));
+        m[1] = mk(MTT_R(14.625), MTT_R(6.875));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(2e6), m, 2));
+        assert_tracks_sane();
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_birth_with_huge_interval_is_not_singular);
     RUN_TEST(test_birth_with_tiny_interval_is_finite);
+    RUN_TEST(test_seed_covariance_conditioning);
+    RUN_TEST(test_meas_sigma_bounds);
+    RUN_TEST(test_long_gap_update_keeps_covariance_positive);
     return UNITY_END();
 }

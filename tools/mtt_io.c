@@ -550,7 +550,7 @@ typedef struct skey {
 static const skey top_keys[] = {
     {"association", SK_ASSOC, PF(association), 1, "association", NULL},
     {"process_psd", SK_REAL, PF(process_psd), 1, "process_psd", "> 0"},
-    {"meas_sigma", SK_REALS, PF(meas_sigma), 2, "meas_sigma", "> 0"},
+    {"meas_sigma", SK_REALS, PF(meas_sigma), 2, "meas_sigma", "in [1e-9, 1e9]"},
     {"pd", SK_REAL, PF(pd), 1, "pd", "in (0, 1]"},
     {"pg", SK_REAL, PF(pg), 1, "pg", "in (0, 1)"},
     {"clutter_density", SK_REAL, PF(clutter_density), 1, "clutter_density",

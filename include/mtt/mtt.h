@@ -97,7 +97,7 @@ typedef uint32_t (*mtt_cycle_fn)(void *ctx);
 typedef struct mtt_params {
     mtt_assoc association;      /**< default MTT_ASSOC_LM_IHPDA */
     mtt_real process_psd;       /**< Sw of the CV model, > 0 (default 5) */
-    mtt_real meas_sigma[2];     /**< sx, sy > 0 (default 1, 1) */
+    mtt_real meas_sigma[2];     /**< sx, sy in [1e-9, 1e9] (default 1, 1): sigma^2 stays a normal float */
     mtt_real pd;                /**< detection probability in (0, 1] (default 0.9); PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability in (0, 1) (default 0.999) */
     mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (spec 5.2) (default 0) */
@@ -204,6 +204,7 @@ typedef struct mtt_track_frame {
     int16_t assigned;    /* pair index chosen, -1 */
     uint16_t cluster;
     int16_t best;        /* MMR: pair index of the row's best beta, -1 */
+    uint8_t row_m;       /* candidates of the last IHPDA row computed (its m) */
     mtt_real best_beta;  /* MMR: that beta */
     mtt_real beta0;      /* JPDA family: beta of "no measurement" (spec 13) */
     mtt_real ex_post;    /* JPDA family: updated existence (spec 13.2) */
@@ -391,10 +392,13 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
 /** Add a known (seeded) track: confirmed, existence 1 (FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16
  *         values; pass &P[0][0] for a mtt_real[4][4]), symmetric (to 1e-6
- *         relative) and positive definite.
+ *         relative) and positive definite with room for rounding: every
+ *         Cholesky pivot of its correlation matrix above 1000 epsilon of
+ *         mtt_real (correlations up to about 0.99994 in float).
  *  @param id if not NULL, receives the new track's identity.
  *  @return MTT_OK; MTT_ERR_NULL (trk, x or P); MTT_ERR_NOT_INIT; MTT_ERR_VALUE
- *          if x or P is not finite or P is not symmetric positive definite;
+ *          if x or P is not finite, P is not symmetric, or not positive
+ *          definite with that margin;
  *          MTT_ERR_FULL if MTT_MAX_TRACKS tracks are live. */
 MTT_MUST_CHECK mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4],
                                                 const mtt_real P[16], uint32_t *id);

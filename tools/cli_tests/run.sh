@@ -297,7 +297,7 @@ cfg_duplicate_key)      cfg_fail cfg_duplicate_key "key 'pd': given twice" ;;
 cfg_wrong_type)         cfg_fail cfg_wrong_type "key 'pd': must be a number, found a string" ;;
 cfg_wrong_type_bool)    cfg_fail cfg_wrong_type_bool "key 'initiate': must be true or false" ;;
 cfg_out_of_range)       cfg_fail cfg_out_of_range "key 'pd': must be in (0, 1], found 1.5" ;;
-cfg_sigma_out_of_range) cfg_fail cfg_sigma_out_of_range "key 'meas_sigma[1]': must be > 0, found -2" ;;
+cfg_sigma_out_of_range) cfg_fail cfg_sigma_out_of_range "key 'meas_sigma[1]': must be in [1e-9, 1e9], found -2" ;;
 cfg_array_length)       cfg_fail cfg_array_length "key 'meas_sigma': must be an array of 2 numbers" ;;
 cfg_bad_association)    cfg_fail cfg_bad_association "key 'association': unknown association 'lm-ihpdaa'" ;;
 cfg_unsupported_association)
