@@ -381,8 +381,15 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p
 /** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).
  *  Bad detections are skipped and counted; beyond MTT_MAX_MEAS the strongest
  *  amplitudes are kept (detections without amplitude rank below any amplitude,
- *  then by input order).  Cost: O(n log n + tracks + pairs + sum over clusters
- *  of tracks^2 * gated); no step allocates or recurses.
+ *  then by input order).
+ *  Cost, every mode: O(n log n + tracks + pairs) for validation, gating,
+ *  the LM densities, clusters, update and initiation (an x sweep), plus
+ *  merging O(sum over clusters of tracks^2).  Association per cluster of
+ *  t tracks and m measurements: MMR (lm-ihpda) O(t^2 * gated), IPDA modes
+ *  O(pairs), Cheap / Suboptimal JPDA O(pairs * neighbouring tracks),
+ *  ihpda-2d O(t^3) up to MTT_MAX_ASSIGN_TRACKS, the exact JPDA family and
+ *  JIPDA O(events) up to MTT_MAX_JPDA_EVENTS (then the counted fallback).
+ *  Every loop is bounded by config.h; nothing allocates or recurses.
  *  @return MTT_OK; MTT_ERR_NULL (trk NULL, or meas NULL with n > 0);
  *          MTT_ERR_NOT_INIT; MTT_ERR_TIME if time is not finite or not greater
  *          than the previous frame's time.  On error nothing changes. */
