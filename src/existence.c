@@ -2,13 +2,17 @@
  *
  * spec 11: Markov chain one prediction P_k|k-1 = p11 P + p21 (1 - P).
  * spec 6 / 7.4: update in the L form P = L P / (1 - P + L P), which stays
- * accurate when delta = 1 - L is large and negative (spec 16). */
+ * accurate when delta = 1 - L is large and negative (spec 16).  Results are
+ * clamped to [0, 1] (spec 16), with anything below 1e-30 taken as 0. */
 #include "mtt_internal.h"
 
 static mtt_real clamp01(mtt_real p)
 {
-    if (!(p > MTT_R(0.0))) {
-        return MTT_R(0.0); /* also maps NaN to 0 */
+    /* Below 1e-30 an existence is 0 for every purpose; flushing it keeps
+     * denormals (slow, or flushed by the FPU) out of the association
+     * weights.  Also maps NaN to 0. */
+    if (!(p > MTT_R(1e-30))) {
+        return MTT_R(0.0);
     }
     return (p < MTT_R(1.0)) ? p : MTT_R(1.0);
 }

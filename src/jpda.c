@@ -292,15 +292,21 @@ int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
                 /* spec 13.2: P_t = D_t + q_t U_t; beta over P_t. */
                 const mtt_real pb = tf->ex_pred;
                 const mtt_real q = (MTT_R(1.0) - pdpg) * pb / (MTT_R(1.0) - pdpg * pb);
-                mtt_real det = MTT_R(0.0), pt;
+                mtt_real det = MTT_R(0.0), den, pt;
                 for (j = 0; j < s->m; ++j) {
                     det += s->S[r][j];
                 }
-                pt = (det + q * s->S0[r]) / s->W;
+                /* P_t W = D_t + q_t U_t: divide by it directly.  With a
+                 * vanishing existence it underflows, and 1 / (P_t W) would
+                 * be infinite: the track then keeps its prediction. */
+                den = det + q * s->S0[r];
+                pt = den / s->W;
                 tf->ex_post = (pt < MTT_R(1.0)) ? pt : MTT_R(1.0);
-                if (pt > MTT_R(0.0)) {
-                    norm = MTT_R(1.0) / (pt * s->W);
+                norm = (den > MTT_R(0.0)) ? MTT_R(1.0) / den : MTT_R(0.0);
+                if (mtt_isfinite(norm) && norm > MTT_R(0.0)) {
                     b0 = q * s->S0[r] * norm;
+                } else {
+                    norm = MTT_R(0.0);
                 }
             } else {
                 norm = MTT_R(1.0) / s->W;

@@ -171,6 +171,49 @@ void test_long_gap_update_keeps_covariance_positive(void)
     }
 }
 
+/* A track that is never deleted (terminate_threshold 0) and goes unseen
+ * has its existence decay towards 0.  In jipda a denormal existence
+ * (2.5e-39, coalesce3 seed run) made 1 / (P_t W) infinite and the state
+ * NaN.  Existence below 1e-30 is now 0, and jipda divides by D_t + q_t U_t
+ * directly, keeping the prediction when that vanishes.  Every mode: after
+ * 200 empty frames the existence is exactly 0 and a detection on the track
+ * leaves everything finite. */
+void test_vanishing_existence_stays_finite(void)
+{
+    int mode;
+    for (mode = 0; mode < (int)MTT_ASSOC_COUNT; ++mode) {
+        mtt_params p;
+        const mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.5)};
+        mtt_real P[16];
+        mtt_meas m[2];
+        mtt_track_view v;
+        uint32_t id;
+        int i, k;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+        p.association = (mtt_assoc)mode;
+        p.terminate_threshold = MTT_R(0.0);
+        p.initiate = 0;
+        p.clutter_density = MTT_R(1e-4);
+        if (mtt_params_check(&p, NULL) != MTT_OK) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        for (i = 0; i < 16; ++i) {
+            P[i] = (i % 5 == 0) ? MTT_R(1.0) : MTT_R(0.0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+        for (k = 0; k < 200; ++k) {
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, NULL, 0));
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+        TEST_ASSERT_TRUE(v.existence == MTT_R(0.0));
+        m[0] = mk(v.x[0] + MTT_R(1.0), v.x[1] + MTT_R(2.0));
+        m[1] = mk(v.x[0] - MTT_R(2.0), v.x[1]);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(200.0), m, 2));
+        assert_tracks_sane();
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -179,5 +222,6 @@ int main(void)
     RUN_TEST(test_seed_covariance_conditioning);
     RUN_TEST(test_meas_sigma_bounds);
     RUN_TEST(test_long_gap_update_keeps_covariance_positive);
+    RUN_TEST(test_vanishing_existence_stays_finite);
     return UNITY_END();
 }
