@@ -8,8 +8,9 @@
 #                          static analysis; each check one test), then
 #                          tools/ci-robustness.sh (ASan+UBSan, fuzz, soak);
 #                          ends with the line "N passed, M failed"
-#   ./tools/dev.sh demo    deps, build host-float, run the Monte Carlo demo of
-#                          scenarios/crossing3.json into out/demo
+#   ./tools/dev.sh demo    deps, build host-float, 50 Monte Carlo runs of
+#                          scenarios/crossing3.json (lm-ihpda beside lm-ipda):
+#                          metric tables on stdout, plots in out/demo
 #   ./tools/dev.sh --help
 #
 # Works from any directory.  deps needs root for apt (as on CI); elsewhere it
@@ -27,7 +28,7 @@ say() { printf 'dev.sh: %s\n' "$*"; }
 die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'
 }
 
 is_root() { [[ "$(id -u)" -eq 0 ]]; }
@@ -192,8 +193,9 @@ cmd_demo() {
   [[ -x build/host-float/tools/mtt-track ]] \
     || die "build/host-float/tools/mtt-track was not built (tools/CMakeLists.txt must build it)"
   mkdir -p out/demo
-  python3 tools/mc.py --scenario scenarios/crossing3.json --runs 20 --jobs 2 \
-    --out out/demo --mtt-track build/host-float/tools/mtt-track
+  # The library's default mode beside seed 004's LM-IPDA, 50 runs (~10 s).
+  python3 tools/mc.py --scenario scenarios/crossing3.json --runs 50 --jobs 2 \
+    --assoc lm-ihpda lm-ipda --out out/demo --mtt-track build/host-float/tools/mtt-track
   say "demo output in $ROOT/out/demo"
 }
 
