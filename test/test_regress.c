@@ -214,6 +214,37 @@ void test_vanishing_existence_stays_finite(void)
     }
 }
 
+/* F6: two detections 1e-6 apart in time with sigma 32 gave a newborn
+ * track a velocity variance of 2e15 (2R/dT^2, spec 12.1); at the next
+ * frame (dT = 1) its float covariance turned singular.  The two-point
+ * velocity variance is now capped at vmax^2 (the velocity gate's own
+ * bound), with the correlations kept. */
+void test_tiny_interval_birth_stays_positive(void)
+{
+    mtt_params p;
+    mtt_meas m[1];
+    size_t n = 0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.meas_sigma[0] = MTT_R(32.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    m[0] = mk(MTT_R(64.0), MTT_R(32.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(3.0), m, 1));
+    m[0] = mk(MTT_R(64.0), MTT_R(32.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(3.0) + MTT_R(1e-6) * MTT_R(4.0), m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)n); /* born */
+    {
+        mtt_track_view v;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+        /* velocity variance capped at vmax^2 = 3600 */
+        TEST_ASSERT_TRUE(v.P[2][2] <= MTT_R(3600.0) * MTT_R(1.0001));
+        TEST_ASSERT_TRUE(v.P[2][2] > MTT_R(0.0));
+    }
+    m[0] = mk(MTT_R(79.5), MTT_R(34.125));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(5.0), m, 1));
+    assert_tracks_sane();
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -223,5 +254,6 @@ int main(void)
     RUN_TEST(test_meas_sigma_bounds);
     RUN_TEST(test_long_gap_update_keeps_covariance_positive);
     RUN_TEST(test_vanishing_existence_stays_finite);
+    RUN_TEST(test_tiny_interval_birth_stays_positive);
     return UNITY_END();
 }
