@@ -114,26 +114,34 @@ def main():
     (out / "bench.md").write_text(text)
     print(text)
 
-    fig, ax = plt.subplots(1, 2, figsize=(12, 4.8))
-    for m in modes:
-        xs = [n for n in dense_n if (m, f"dense-{n}") in byk]
-        ax[0].plot(xs, [ins[(m, f"dense-{n}")][0] for n in xs], marker="o", lw=1.2, label=m,
-                   color="k" if m == m0 else None, zorder=3 if m == m0 else 2)
-        ax[1].plot(xs, [byk[(m, f"dense-{n}")]["median_us"] for n in xs], marker="o", lw=1.2, label=m,
-                   color="k" if m == m0 else None, zorder=3 if m == m0 else 2)
+    fig, ax = plt.subplots(1, 2, figsize=(12, 5))
+    cmap = plt.get_cmap("tab20")
+    markers = "osD^v<>phX*d"
     xs = dense_n
-    ax[0].plot(xs, [ins[(modes[0], f"dense-{n}")][1] for n in xs], ls="--", color="grey", label="floor (Kalman only)")
+    for idx, m in enumerate(modes):
+        ok = [n for n in xs if (m, f"dense-{n}") in byk and (m, f"dense-{n}") in ins]
+        per = [ins[(m, f"dense-{n}")][0] / (byk[(m, f"dense-{n}")]["tracks"] + byk[(m, f"dense-{n}")]["pairs"])
+               for n in ok]
+        style = dict(color="k", lw=2.2, zorder=4) if m == m0 else dict(color=cmap(idx % 20), lw=1.1, zorder=3)
+        ax[0].plot(ok, per, marker=markers[idx % len(markers)], label=m, **style)
+        ax[1].plot(ok, [byk[(m, f"dense-{n}")]["median_us"] for n in ok], marker=markers[idx % len(markers)],
+                   label=m, **style)
+    ax[0].plot(xs, [ins[(modes[0], f"dense-{n}")][1] / (byk[(modes[0], f"dense-{n}")]["tracks"]
+                                                       + byk[(modes[0], f"dense-{n}")]["pairs"]) for n in xs],
+               ls="--", color="grey", label="floor (Kalman only)")
     ax[1].plot(xs, [byk[(modes[0], f"dense-{n}")]["floor_median_us"] for n in xs], ls="--", color="grey",
                label="floor (Kalman only)")
-    for a, title, yl in ((ax[0], "instructions per frame (callgrind)", "instructions"),
-                         (ax[1], "median wall time per frame", "us")):
-        a.set_xscale("log", base=2)
-        a.set_yscale("log")
-        a.set_xlabel("targets N (2 clutter points per target per frame)")
-        a.set_ylabel(yl)
-        a.set_title(title)
-        a.grid(True, which="both", alpha=0.3)
-    ax[0].legend(fontsize=7, ncol=2)
+    ax[0].set_title("instructions per (track + gated pair), callgrind")
+    ax[0].set_ylabel("instructions")
+    ax[0].set_ylim(bottom=0)
+    ax[1].set_title("median wall time per frame")
+    ax[1].set_ylabel("us")
+    ax[1].set_yscale("log")
+    for a_ in ax:
+        a_.set_xscale("log", base=2)
+        a_.set_xlabel("targets N (2 clutter points per target per frame)")
+        a_.grid(True, which="both", alpha=0.3)
+    ax[0].legend(fontsize=7, ncol=3, loc="lower right")
     fig.suptitle("mtt: per-frame cost against load, every association mode (tools/bench.sh)")
     fig.tight_layout()
     fig.savefig(out / "cost_vs_n.png", dpi=90)
