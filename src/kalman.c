@@ -179,50 +179,64 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
     }
 }
 
-int mtt_chol4(mtt_real A[4][4], mtt_real L[4][4], mtt_real *min_pivot)
+/* A = L D L' (unit lower L) without square roots: cheap on soft float.
+ * Returns 0, or -1 when a pivot d_i is not positive and finite. */
+static int ldl4(mtt_real A[4][4], mtt_real L[4][4], mtt_real d[4])
 {
-    mtt_real pmin = MTT_REAL_MAX;
     int i, j, k;
     for (i = 0; i < 4; ++i) {
-        for (j = 0; j <= i; ++j) {
+        mtt_real di = A[i][i];
+        for (j = 0; j < i; ++j) {
             mtt_real s = A[i][j];
             for (k = 0; k < j; ++k) {
-                s -= L[i][k] * L[j][k];
+                s -= L[i][k] * L[j][k] * d[k];
             }
-            if (i == j) {
-                if (!(s > MTT_R(0.0)) || !mtt_isfinite(s)) {
-                    return -1;
-                }
-                pmin = (s < pmin) ? s : pmin;
-                L[i][i] = mtt_sqrt(s);
-            } else {
-                L[i][j] = s / L[j][j];
-                L[j][i] = MTT_R(0.0);
-            }
+            L[i][j] = s / d[j];
+            di -= L[i][j] * s;
         }
-    }
-    if (min_pivot != NULL) {
-        *min_pivot = pmin;
+        if (!(di > MTT_R(0.0)) || !mtt_isfinite(di)) {
+            return -1;
+        }
+        d[i] = di;
     }
     return 0;
 }
 
+int mtt_cov_ok(mtt_real P[4][4], mtt_real rel)
+{
+    mtt_real L[4][4], d[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    int i;
+    /* d_i / P_ii is the share of state i's variance not explained by the
+     * states before it: scale-free (the squared Cholesky pivots of the
+     * correlation matrix). */
+    if (ldl4(P, L, d) != 0) {
+        return 0;
+    }
+    for (i = 0; i < 4; ++i) {
+        if (!(d[i] > rel * P[i][i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
 {
-    mtt_real L[4][4], y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis: each y[k] is written before it is read */
+    mtt_real L[4][4], d[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_real y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis */
     mtt_real acc = MTT_R(0.0);
     int i, k;
-    if (mtt_chol4(A, L, NULL) != 0) {
+    if (ldl4(A, L, d) != 0) {
         return -1;
     }
-    /* b' A^-1 b = |L^-1 b|^2: one forward substitution. */
+    /* b' A^-1 b = sum y_i^2 / d_i with L y = b: one forward substitution. */
     for (i = 0; i < 4; ++i) {
         mtt_real s = b[i];
         for (k = 0; k < i; ++k) {
             s -= L[i][k] * y[k];
         }
-        y[i] = s / L[i][i];
-        acc += y[i] * y[i];
+        y[i] = s;
+        acc += s * s / d[i];
     }
     *d2 = acc;
     return 0;

@@ -40,11 +40,15 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2],
                     const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
 void mtt_sym4(mtt_real P[4][4]);
-/* Cholesky A = L L' of a symmetric 4x4; returns 0, or -1 when a pivot is
- * not positive and finite.  min_pivot (may be NULL) gets the smallest pivot
- * (the squared diagonal of L). */
-int mtt_chol4(mtt_real A[4][4], mtt_real L[4][4], mtt_real *min_pivot);
-/* Solve (A) y = b for a symmetric positive definite 4x4 A by Cholesky;
+/* 1 when the symmetric P is positive definite with margin: every L D L'
+ * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
+int mtt_cov_ok(mtt_real P[4][4], mtt_real rel);
+/* Margins: a seeded covariance must leave room for a predict and update;
+ * a track whose covariance falls below the per-frame one is numerically
+ * invalid and deleted (spec 3, extended to P). */
+#define MTT_SEED_COV_MARGIN (MTT_R(1000.0) * MTT_REAL_EPS)
+#define MTT_FRAME_COV_MARGIN (MTT_R(16.0) * MTT_REAL_EPS)
+/* Solve (A) y = b for a symmetric positive definite 4x4 A by L D L';
  * returns d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
 int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2);
 

@@ -1,5 +1,6 @@
 /* params.c - parameter defaults (FORMATS.md, seed 000's IR set-up),
  * validation that names the first bad field, and the names of the modes. */
+#include <stddef.h>
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -50,24 +51,95 @@ mtt_status mtt_params_default(mtt_params *p)
     return MTT_OK;
 }
 
-/* lo <(=) v <(=) hi with finite v; open ends when the flags say so. */
-static int in_range(mtt_real v, mtt_real lo, int lo_open, mtt_real hi, int hi_open)
+/* Range rules of mtt_params_check, in the order the first bad field is
+ * reported.  A table rather than a chain of calls: smaller code (the
+ * library's .text is a firmware budget) and one place to read the ranges. */
+enum {
+    B_0, B_1, B_1EM9, B_1E9, B_1E6, B_MAX, B_MINUS_MAX, /* bounds, see bound() */
+    OPEN_LO = 1, OPEN_HI = 2, HI_CONFIRM = 4, LO_BLEND = 8, INIT_GATE = 16
+};
+
+typedef struct range_rule {
+    const char *name;
+    uint16_t off;          /* offsetof the mtt_real in mtt_params */
+    uint8_t lo, hi, flags; /* B_* bound indices and the flags above */
+} range_rule;
+
+#define RULE(name, member, lo, hi, flags) {name, (uint16_t)offsetof(mtt_params, member), lo, hi, flags}
+
+static const range_rule rules[] = {
+    RULE("process_psd", process_psd, B_0, B_MAX, OPEN_LO),
+    /* sigma^2 must stay a normal number, with room for R / dT^2 */
+    RULE("meas_sigma", meas_sigma[0], B_1EM9, B_1E9, 0),
+    RULE("meas_sigma", meas_sigma[1], B_1EM9, B_1E9, 0),
+    RULE("pd", pd, B_0, B_1, OPEN_LO),
+    RULE("pg", pg, B_0, B_1, OPEN_LO | OPEN_HI),
+    RULE("clutter_density", clutter_density, B_0, B_MAX, 0),
+    RULE("snr_rho", snr_rho, B_0, B_1E6, 0),
+    RULE("markov_p11", markov_p11, B_0, B_1, 0),
+    RULE("markov_p21", markov_p21, B_0, B_1, 0),
+    RULE("existence_init", existence_init, B_0, B_1, OPEN_LO | OPEN_HI),
+    RULE("confirm_threshold", confirm_threshold, B_0, B_1, OPEN_LO),
+    RULE("terminate_threshold", terminate_threshold, B_0, B_1, OPEN_HI | HI_CONFIRM),
+    RULE("merge_threshold", merge_threshold, B_0, B_MAX, 0),
+    RULE("vmax", vmax, B_0, B_MAX, OPEN_LO),
+    RULE("init_gate", vmax, B_0, B_MAX, INIT_GATE),
+    RULE("jpda_bias", jpda_bias, B_0, B_MAX, 0),
+    RULE("jpda_star_threshold", jpda_star_threshold, B_0, B_1, OPEN_HI),
+    RULE("nnjpda_threshold", nnjpda_threshold, B_0, B_1, OPEN_HI),
+    RULE("adaptive_jpda_distance", adaptive_jpda_distance, B_0, B_MAX, OPEN_LO),
+    RULE("adaptive_jpda_shrink", adaptive_jpda_shrink, B_1, B_MAX, 0),
+    RULE("intensity_gate.blend", intensity_blend[0], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.blend", intensity_blend[1], B_MINUS_MAX, B_MAX, OPEN_LO | LO_BLEND),
+    RULE("intensity_gate.f1", intensity_f1[0], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.f2", intensity_f2[0], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.f1", intensity_f1[1], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.f2", intensity_f2[1], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.f1", intensity_f1[2], B_MINUS_MAX, B_MAX, 0),
+    RULE("intensity_gate.f2", intensity_f2[2], B_MINUS_MAX, B_MAX, 0),
+};
+
+static mtt_real bound(uint8_t b)
 {
+    switch (b) {
+    case B_0: return MTT_R(0.0);
+    case B_1: return MTT_R(1.0);
+    case B_1EM9: return MTT_R(1e-9);
+    case B_1E9: return MTT_R(1e9);
+    case B_1E6: return MTT_R(1e6);
+    case B_MINUS_MAX: return -MTT_REAL_MAX;
+    default: return MTT_REAL_MAX;
+    }
+}
+
+/* lo <(=) v <(=) hi with finite v; open ends as the flags say. */
+static int rule_ok(const mtt_params *p, const range_rule *r)
+{
+    const mtt_real v = *(const mtt_real *)(const void *)((const char *)p + r->off);
+    mtt_real lo = bound(r->lo), hi = bound(r->hi);
+    if (r->flags & INIT_GATE) {
+        return p->init_gate == MTT_INIT_GATE_VMAX || p->init_gate == MTT_INIT_GATE_INTENSITY;
+    }
+    if (r->flags & HI_CONFIRM) {
+        hi = p->confirm_threshold;
+    }
+    if (r->flags & LO_BLEND) {
+        lo = p->intensity_blend[0];
+    }
     if (!mtt_isfinite(v)) {
         return 0;
     }
-    if (lo_open ? !(v > lo) : !(v >= lo)) {
+    if ((r->flags & OPEN_LO) ? !(v > lo) : !(v >= lo)) {
         return 0;
     }
-    return hi_open ? (v < hi) : (v <= hi);
+    return (r->flags & OPEN_HI) ? (v < hi) : (v <= hi);
 }
 
 mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
 {
-    const mtt_real big = MTT_REAL_MAX;
     const char *bad = NULL;
     mtt_status st = MTT_ERR_PARAM;
-    int k;
+    size_t k;
     if (bad_field != NULL) {
         *bad_field = NULL;
     }
@@ -79,55 +151,10 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     } else if (!MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
         bad = "association"; /* built with MTT_WITH_BASELINES 0 */
         st = MTT_ERR_UNSUPPORTED;
-    } else if (!in_range(p->process_psd, MTT_R(0.0), 1, big, 0)) {
-        bad = "process_psd";
-    } else if (!in_range(p->meas_sigma[0], MTT_R(1e-9), 0, MTT_R(1e9), 0) ||
-               !in_range(p->meas_sigma[1], MTT_R(1e-9), 0, MTT_R(1e9), 0)) {
-        /* sigma^2 must stay a normal number, with room for R / dT^2 */
-        bad = "meas_sigma";
-    } else if (!in_range(p->pd, MTT_R(0.0), 1, MTT_R(1.0), 0)) {
-        bad = "pd";
-    } else if (!in_range(p->pg, MTT_R(0.0), 1, MTT_R(1.0), 1)) {
-        bad = "pg";
-    } else if (!in_range(p->clutter_density, MTT_R(0.0), 0, big, 0)) {
-        bad = "clutter_density";
-    } else if (!in_range(p->snr_rho, MTT_R(0.0), 0, MTT_R(1e6), 0)) {
-        bad = "snr_rho";
-    } else if (!in_range(p->markov_p11, MTT_R(0.0), 0, MTT_R(1.0), 0)) {
-        bad = "markov_p11";
-    } else if (!in_range(p->markov_p21, MTT_R(0.0), 0, MTT_R(1.0), 0)) {
-        bad = "markov_p21";
-    } else if (!in_range(p->existence_init, MTT_R(0.0), 1, MTT_R(1.0), 1)) {
-        bad = "existence_init";
-    } else if (!in_range(p->confirm_threshold, MTT_R(0.0), 1, MTT_R(1.0), 0)) {
-        bad = "confirm_threshold";
-    } else if (!in_range(p->terminate_threshold, MTT_R(0.0), 0, p->confirm_threshold, 1)) {
-        bad = "terminate_threshold";
-    } else if (!in_range(p->merge_threshold, MTT_R(0.0), 0, big, 0)) {
-        bad = "merge_threshold";
-    } else if (!in_range(p->vmax, MTT_R(0.0), 1, big, 0)) {
-        bad = "vmax";
-    } else if (p->init_gate != MTT_INIT_GATE_VMAX && p->init_gate != MTT_INIT_GATE_INTENSITY) {
-        bad = "init_gate";
-    } else if (!in_range(p->jpda_bias, MTT_R(0.0), 0, big, 0)) {
-        bad = "jpda_bias";
-    } else if (!in_range(p->jpda_star_threshold, MTT_R(0.0), 0, MTT_R(1.0), 1)) {
-        bad = "jpda_star_threshold";
-    } else if (!in_range(p->nnjpda_threshold, MTT_R(0.0), 0, MTT_R(1.0), 1)) {
-        bad = "nnjpda_threshold";
-    } else if (!in_range(p->adaptive_jpda_distance, MTT_R(0.0), 1, big, 0)) {
-        bad = "adaptive_jpda_distance";
-    } else if (!in_range(p->adaptive_jpda_shrink, MTT_R(1.0), 0, big, 0)) {
-        bad = "adaptive_jpda_shrink";
-    } else if (!in_range(p->intensity_blend[0], -big, 0, big, 0) ||
-               !in_range(p->intensity_blend[1], p->intensity_blend[0], 1, big, 0)) {
-        bad = "intensity_gate.blend";
     } else {
-        for (k = 0; k < 3 && bad == NULL; ++k) {
-            if (!mtt_isfinite(p->intensity_f1[k])) {
-                bad = "intensity_gate.f1";
-            } else if (!mtt_isfinite(p->intensity_f2[k])) {
-                bad = "intensity_gate.f2";
+        for (k = 0; k < sizeof rules / sizeof rules[0] && bad == NULL; ++k) {
+            if (!rule_ok(p, &rules[k])) {
+                bad = rules[k].name;
             }
         }
     }

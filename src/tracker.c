@@ -302,7 +302,7 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
 mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mtt_real P16[16],
                                  uint32_t *id)
 {
-    mtt_real P[4][4], C[4][4], L[4][4], sd[4], piv;
+    mtt_real P[4][4];
     int i, j, idx;
     if (trk == NULL || x == NULL || P16 == NULL) {
         return MTT_ERR_NULL;
@@ -325,22 +325,10 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
             }
         }
     }
-    /* Positive definite, and not nearly singular for mtt_real: the
-     * correlation matrix (scale-free, so units and state scales do not
-     * matter) must keep every Cholesky pivot above 1000 eps; a seed past
-     * that cannot survive a predict and update in float. */
-    for (i = 0; i < 4; ++i) {
-        if (!(P[i][i] > MTT_R(0.0))) {
-            return MTT_ERR_VALUE;
-        }
-        sd[i] = mtt_sqrt(P[i][i]);
-    }
-    for (i = 0; i < 4; ++i) {
-        for (j = 0; j < 4; ++j) {
-            C[i][j] = P[i][j] / sd[i] / sd[j];
-        }
-    }
-    if (mtt_chol4(C, L, &piv) != 0 || !(piv > MTT_R(1000.0) * MTT_REAL_EPS)) {
+    /* Positive definite, and not nearly singular for mtt_real: every
+     * scale-free pivot above 1000 eps (correlations up to about 0.99994 in
+     * float); a seed past that cannot survive a predict and update. */
+    if (!mtt_cov_ok(P, MTT_SEED_COV_MARGIN)) {
         return MTT_ERR_VALUE;
     }
     idx = mtt_track_append(trk, x, P, MTT_R(1.0), 1, 0);

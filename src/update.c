@@ -188,6 +188,13 @@ void mtt_update_frame(mtt_tracker *trk)
         } else {
             update_pda(trk, i);
         }
+        /* spec 3 deletes a track whose S is not positive definite; the same
+         * for its covariance, which float arithmetic can lose for extreme
+         * priors (a velocity variance 1e30 beside a position variance of 4:
+         * fuzz finding F7).  The manager counts it in numeric_deletions. */
+        if (!mtt_cov_ok(trk->tracks[i].P, MTT_FRAME_COV_MARGIN)) {
+            tf->valid = 0;
+        }
     }
     if (!is_ihpda_mode(mode) && mode != MTT_ASSOC_NNJPDA) {
         /* PDA modes: a measurement inside any gate is used; NNJPDA and the
