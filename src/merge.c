@@ -71,6 +71,11 @@ void mtt_merge_frame(mtt_tracker *trk)
             for (q2 = (uint16_t)(q1 + 1u); q2 < trk->cl_first[c + 1u]; ++q2) {
                 uint16_t a = trk->cl_list[q1], b = trk->cl_list[q2];
                 mtt_real d2;
+                /* A track the update found numerically invalid is deleted
+                 * as such, not merged (it would be counted twice). */
+                if (!trk->tf[a].valid || !trk->tf[b].valid) {
+                    continue;
+                }
                 if (mtt_merge_d2(&trk->tracks[a], &trk->tracks[b], &d2) == 0 && d2 < thr) {
                     add_cand(trk, d2, a, b);
                 }
