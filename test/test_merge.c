@@ -81,6 +81,22 @@ static void two_track_cluster(void)
     trk.cl_first[1] = 2;
     trk.cl_list[0] = 0;
     trk.cl_list[1] = 1;
+    trk.tf[0].valid = 1; /* as after an update that kept both tracks */
+    trk.tf[1].valid = 1;
+}
+
+/* F8: a track the update found numerically invalid is deleted as such by
+ * the manager, never merged (it would be counted twice). */
+static void test_invalid_track_not_merged(void)
+{
+    two_track_cluster();
+    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
+    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    trk.tf[1].valid = 0;
+    mtt_merge_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
+    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
 }
 
 static void test_tv11_case1_survivor_a(void)
@@ -157,6 +173,7 @@ static void test_merge_order_by_d2(void)
     trk.n_tracks = 3;
     trk.cl_first[1] = 3;
     trk.cl_list[2] = 2;
+    trk.tf[2].valid = 1;
     set_a(&trk.tracks[0], MTT_R(0.5), 0, 0);
     set_b(&trk.tracks[1], xb1, MTT_R(0.6), 0, 1); /* d2 = 0.2366666667 to track 0 */
     set_b(&trk.tracks[2], xa, MTT_R(0.95), 1, 2); /* d2 = 0 to track 0 */
@@ -198,6 +215,7 @@ int main(void)
     RUN_TEST(test_tv11_d2);
     RUN_TEST(test_merge_d2_not_pd);
     RUN_TEST(test_tv11_case1_survivor_a);
+    RUN_TEST(test_invalid_track_not_merged);
     RUN_TEST(test_tv11_case1_survivor_a_at_higher_index);
     RUN_TEST(test_tv11_case2_no_merge);
     RUN_TEST(test_survivor_ties);
