@@ -383,12 +383,7 @@ int main(void)
 /* Built without the baselines: they must be refused, not half-run. */
 static void test_baselines_refused(void)
 {
-    mtt_params p;
-    const char *field = NULL;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.association = MTT_ASSOC_JPDA;
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &field));
-    TEST_ASSERT_EQUAL_STRING("association", field);
+    tv_assert_mode_refused(MTT_ASSOC_JPDA);
 }
 
 int main(void)

@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "mtt/mtt.h"
 #include "mtt/real.h"
 #include "unity.h"
 
@@ -89,5 +90,17 @@ static inline void tv_assert_real(double expected, double actual, const char *wh
             }                                                                  \
         }                                                                      \
     } while (0)
+
+/* Built without the baselines (MTT_WITH_BASELINES 0): mode m must be
+ * refused by mtt_params_check, with the field named, not half-run. */
+static inline void tv_assert_mode_refused(mtt_assoc m)
+{
+    mtt_params p;
+    const char *field = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = m;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &field));
+    TEST_ASSERT_EQUAL_STRING("association", field);
+}
 
 #endif /* TV_ASSERT_H */
