@@ -86,6 +86,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         mtt_track_frame *tf = &trk->tf[i];
         mtt_real zx = tf->xp[0], zy = tf->xp[1], wx, wy, gamma = trk->gamma;
         uint16_t nc = 0, a, b;
+        mtt_real peak;
         if (!tf->valid) {
             continue;
         }
@@ -138,12 +139,15 @@ void mtt_gate_frame(mtt_tracker *trk)
             cm[b] = mj;
             cd[b] = md;
         }
+        /* N(0; 0, S) / PG once per track: the pairs differ only in exp(-d2/2),
+         * so the square root and divisions are not repeated per pair. */
+        peak = mtt_gate_likelihood(MTT_R(0.0), tf->det_s, trk->par.pg);
         for (a = 0; a < nc; ++a) {
             mtt_pair np;
             np.track = i;
             np.meas = cm[a];
             np.d2 = cd[a];
-            np.p = mtt_gate_likelihood(cd[a], tf->det_s, trk->par.pg);
+            np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);
             np.beta = MTT_R(0.0);
