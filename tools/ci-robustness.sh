@@ -40,32 +40,11 @@ bad() { failed=$((failed + 1)); say "FAIL $*"; }
 # (docs/ROBUSTNESS.md); none are open.
 export MTT_FUZZ_SKIP_MODES="${MTT_FUZZ_SKIP_MODES-}"
 
-SAN_FLAGS='-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g'
-export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
-export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+# shellcheck source=tools/clang-fuzz.sh
+source "$ROOT/tools/clang-fuzz.sh"
 
 # ---------------------------------------------------------------- deps
-CLANG=""
-find_clang() {
-  local c
-  for c in clang-14 clang; do
-    if command -v "$c" >/dev/null 2>&1 && echo 'int LLVMFuzzerTestOneInput(const char *d, unsigned long n){(void)d;(void)n;return 0;}' \
-         | "$c" -x c -fsanitize=fuzzer,address,undefined -o /dev/null - >/dev/null 2>&1; then
-      CLANG="$c"
-      return 0
-    fi
-  done
-  return 1
-}
-if ! find_clang; then
-  if [[ "$(id -u)" -eq 0 ]] && command -v apt-get >/dev/null 2>&1; then
-    say "installing clang-14 libclang-rt-14-dev"
-    apt-get update -qq >/dev/null 2>&1 || true
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-      clang-14 libclang-rt-14-dev >/dev/null 2>&1 || true
-  fi
-  find_clang || say "no clang with -fsanitize=fuzzer: the fuzz smoke runs will fail"
-fi
+ensure_clang || say "no clang with -fsanitize=fuzzer: the fuzz smoke runs will fail"
 
 # ---------------------------------------------------------------- 1. unit tests under ASan+UBSan
 ASAN_DIR="$ROOT/build/robust-asan"
