@@ -71,11 +71,16 @@ echo "fuzz-long: fuzz_$H for ${SECONDS_RUN}s, $WORKERS worker(s), corpus $CORPUS
   -timeout=20 -rss_limit_mb=2048 -artifact_prefix="$OUT/long-$H-" "$CORPUS" >"$LOG" 2>&1 &
 pid=$!
 trap 'kill "$pid" 2>/dev/null' INT TERM
-# Progress: the newest fork-mode status line, once a minute.
+# Progress: the newest fork-mode status line, once a minute (polling every
+# 5 s, so that the end of the run is seen at once).
+t=0
 while kill -0 "$pid" 2>/dev/null; do
-  sleep 60 & wait $! 2>/dev/null
-  line="$(grep -E '^#[0-9]+: ' "$LOG" | tail -n 1)"
-  [[ -n "$line" ]] && echo "fuzz-long: $line" >&2
+  sleep 5 & wait $! 2>/dev/null
+  t=$((t + 5))
+  if ((t % 60 == 0)); then
+    line="$(grep -E '^#[0-9]+: ' "$LOG" | tail -n 1)"
+    [[ -n "$line" ]] && echo "fuzz-long: $line" >&2
+  fi
 done
 wait "$pid"
 rc=$?
