@@ -89,16 +89,8 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
 }
 
-void mtt_kalman_joseph(mtt_real Pp[4][4], mtt_real K[4][2], const mtt_real R[3], mtt_real Pc[4][4])
-{
-    mtt_real x[4];
-    const mtt_real xp[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-    /* The PDA update with no measurement and beta0 = 0 is exactly P_c. */
-    mtt_kalman_pda(xp, Pp, K, R, 0, NULL, NULL, MTT_R(0.0), x, Pc);
-}
-
 void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
-                    const mtt_real R[3], uint16_t m, mtt_real nu[][2],
+                    const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
                     const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4])
 {
     mtt_real AP[4][4], A[4][2];
@@ -144,20 +136,14 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
      * exactly (S = Pp_pos + R); computing it that way avoids the
      * cancellation of 1 - K when the prior is far wider than R (K -> 1,
      * e.g. after a long gap), where the textbook form loses every digit in
-     * float. */
-    {
-        const mtt_real s11 = Pp[0][0] + R[0], s12 = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
-        const mtt_real s22 = Pp[1][1] + R[2];
-        const mtt_real det = s11 * s22 - s12 * s12;
-        const mtt_real i11 = s22 / det, i12 = -s12 / det, i22 = s11 / det;
-        A[0][0] = R[0] * i11 + R[1] * i12;
-        A[0][1] = R[0] * i12 + R[1] * i22;
-        A[1][0] = R[1] * i11 + R[2] * i12;
-        A[1][1] = R[1] * i12 + R[2] * i22;
-        for (i = 2; i < 4; ++i) {
-            A[i][0] = -K[i][0];
-            A[i][1] = -K[i][1];
-        }
+     * float.  S^-1 is the one mtt_kalman_innov made K from. */
+    A[0][0] = R[0] * Si[0] + R[1] * Si[1];
+    A[0][1] = R[0] * Si[1] + R[1] * Si[2];
+    A[1][0] = R[1] * Si[0] + R[2] * Si[1];
+    A[1][1] = R[1] * Si[1] + R[2] * Si[2];
+    for (i = 2; i < 4; ++i) {
+        A[i][0] = -K[i][0];
+        A[i][1] = -K[i][1];
     }
     /* A Pp: A differs from I only in columns 0 and 1. */
     for (i = 0; i < 4; ++i) {

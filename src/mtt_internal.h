@@ -31,13 +31,12 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real 
 int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
                      mtt_real Si[3], mtt_real *det, mtt_real K[4][2]);
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
-/* Joseph form P_c = (I-KH) Pp (I-KH)' + K R K', symmetrised. */
-void mtt_kalman_joseph(mtt_real Pp[4][4], mtt_real K[4][2], const mtt_real R[3],
-                       mtt_real Pc[4][4]);
-/* PDA update with m measurements (spec 6); with m = 1 and beta0 = 1 - beta
- * this is the IHPDA single-measurement update of spec 7.4. */
+/* PDA update with m measurements (spec 6), K and Si = S^-1 from
+ * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
+ * single-measurement update of spec 7.4, and with m = 0, beta0 = 0 it is
+ * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (spec 3). */
 void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
-                    const mtt_real R[3], uint16_t m, mtt_real nu[][2],
+                    const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
                     const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
 void mtt_sym4(mtt_real P[4][4]);
 /* 1 when the symmetric P is positive definite with margin: every L D L'

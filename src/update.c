@@ -67,7 +67,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     nu[0][0] = ms->x - tf->xp[0];
     nu[0][1] = ms->y - tf->xp[1];
     beta[0] = pp->beta;
-    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, 1, nu, beta,
+    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, beta,
                    MTT_R(1.0) - pp->beta, t->x, t->P);
     t->existence = mtt_existence_update(tf->ex_pred, pp->L);
     t->meas = (int32_t)ms->src;
@@ -94,7 +94,7 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
             b = j;
         }
     }
-    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, m, nu, beta, beta0, t->x, t->P);
+    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, beta0, t->x, t->P);
     t->existence = mtt_existence_update(tf->ex_pred, L);
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
@@ -117,7 +117,7 @@ static void update_jpda(mtt_tracker *trk, uint16_t ti)
             b = j;
         }
     }
-    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
+    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
     t->existence = tf->ex_post;
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
@@ -136,7 +136,7 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
         const mtt_real one[1] = {MTT_R(1.0)};
         nu[0][0] = ms->x - tf->xp[0];
         nu[0][1] = ms->y - tf->xp[1];
-        mtt_kalman_pda(tf->xp, tf->Pp, tf->K, trk->R, 1, nu, one, MTT_R(0.0), t->x, t->P);
+        mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, one, MTT_R(0.0), t->x, t->P);
         t->meas = (int32_t)ms->src;
     }
     t->existence = tf->ex_post;

@@ -320,7 +320,7 @@ static void test_tv5_selected_update(void)
     nu[0][0] = tv5_z[s][0] - t.xp[0];
     nu[0][1] = tv5_z[s][1] - t.xp[1];
     b1[0] = beta[s];
-    mtt_kalman_pda(t.xp, t.Pp, t.K, tv5_R, 1, nu, b1, MTT_R(1.0) - beta[s], x, P);
+    mtt_kalman_pda(t.xp, t.Pp, t.K, t.Si, tv5_R, 1, nu, b1, MTT_R(1.0) - beta[s], x, P);
     TV_ASSERT_VEC(tv5_xupd, x, 4);  /* TV5 x_upd */
     TV_ASSERT_MAT4(tv5_Pupd, P);    /* TV5 P_upd */
     TV_ASSERT_SYM4(P);

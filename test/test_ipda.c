@@ -96,7 +96,7 @@ static void test_tv6_state_update(void)
     mtt_real beta[3], beta0, L, x[4], P[4][4];
     tv5_setup(&t);
     mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
-    mtt_kalman_pda(t.xp, t.Pp, t.K, tv5_R, 3, t.nu, beta, beta0, x, P);
+    mtt_kalman_pda(t.xp, t.Pp, t.K, t.Si, tv5_R, 3, t.nu, beta, beta0, x, P);
     TV_ASSERT_VEC(tv6_x, x, 4); /* TV6 x_upd */
     TV_ASSERT_MAT4(tv6_P, P);   /* TV6 P_upd */
     TV_ASSERT_SYM4(P);

@@ -134,12 +134,13 @@ static void test_tv2_innovation(void)
 
 static void test_tv2_joseph_and_standard_form(void)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], Pc[4][4];
+    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], Pc[4][4], x[4];
     double std_form[16];
     int i, j;
     tv2_predict(xp, Pp);
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
-    mtt_kalman_joseph(Pp, K, tv2_R, Pc);
+    /* The PDA update with no measurement and beta0 = 0 is the Joseph form. */
+    mtt_kalman_pda(xp, Pp, K, Si, tv2_R, 0, NULL, NULL, MTT_R(0.0), x, Pc);
     TV_ASSERT_MAT4(tv2_Pupd, Pc); /* TV2 P_upd (Joseph) */
     TV_ASSERT_SYM4(Pc);
     /* TV2 check: the standard form (I - K H) P_pred equals the Joseph result. */
@@ -171,7 +172,7 @@ static void test_tv2_update_through_pda(void)
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
     nu[0][0] = tv2_z[0] - xp[0];
     nu[0][1] = tv2_z[1] - xp[1];
-    mtt_kalman_pda(xp, Pp, K, tv2_R, 1, nu, beta, MTT_R(0.0), x, P);
+    mtt_kalman_pda(xp, Pp, K, Si, tv2_R, 1, nu, beta, MTT_R(0.0), x, P);
     TV_ASSERT_VEC(tv2_xupd, x, 4); /* TV2 x_upd */
     TV_ASSERT_MAT4(tv2_Pupd, P);   /* TV2 P_upd */
     TV_ASSERT_SYM4(P);
@@ -185,7 +186,7 @@ static void test_tv2_pda_no_measurement_keeps_prediction(void)
     const mtt_real beta[1] = {MTT_R(0.0)};
     tv2_predict(xp, Pp);
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
-    mtt_kalman_pda(xp, Pp, K, tv2_R, 0, nu, beta, MTT_R(1.0), x, P);
+    mtt_kalman_pda(xp, Pp, K, Si, tv2_R, 0, nu, beta, MTT_R(1.0), x, P);
     TV_ASSERT_VEC(tv2_xpred, x, 4);
     TV_ASSERT_MAT4(tv2_Ppred, P);
 }

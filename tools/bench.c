@@ -48,6 +48,17 @@ static void check(mtt_status st, const char *what)
     }
 }
 
+/* 1 when mode a is built into this library (its default parameters pass
+ * mtt_params_check); *name receives its FORMATS.md name. */
+static int mode_built(mtt_assoc a, const char **name)
+{
+    mtt_params p;
+    check(mtt_params_default(&p), "mtt_params_default");
+    p.association = a;
+    check(mtt_assoc_name(a, name), "mtt_assoc_name");
+    return mtt_params_check(&p, NULL) == MTT_OK;
+}
+
 static uint64_t now_ns(void)
 {
     struct timespec ts;
@@ -94,7 +105,7 @@ static mtt_real floor_run(const mtt_tracker *t, mtt_real dt)
         }
         nu[0][0] = MTT_R(0.5);
         nu[0][1] = MTT_R(-0.5);
-        mtt_kalman_pda(xp, Pp, K, t->R, 1, nu, beta, MTT_R(0.0), fx[i], fP[i]);
+        mtt_kalman_pda(xp, Pp, K, Si, t->R, 1, nu, beta, MTT_R(0.0), fx[i], fP[i]);
         sink += fx[i][0];
     }
     return sink;
@@ -385,13 +396,9 @@ int main(int argc, char **argv)
             return 0;
         } else if (!strcmp(argv[i], "--list-modes")) {
             int k;
+            const char *name;
             for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
-                mtt_params p;
-                const char *name;
-                check(mtt_params_default(&p), "mtt_params_default");
-                p.association = (mtt_assoc)k;
-                check(mtt_assoc_name((mtt_assoc)k, &name), "mtt_assoc_name");
-                if (mtt_params_check(&p, NULL) == MTT_OK) {
+                if (mode_built((mtt_assoc)k, &name)) {
                     printf("%s\n", name);
                 }
             }
@@ -429,13 +436,9 @@ int main(int argc, char **argv)
     printf("%-12s %-16s %7s %7s %9s %9s %8s %8s %8s   stages\n", "workload", "mode", "tracks", "pairs",
            "med_us", "worst_us", "floor_us", "ratio", "ns/(t+p)");
     for (i = 0; i < (int)MTT_ASSOC_COUNT; ++i) {
-        mtt_params p;
         const char *name;
-        check(mtt_params_default(&p), "mtt_params_default");
-        p.association = (mtt_assoc)i;
-        check(mtt_assoc_name((mtt_assoc)i, &name), "mtt_assoc_name");
-        if (mtt_params_check(&p, NULL) != MTT_OK) {
-            continue; /* not built into this version */
+        if (!mode_built((mtt_assoc)i, &name)) {
+            continue;
         }
         if (modes) {
             const char *hit = strstr(modes, name);
