@@ -118,6 +118,23 @@ cmd_deps() {
   deps_python
 }
 
+# Runs a CI script that prints "<prefix>: N passed, M failed" and adds its
+# counts to cmd_test's passed/failed (each of its checks counts as one
+# test); a non-zero exit that reported no failure counts as one.
+run_counted() {
+  local prefix="$1" script="$2" before=$failed rc=0 line
+  say "=== tools/$(basename "$script")"
+  "$script" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  line="$(grep -E "^$prefix: [0-9]+ passed, [0-9]+ failed\$" "$log" | tail -n1 || true)"
+  if [[ -n "$line" ]]; then
+    passed=$((passed + $(sed -E "s/^$prefix: ([0-9]+) passed.*/\1/" <<<"$line")))
+    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
+  fi
+  if ((rc != 0)) && ((failed == before)); then
+    failed=$((failed + 1))
+  fi
+}
+
 # ---------------------------------------------------------------- test
 cmd_test() {
   cmd_deps
@@ -149,32 +166,9 @@ cmd_test() {
     fi
   done
   # The firmware proof (issue 5): cross builds, qemu, static analysis.
-  # Each of its checks counts as one test; it prints "ci-firmware: N passed, M failed".
-  say "=== tools/ci-firmware.sh"
-  rc=0
-  "$ROOT/tools/ci-firmware.sh" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
-  line="$(grep -E '^ci-firmware: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n1 || true)"
-  if [[ -n "$line" ]]; then
-    passed=$((passed + $(sed -E 's/^ci-firmware: ([0-9]+) passed.*/\1/' <<<"$line")))
-    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
-  fi
-  if ((rc != 0)) && [[ -z "$line" || "$failed" -eq 0 ]]; then
-    failed=$((failed + 1))
-  fi
+  run_counted ci-firmware "$ROOT/tools/ci-firmware.sh"
   # Robustness (issue 6): unit tests under ASan+UBSan, fuzz smoke runs, soak.
-  # Each of its checks counts as one test; it prints "robustness: N passed, M failed".
-  say "=== tools/ci-robustness.sh"
-  local rfail=$failed
-  rc=0
-  "$ROOT/tools/ci-robustness.sh" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
-  line="$(grep -E '^robustness: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n1 || true)"
-  if [[ -n "$line" ]]; then
-    passed=$((passed + $(sed -E 's/^robustness: ([0-9]+) passed.*/\1/' <<<"$line")))
-    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
-  fi
-  if ((rc != 0)) && ((failed == rfail)); then
-    failed=$((failed + 1))
-  fi
+  run_counted robustness "$ROOT/tools/ci-robustness.sh"
   echo "$passed passed, $failed failed"
   ((failed == 0))
 }
