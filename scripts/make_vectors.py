@@ -1082,16 +1082,9 @@ def main():
     p()
     kv("p_tj/lambda_j", pr); kv("P(exist|Z^{k-1})", Pe); kv("PD", PD); kv("PG", PG)
     T_, M_ = pr.shape
-    opts = [[None] + [j for j in range(M_) if pr[t, j] > 0] for t in range(T_)]
-    evJ = []
-    for combo in itertools.product(*opts):
-        used = [j for j in combo if j is not None]
-        if len(used) != len(set(used)):
-            continue
-        w = 1.0
-        for t, j in enumerate(combo):
-            w *= (1 - PD * PG * Pe[t]) if j is None else PD * PG * Pe[t] * pr[t, j]
-        evJ.append((combo, w))
+    # JIPDA weights (§13.2): detected PD*PG*Pbar_t*p_tj/lambda_j, missed 1 - PD*PG*Pbar_t
+    AJ = np.array([[PD * PG * Pe[t] * pr[t, j] for j in range(M_)] for t in range(T_)])
+    evJ = jpda_events(AJ, [1 - PD * PG * Pe[t] for t in range(T_)])
     totJ = sum(w for _, w in evJ)
     for t in range(T_):
         pj = {j: sum(w for c_, w in evJ if c_[t] == j) / totJ for j in range(M_)}
