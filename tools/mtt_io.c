@@ -523,72 +523,11 @@ done:
 /* settings                                                                */
 /* ====================================================================== */
 
-/* How a settings key is read. */
-typedef enum skind {
-    SK_REAL,      /* one number */
-    SK_REALS,     /* an array of len numbers */
-    SK_BOOL,      /* true / false */
-    SK_ASSOC,     /* association name (mtt_assoc_parse) */
-    SK_INIT_GATE, /* "vmax" / "intensity" */
-    SK_INTENSITY, /* the intensity_gate object */
-    SK_TRACKS     /* the initial_tracks list */
-} skind;
-
-/* One settings key: FORMATS.md's name, where it goes in mtt_params, and the
- * range the library enforces (mtt.h), quoted when mtt_params_check fails. */
-typedef struct skey {
-    const char *key;
-    skind kind;
-    size_t off;         /* offsetof(mtt_params, member) */
-    size_t len;         /* SK_REALS: element count */
-    const char *field;  /* the mtt_params member, as mtt_params_check names it */
-    const char *range;  /* allowed values ("[...]": of the whole array); NULL: not stated */
-} skey;
-
-#define PF(m) offsetof(mtt_params, m)
-
-static const skey top_keys[] = {
-    {"association", SK_ASSOC, PF(association), 1, "association", NULL},
-    {"process_psd", SK_REAL, PF(process_psd), 1, "process_psd", "> 0"},
-    {"meas_sigma", SK_REALS, PF(meas_sigma), 2, "meas_sigma", "in [1e-9, 1e9]"},
-    {"pd", SK_REAL, PF(pd), 1, "pd", "in (0, 1]"},
-    {"pg", SK_REAL, PF(pg), 1, "pg", "in (0, 1)"},
-    {"clutter_density", SK_REAL, PF(clutter_density), 1, "clutter_density",
-     ">= 0 (0 estimates it per track)"},
-    {"snr_rho", SK_REAL, PF(snr_rho), 1, "snr_rho", "in [0, 1e6]"},
-    {"markov_p11", SK_REAL, PF(markov_p11), 1, "markov_p11", "in [0, 1]"},
-    {"markov_p21", SK_REAL, PF(markov_p21), 1, "markov_p21", "in [0, 1]"},
-    {"existence_init", SK_REAL, PF(existence_init), 1, "existence_init", "in (0, 1)"},
-    {"confirm_threshold", SK_REAL, PF(confirm_threshold), 1, "confirm_threshold", "in (0, 1]"},
-    {"terminate_threshold", SK_REAL, PF(terminate_threshold), 1, "terminate_threshold",
-     "in [0, confirm_threshold)"},
-    {"merge_threshold", SK_REAL, PF(merge_threshold), 1, "merge_threshold",
-     ">= 0 (0 never merges)"},
-    {"initiate", SK_BOOL, PF(initiate), 1, "initiate", NULL},
-    {"vmax", SK_REAL, PF(vmax), 1, "vmax", "> 0"},
-    {"init_gate", SK_INIT_GATE, PF(init_gate), 1, "init_gate", NULL},
-    {"intensity_gate", SK_INTENSITY, 0, 0, NULL, NULL},
-    {"jpda_bias", SK_REAL, PF(jpda_bias), 1, "jpda_bias", ">= 0 (0 uses lambda(1-PD*PG)/PD)"},
-    {"jpda_star_threshold", SK_REAL, PF(jpda_star_threshold), 1, "jpda_star_threshold",
-     "in [0, 1)"},
-    {"nnjpda_threshold", SK_REAL, PF(nnjpda_threshold), 1, "nnjpda_threshold", "in [0, 1)"},
-    {"adaptive_jpda_distance", SK_REAL, PF(adaptive_jpda_distance), 1, "adaptive_jpda_distance",
-     "> 0"},
-    {"adaptive_jpda_shrink", SK_REAL, PF(adaptive_jpda_shrink), 1, "adaptive_jpda_shrink",
-     ">= 1"},
-    {"initial_tracks", SK_TRACKS, 0, 0, NULL, NULL},
-};
-
-static const skey igate_keys[] = {
-    {"f1", SK_REALS, PF(intensity_f1), 3, "intensity_f1", NULL},
-    {"f2", SK_REALS, PF(intensity_f2), 3, "intensity_f2", NULL},
-    {"blend", SK_REALS, PF(intensity_blend), 2, "intensity_blend",
-     "[I_lo, I_hi] with I_lo < I_hi"},
-};
-#define IGATE_PREFIX "intensity_gate."
-
-#define N_TOP (sizeof top_keys / sizeof top_keys[0])
-#define N_IGATE (sizeof igate_keys / sizeof igate_keys[0])
+/* Every tracker key is a row of the library's table (mtt_params_info): its
+ * type, element count and range come from there, and mtt_params_set does
+ * the range check.  A dotted key ("intensity_gate.f1") is a member of a
+ * JSON object ("intensity_gate").  initial_tracks is mtt-track's own key. */
+#define SEEDS_KEY "initial_tracks"
 
 /* Members of one initial_tracks entry. */
 static const char *const seed_keys[] = {"x", "y", "vx", "vy", "P"};
@@ -600,11 +539,6 @@ typedef struct sctx {
     const char *file;
     mtt_io_settings *s;
 } sctx;
-
-static mtt_real *param_real(mtt_params *p, size_t off)
-{
-    return (mtt_real *)(void *)((char *)p + off);
-}
 
 static const char *json_type(const cJSON *j)
 {
@@ -650,36 +584,70 @@ static size_t edit_distance(const char *a, const char *b)
     return row[lb];
 }
 
-/* The closest of names to name, or NULL if none is close. */
-static const char *suggest(const char *name, const char *const *names, size_t n,
-                           size_t stride)
+/* Keeps the closest candidate: at most 2 edits, and fewer than half the name. */
+typedef struct suggestion {
+    const char *name;
+    size_t best_d;
+    char best[KEY_MAX];
+} suggestion;
+
+static void consider(suggestion *sg, const char *cand, size_t len)
 {
-    const char *best = NULL;
-    size_t i, best_d = 3; /* at most 2 edits, and fewer than half the name */
-    for (i = 0; i < n; ++i) {
-        const char *cand = *(const char *const *)(const void *)((const char *)names + i * stride);
-        size_t d = edit_distance(name, cand);
-        if (d < best_d && 2 * d < strlen(name)) {
-            best_d = d;
-            best = cand;
-        }
+    char buf[KEY_MAX];
+    size_t d;
+    if (len >= sizeof buf)
+        return;
+    memcpy(buf, cand, len);
+    buf[len] = '\0';
+    d = edit_distance(sg->name, buf);
+    if (d < sg->best_d && 2 * d < strlen(sg->name)) {
+        sg->best_d = d;
+        memcpy(sg->best, buf, len + 1);
     }
-    return best;
 }
 
-static int unknown_key(const sctx *c, const char *key, const char *name,
-                       const char *const *names, size_t n, size_t stride)
+/* Is name (under prefix, "" or "intensity_gate.") a key of the table, a
+ * group of keys (an object), or neither?  Also collects a suggestion among
+ * the names at that level. */
+enum { NAME_UNKNOWN, NAME_KEY, NAME_GROUP };
+static int classify(const char *prefix, const char *name, size_t *row, suggestion *sg)
 {
-    const char *s = suggest(name, names, n, stride);
-    if (s != NULL)
-        mtt_io_error_key(c->file, key, "unknown key (did you mean '%s'?)", s);
+    const mtt_param_info *info;
+    size_t i, plen = strlen(prefix), nlen = strlen(name);
+    int kind = NAME_UNKNOWN;
+
+    for (i = 0; mtt_params_info(i, &info) == MTT_OK; ++i) {
+        const char *rest = info->key + plen, *dot;
+        if (strncmp(info->key, prefix, plen) != 0)
+            continue;
+        dot = strchr(rest, '.');
+        if (dot == NULL && strcmp(rest, name) == 0) {
+            *row = i;
+            kind = NAME_KEY;
+        } else if (dot != NULL && (size_t)(dot - rest) == nlen && strncmp(rest, name, nlen) == 0) {
+            kind = NAME_GROUP;
+        }
+        if (sg != NULL)
+            consider(sg, rest, dot != NULL ? (size_t)(dot - rest) : strlen(rest));
+    }
+    if (sg != NULL && plen == 0)
+        consider(sg, SEEDS_KEY, strlen(SEEDS_KEY));
+    return kind;
+}
+
+static int unknown_key(const sctx *c, const char *key, const suggestion *sg)
+{
+    if (sg->best_d <= 2)
+        mtt_io_error_key(c->file, key, "unknown key (did you mean '%s'?)", sg->best);
     else
         mtt_io_error_key(c->file, key, "unknown key");
     return MTT_IO_EINPUT;
 }
 
-static int get_number(const sctx *c, const cJSON *j, const char *key, mtt_real *out)
+/* A finite number that fits mtt_real. */
+static int get_number(const sctx *c, const cJSON *j, const char *key, double *out)
 {
+    mtt_real r;
     if (!cJSON_IsNumber(j)) {
         mtt_io_error_key(c->file, key, "must be a number, found %s", json_type(j));
         return MTT_IO_EINPUT;
@@ -688,16 +656,16 @@ static int get_number(const sctx *c, const cJSON *j, const char *key, mtt_real *
         mtt_io_error_key(c->file, key, "must be a finite number");
         return MTT_IO_EINPUT;
     }
-    if (!mtt_io_to_real(j->valuedouble, out)) {
+    if (!mtt_io_to_real(j->valuedouble, &r)) {
         mtt_io_error_key(c->file, key, "%g does not fit the tracker's real type (mtt_real="
                          REAL_NAME ")", j->valuedouble);
         return MTT_IO_EINPUT;
     }
+    *out = j->valuedouble;
     return MTT_IO_OK;
 }
 
-static int get_numbers(const sctx *c, const cJSON *j, const char *key, size_t n,
-                       mtt_real *out)
+static int get_numbers(const sctx *c, const cJSON *j, const char *key, size_t n, double *out)
 {
     char sub[KEY_MAX + 32];
     const cJSON *e;
@@ -724,45 +692,163 @@ static int get_numbers(const sctx *c, const cJSON *j, const char *key, size_t n,
     return MTT_IO_OK;
 }
 
-static int get_string(const sctx *c, const cJSON *j, const char *key, const char **out)
+/* "lm-ihpda, ihpda, ..." for the modes that pass mtt_params_check
+ * (implemented only) or all of an enum key's names. */
+static void name_list(char *buf, size_t size, const mtt_param_info *info, int implemented_only)
 {
-    if (!cJSON_IsString(j)) {
-        mtt_io_error_key(c->file, key, "must be a string, found %s", json_type(j));
-        return MTT_IO_EINPUT;
+    size_t a, len = 0;
+    buf[0] = '\0';
+    for (a = 0; a < info->n_names; ++a) {
+        if (implemented_only) {
+            mtt_params q;
+            double v = (double)a;
+            if (mtt_params_default(&q) != MTT_OK || mtt_params_set(&q, info->key, &v, 1) != MTT_OK ||
+                mtt_params_check(&q, NULL) != MTT_OK)
+                continue;
+        }
+        if (len + strlen(info->names[a]) + 3 >= size)
+            break;
+        len += (size_t)snprintf(buf + len, size - len, "%s%s", len != 0 ? ", " : "",
+                                info->names[a]);
     }
-    *out = j->valuestring;
+}
+
+/* A bound as a person writes it: "0", "1e-9", "1e6". */
+static void format_bound(double v, char *buf, size_t size)
+{
+    char tmp[32], *e, *d;
+    snprintf(tmp, sizeof tmp, "%g", v);
+    e = strchr(tmp, 'e');
+    if (e != NULL) { /* "1e-09" -> "1e-9", "1e+06" -> "1e6" */
+        d = e + 1;
+        if (*d == '+')
+            memmove(d, d + 1, strlen(d));
+        else if (*d == '-')
+            ++d;
+        while (d[0] == '0' && d[1] != '\0')
+            memmove(d, d + 1, strlen(d));
+    }
+    snprintf(buf, size, "%s", tmp);
+}
+
+/* A default value, with the fewest digits that read back as the same
+ * mtt_real: the same text from the float and the double build. */
+static void format_real(double v, char *buf, size_t size)
+{
+    int prec;
+    for (prec = 1; prec < 17; ++prec) {
+        snprintf(buf, size, "%.*g", prec, v);
+        if ((mtt_real)strtod(buf, NULL) == (mtt_real)v)
+            break;
+    }
+    format_bound(strtod(buf, NULL), buf, size);
+}
+
+/* The range of a REAL key's values: "in (0, 1]", "> 0", "finite". */
+static void range_text(const mtt_param_info *info, char *buf, size_t size)
+{
+    char lo[32], hi[32];
+    int has_lo = info->lo > -(double)MTT_REAL_MAX, has_hi = info->hi < (double)MTT_REAL_MAX;
+    format_bound(info->lo, lo, sizeof lo);
+    format_bound(info->hi, hi, sizeof hi);
+    if (has_lo && has_hi)
+        snprintf(buf, size, "in %c%s, %s%c", info->lo_open ? '(' : '[', lo, hi,
+                 info->hi_open ? ')' : ']');
+    else if (has_lo)
+        snprintf(buf, size, "%s %s", info->lo_open ? ">" : ">=", lo);
+    else if (has_hi)
+        snprintf(buf, size, "%s %s", info->hi_open ? "<" : "<=", hi);
+    else
+        snprintf(buf, size, "finite");
+}
+
+/* "[a, b, c]" (n > 1) or "a", each as format_number writes it. */
+static void values_text(const double *v, size_t n, void (*format_number)(double, char *, size_t),
+                        char *buf, size_t size)
+{
+    char num[32];
+    size_t i, len = 0;
+    buf[0] = '\0';
+    for (i = 0; i < n && len < size; ++i) {
+        format_number(v[i], num, sizeof num);
+        len += (size_t)snprintf(buf + len, size - len, "%s%s", i == 0 ? (n > 1 ? "[" : "") : ", ",
+                                num);
+    }
+    if (n > 1 && len < size)
+        snprintf(buf + len, size - len, "]");
+}
+
+/* mtt_params_set refused v for a REAL key: name the element that is out
+ * of range on its own (with the others as they are), and the range. */
+static int report_range(const sctx *c, const mtt_param_info *info, const char *key,
+                        const double *v)
+{
+    char sub[KEY_MAX + 32], range[96], val[64];
+    double w[3];
+    size_t e;
+
+    range_text(info, range, sizeof range);
+    for (e = 0; e < info->count && info->count > 1; ++e) {
+        mtt_params q = c->s->params;
+        if (mtt_params_get(&q, info->key, w, info->count) != MTT_OK)
+            break;
+        w[e] = v[e];
+        if (mtt_params_set(&q, info->key, w, info->count) != MTT_OK) {
+            snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)e);
+            format_bound(v[e], val, sizeof val);
+            mtt_io_error_key(c->file, sub, "must be %s, found %s", range, val);
+            return MTT_IO_EINPUT;
+        }
+    }
+    values_text(v, info->count, format_bound, val, sizeof val);
+    mtt_io_error_key(c->file, key, "must be %s, found %s", range, val);
+    return MTT_IO_EINPUT;
+}
+
+/* Read the value of table key `info` into the parameters. */
+static int parse_param(const sctx *c, const mtt_param_info *info, const cJSON *j, const char *key)
+{
+    double v[3];
+    size_t a;
+    int rc;
+
+    switch (info->type) {
+    case MTT_PARAM_REAL:
+        rc = info->count == 1 ? get_number(c, j, key, v) : get_numbers(c, j, key, info->count, v);
+        if (rc != MTT_IO_OK)
+            return rc;
+        break;
+    case MTT_PARAM_BOOL:
+        if (!cJSON_IsBool(j)) {
+            mtt_io_error_key(c->file, key, "must be true or false, found %s", json_type(j));
+            return MTT_IO_EINPUT;
+        }
+        v[0] = cJSON_IsTrue(j) ? 1.0 : 0.0;
+        break;
+    default: /* MTT_PARAM_ENUM */
+        if (!cJSON_IsString(j)) {
+            mtt_io_error_key(c->file, key, "must be a string, found %s", json_type(j));
+            return MTT_IO_EINPUT;
+        }
+        for (a = 0; a < info->n_names && strcmp(j->valuestring, info->names[a]) != 0; ++a)
+            ;
+        if (a == info->n_names) {
+            char list[512];
+            name_list(list, sizeof list, info, 0);
+            mtt_io_error_key(c->file, key, "unknown %s '%s' (expected one of: %s)", key,
+                             j->valuestring, list);
+            return MTT_IO_EINPUT;
+        }
+        v[0] = (double)a;
+        break;
+    }
+    if (mtt_params_set(&c->s->params, info->key, v, info->count) != MTT_OK)
+        return report_range(c, info, key, v);
     return MTT_IO_OK;
 }
 
-/* "lm-ihpda, ihpda, ..." for the modes that pass (implemented only) or all. */
-static void assoc_list(char *buf, size_t size, int implemented_only)
-{
-    int a;
-    size_t len = 0;
-    buf[0] = '\0';
-    for (a = 0; a < (int)MTT_ASSOC_COUNT; ++a) {
-        const char *name;
-        mtt_params q;
-        if (mtt_assoc_name((mtt_assoc)a, &name) != MTT_OK)
-            continue;
-        if (implemented_only) {
-            if (mtt_params_default(&q) != MTT_OK)
-                continue;
-            q.association = (mtt_assoc)a;
-            if (mtt_params_check(&q, NULL) != MTT_OK)
-                continue;
-        }
-        if (len + strlen(name) + 3 >= size)
-            break;
-        len += (size_t)snprintf(buf + len, size - len, "%s%s", len != 0 ? ", " : "", name);
-    }
-}
-
-static int parse_object(const sctx *c, const cJSON *obj, const char *prefix, const skey *tab,
-                        size_t n);
-
 /* P of an initial track: 16 numbers row-major, or 4 rows of 4. */
-static int parse_cov(const sctx *c, const cJSON *j, const char *key, mtt_real P[16])
+static int parse_cov(const sctx *c, const cJSON *j, const char *key, double P[16])
 {
     char sub[KEY_MAX + 32];
     const cJSON *row;
@@ -796,8 +882,18 @@ static int parse_cov(const sctx *c, const cJSON *j, const char *key, mtt_real P[
 
 void mtt_io_seed_key(size_t i, const char *member, char *buf, size_t size)
 {
-    snprintf(buf, size, "initial_tracks[%lu]%s%s", (unsigned long)i,
-             member != NULL ? "." : "", member != NULL ? member : "");
+    snprintf(buf, size, SEEDS_KEY "[%lu]%s%s", (unsigned long)i, member != NULL ? "." : "",
+             member != NULL ? member : "");
+}
+
+/* Was a member named like j given before it in the same object? */
+static int given_before(const cJSON *obj, const cJSON *j)
+{
+    const cJSON *q;
+    for (q = obj->child; q != NULL && q != j; q = q->next)
+        if (strcmp(q->string, j->string) == 0)
+            return 1;
+    return 0;
 }
 
 static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
@@ -828,6 +924,7 @@ static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
     {
         mtt_io_seed *seed = &c->s->seeds[i];
         int seen[N_SEED_KEYS] = {0};
+        double v[16];
 
         mtt_io_seed_key(i, NULL, tkey, sizeof tkey);
         if (!cJSON_IsObject(t)) {
@@ -842,16 +939,27 @@ static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
             for (k = 0; k < N_SEED_KEYS; ++k)
                 if (strcmp(m->string, seed_keys[k]) == 0)
                     break;
-            if (k == N_SEED_KEYS)
-                return unknown_key(c, mkey, m->string, seed_keys, N_SEED_KEYS,
-                                   sizeof seed_keys[0]);
+            if (k == N_SEED_KEYS) {
+                suggestion sg = {m->string, (size_t)-1, ""};
+                for (k = 0; k < N_SEED_KEYS; ++k)
+                    consider(&sg, seed_keys[k], strlen(seed_keys[k]));
+                return unknown_key(c, mkey, &sg);
+            }
             if (seen[k]++) {
                 mtt_io_error_key(c->file, mkey, "given twice");
                 return MTT_IO_EINPUT;
             }
-            rc = k < 4 ? get_number(c, m, mkey, &seed->x[k]) : parse_cov(c, m, mkey, seed->P);
-            if (rc != MTT_IO_OK)
-                return rc;
+            if (k < 4) {
+                if ((rc = get_number(c, m, mkey, v)) != MTT_IO_OK)
+                    return rc;
+                seed->x[k] = (mtt_real)v[0];
+            } else {
+                size_t e;
+                if ((rc = parse_cov(c, m, mkey, v)) != MTT_IO_OK)
+                    return rc;
+                for (e = 0; e < 16; ++e)
+                    seed->P[e] = (mtt_real)v[e];
+            }
         }
         for (k = 0; k < 4; ++k) {
             if (!seen[k]) {
@@ -867,195 +975,99 @@ static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
     return MTT_IO_OK;
 }
 
-/* Read one key of a table into the parameters. */
-static int parse_key(const sctx *c, const skey *k, const cJSON *j, const char *key)
-{
-    mtt_params *p = &c->s->params;
-    const char *str;
-    int rc;
-
-    switch (k->kind) {
-    case SK_REAL:
-        return get_number(c, j, key, param_real(p, k->off));
-    case SK_REALS:
-        return get_numbers(c, j, key, k->len, param_real(p, k->off));
-    case SK_BOOL:
-        if (!cJSON_IsBool(j)) {
-            mtt_io_error_key(c->file, key, "must be true or false, found %s", json_type(j));
-            return MTT_IO_EINPUT;
-        }
-        p->initiate = cJSON_IsTrue(j) ? 1 : 0;
-        return MTT_IO_OK;
-    case SK_ASSOC:
-        if ((rc = get_string(c, j, key, &str)) != MTT_IO_OK)
-            return rc;
-        if (mtt_assoc_parse(str, &p->association) != MTT_OK) {
-            char list[512];
-            assoc_list(list, sizeof list, 0);
-            mtt_io_error_key(c->file, key, "unknown association '%s' (expected one of: %s)", str,
-                             list);
-            return MTT_IO_EINPUT;
-        }
-        return MTT_IO_OK;
-    case SK_INIT_GATE:
-        if ((rc = get_string(c, j, key, &str)) != MTT_IO_OK)
-            return rc;
-        if (strcmp(str, "vmax") == 0)
-            p->init_gate = MTT_INIT_GATE_VMAX;
-        else if (strcmp(str, "intensity") == 0)
-            p->init_gate = MTT_INIT_GATE_INTENSITY;
-        else {
-            mtt_io_error_key(c->file, key, "unknown initial gate '%s' (expected 'vmax' or "
-                             "'intensity')", str);
-            return MTT_IO_EINPUT;
-        }
-        return MTT_IO_OK;
-    case SK_INTENSITY:
-        if (!cJSON_IsObject(j)) {
-            mtt_io_error_key(c->file, key,
-                             "must be an object {\"f1\": [a2, a1, a0], \"f2\": [a2, a1, a0], "
-                             "\"blend\": [I_lo, I_hi]}, found %s",
-                             json_type(j));
-            return MTT_IO_EINPUT;
-        }
-        return parse_object(c, j, IGATE_PREFIX, igate_keys, N_IGATE);
-    case SK_TRACKS:
-        return parse_tracks(c, j, key);
-    }
-    return MTT_IO_EINPUT;
-}
-
-/* Read every member of obj; each must be a key of tab, at most once. */
-static int parse_object(const sctx *c, const cJSON *obj, const char *prefix, const skey *tab,
-                        size_t n)
+/* Read every member of obj (the keys under prefix); each must be a key of
+ * the table, a group of keys, or initial_tracks (top level), at most once. */
+static int parse_object(const sctx *c, const cJSON *obj, const char *prefix)
 {
     char key[KEY_MAX];
-    unsigned char seen[N_TOP] = {0};
+    const mtt_param_info *info;
     const cJSON *j;
-    size_t i;
+    size_t row = 0;
     int rc;
 
     cJSON_ArrayForEach(j, obj)
     {
+        suggestion sg = {j->string, (size_t)-1, ""};
+        int kind = classify(prefix, j->string, &row, &sg);
+
+        int seeds = prefix[0] == '\0' && strcmp(j->string, SEEDS_KEY) == 0;
+
         snprintf(key, sizeof key, "%s%s", prefix, j->string);
-        for (i = 0; i < n; ++i)
-            if (strcmp(j->string, tab[i].key) == 0)
-                break;
-        if (i == n)
-            return unknown_key(c, key, j->string, &tab[0].key, n, sizeof tab[0]);
-        if (seen[i]++) {
+        if (kind == NAME_UNKNOWN && !seeds)
+            return unknown_key(c, key, &sg);
+        if (given_before(obj, j)) {
             mtt_io_error_key(c->file, key, "given twice");
             return MTT_IO_EINPUT;
         }
-        if ((rc = parse_key(c, &tab[i], j, key)) != MTT_IO_OK)
+        if (seeds) {
+            rc = parse_tracks(c, j, key);
+        } else if (kind == NAME_KEY) {
+            if (mtt_params_info(row, &info) != MTT_OK)
+                return MTT_IO_ESYS;
+            rc = parse_param(c, info, j, key);
+        } else {
+            char sub[KEY_MAX + 2], list[KEY_MAX * 2];
+            size_t i, len = 0, plen;
+            snprintf(sub, sizeof sub, "%s.", key);
+            plen = strlen(sub);
+            if (!cJSON_IsObject(j)) {
+                list[0] = '\0';
+                for (i = 0; mtt_params_info(i, &info) == MTT_OK && len < sizeof list; ++i)
+                    if (strncmp(info->key, sub, plen) == 0)
+                        len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+                                                len != 0 ? ", " : "", info->key + plen);
+                mtt_io_error_key(c->file, key, "must be an object with the keys %s, found %s",
+                                 list, json_type(j));
+                return MTT_IO_EINPUT;
+            }
+            rc = parse_object(c, j, sub);
+        }
+        if (rc != MTT_IO_OK)
             return rc;
     }
     return MTT_IO_OK;
 }
 
-/* Does a name from mtt_params_check ("meas_sigma", "intensity_f1" or
- * "intensity_gate.f1", maybe with an index) stand for key k (under prefix)? */
-static int names_key(const char *bad, const skey *k, const char *prefix)
-{
-    size_t len = strcspn(bad, "["), plen = strlen(prefix);
-    if (k->field != NULL && strlen(k->field) == len && strncmp(k->field, bad, len) == 0)
-        return 1;
-    return len == plen + strlen(k->key) && strncmp(bad, prefix, plen) == 0 &&
-           strncmp(bad + plen, k->key, len - plen) == 0;
-}
-
-/* The settings key that mtt_params_check's bad field names; NULL if none. */
-static const skey *key_of_field(const char *bad, const char **prefix)
-{
-    size_t i;
-    for (i = 0; i < N_TOP; ++i)
-        if (names_key(bad, &top_keys[i], "")) {
-            *prefix = "";
-            return &top_keys[i];
-        }
-    for (i = 0; i < N_IGATE; ++i)
-        if (names_key(bad, &igate_keys[i], IGATE_PREFIX)) {
-            *prefix = IGATE_PREFIX;
-            return &igate_keys[i];
-        }
-    return NULL;
-}
-
-/* mtt_params_check failed on bad_field: report it as a settings key. */
-static int report_bad_field(const sctx *c, const char *bad_field)
-{
-    mtt_params *p = &c->s->params;
-    const char *prefix = "";
-    const skey *k = bad_field != NULL ? key_of_field(bad_field, &prefix) : NULL;
-    char key[KEY_MAX], value[160];
-    size_t i, len;
-
-    if (k == NULL) {
-        mtt_io_error_key(c->file, bad_field != NULL ? bad_field : "?",
-                         "rejected by mtt_params_check");
-        return MTT_IO_EINPUT;
-    }
-    snprintf(key, sizeof key, "%s%s", prefix, k->key);
-    if (k->kind == SK_REALS) {
-        /* The culprit element fails on its own (in the defaults), and the
-         * default in its place clears this key. */
-        mtt_params def;
-        if (mtt_params_default(&def) != MTT_OK)
-            def = *p;
-        for (i = k->range != NULL && k->range[0] == '[' ? k->len : 0; i < k->len; ++i) {
-            mtt_params alone = def, fixed = *p;
-            const char *b1 = NULL, *b2 = NULL;
-            param_real(&alone, k->off)[i] = param_real(p, k->off)[i];
-            param_real(&fixed, k->off)[i] = param_real(&def, k->off)[i];
-            if (mtt_params_check(&alone, &b1) != MTT_OK && b1 != NULL &&
-                names_key(b1, k, prefix) &&
-                (mtt_params_check(&fixed, &b2) == MTT_OK || b2 == NULL ||
-                 !names_key(b2, k, prefix))) {
-                snprintf(key, sizeof key, "%s%s[%lu]", prefix, k->key, (unsigned long)i);
-                snprintf(value, sizeof value, "%g", (double)param_real(p, k->off)[i]);
-                break;
-            }
-        }
-        if (i == k->len) { /* a constraint between elements */
-            len = (size_t)snprintf(value, sizeof value, "[");
-            for (i = 0; i < k->len && len < sizeof value; ++i)
-                len += (size_t)snprintf(value + len, sizeof value - len, "%s%g", i ? ", " : "",
-                                        (double)param_real(p, k->off)[i]);
-            if (len < sizeof value)
-                snprintf(value + len, sizeof value - len, "]");
-        }
-    } else if (k->kind == SK_REAL) {
-        snprintf(value, sizeof value, "%g", (double)*param_real(p, k->off));
-    } else {
-        value[0] = '\0';
-    }
-    if (k->range != NULL)
-        mtt_io_error_key(c->file, key, "must be %s, found %s", k->range, value);
-    else if (value[0] != '\0')
-        mtt_io_error_key(c->file, key, "%s is out of range", value);
-    else
-        mtt_io_error_key(c->file, key, "rejected by mtt_params_check");
-    return MTT_IO_EINPUT;
-}
-
+/* mtt_params_check judges the parameters together; every key passed
+ * mtt_params_set, so a bad field breaks a rule between keys (its `cross`). */
 static int check_params(const sctx *c)
 {
-    const char *bad = NULL, *name = "?", *text = "?";
-    char list[512];
+    const char *bad = NULL, *text = "?";
+    const mtt_param_info *info = NULL;
+    char list[512], val[96], range[96];
+    double v[3];
+    size_t row;
     mtt_status st = mtt_params_check(&c->s->params, &bad);
 
     switch (st) {
     case MTT_OK:
         return MTT_IO_OK;
     case MTT_ERR_PARAM:
-        return report_bad_field(c, bad);
+        if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
+            mtt_params_info(row, &info) != MTT_OK ||
+            mtt_params_get(&c->s->params, bad, v, info->count) != MTT_OK) {
+            mtt_io_error_key(c->file, bad != NULL ? bad : "?", "rejected by mtt_params_check");
+            return MTT_IO_EINPUT;
+        }
+        values_text(v, info->count, format_bound, val, sizeof val);
+        if (info->cross != NULL) {
+            mtt_io_error_key(c->file, bad, "must be %s, found %s", info->cross, val);
+        } else {
+            range_text(info, range, sizeof range);
+            mtt_io_error_key(c->file, bad, "must be %s, found %s", range, val);
+        }
+        return MTT_IO_EINPUT;
     case MTT_ERR_UNSUPPORTED:
-        if (mtt_assoc_name(c->s->params.association, &name) != MTT_OK)
-            name = "?";
-        assoc_list(list, sizeof list, 1);
-        mtt_io_error_key(c->file, "association",
-                         "association '%s' is not implemented in this version (available: %s)",
-                         name, list);
+        if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
+            mtt_params_info(row, &info) != MTT_OK ||
+            mtt_params_get(&c->s->params, bad, v, 1) != MTT_OK || info->type != MTT_PARAM_ENUM ||
+            !(v[0] >= 0.0 && v[0] < (double)info->n_names)) {
+            mtt_io_error_key(c->file, bad != NULL ? bad : "?", "not supported by this version");
+            return MTT_IO_EINPUT;
+        }
+        name_list(list, sizeof list, info, 1);
+        mtt_io_error_key(c->file, bad, "%s '%s' is not implemented in this version (available: %s)",
+                         bad, info->names[(size_t)v[0]], list);
         return MTT_IO_EINPUT;
     default:
         if (mtt_status_text(st, &text) != MTT_OK)
@@ -1063,6 +1075,58 @@ static int check_params(const sctx *c)
         mtt_io_error("%s: mtt_params_check failed: %s", c->file, text);
         return MTT_IO_ESYS;
     }
+}
+
+/* The settings table as docs/FORMATS.md shows it: one Markdown row per key. */
+void mtt_io_list_settings(FILE *out)
+{
+    const mtt_param_info *info;
+    mtt_params def;
+    double v[3];
+    char type[32], range[512], deflt[128];
+    size_t i, k, len;
+
+    if (mtt_params_default(&def) != MTT_OK)
+        return;
+    fputs("| key | type | range | default | meaning |\n|---|---|---|---|---|\n", out);
+    for (i = 0; mtt_params_info(i, &info) == MTT_OK; ++i) {
+        if (mtt_params_get(&def, info->key, v, info->count) != MTT_OK)
+            return;
+        switch (info->type) {
+        case MTT_PARAM_REAL:
+            if (info->count == 1)
+                snprintf(type, sizeof type, "number");
+            else
+                snprintf(type, sizeof type, "%u numbers", (unsigned)info->count);
+            len = (size_t)snprintf(range, sizeof range, "%s", info->count > 1 ? "each " : "");
+            range_text(info, range + len, sizeof range - len);
+            len = strlen(range);
+            if (info->cross != NULL)
+                snprintf(range + len, sizeof range - len, "; %s", info->cross);
+            values_text(v, info->count, format_real, deflt, sizeof deflt);
+            break;
+        case MTT_PARAM_BOOL:
+            snprintf(type, sizeof type, "boolean");
+            snprintf(range, sizeof range, "`true`, `false`");
+            snprintf(deflt, sizeof deflt, "`%s`", v[0] != 0.0 ? "true" : "false");
+            break;
+        default:
+            snprintf(type, sizeof type, "name");
+            len = 0;
+            range[0] = '\0';
+            for (k = 0; k < info->n_names; ++k)
+                len += (size_t)snprintf(range + len, sizeof range - len, "%s`%s`",
+                                        k == 0 ? "" : ", ", info->names[k]);
+            snprintf(deflt, sizeof deflt, "`%s`", info->names[(size_t)v[0]]);
+            break;
+        }
+        fprintf(out, "| `%s` | %s | %s | %s | %s |\n", info->key, type, range, deflt, info->text);
+    }
+    fputs("| `" SEEDS_KEY "` | list | objects `{\"x\", \"y\", \"vx\", \"vy\"}`, each optionally "
+          "with `\"P\"` (4x4 covariance: 16 numbers row-major, or 4 rows of 4) | none | tracks "
+          "that exist from the first scan: confirmed, existence 1, identities 0, 1, ... in list "
+          "order; without `\"P\"` the two-point covariance of the first scan interval |\n",
+          out);
 }
 
 /* The whole file as a NUL-terminated string. */
@@ -1182,7 +1246,7 @@ int mtt_io_read_settings(const char *path, mtt_io_settings *s)
                          json_type(root));
         rc = MTT_IO_EINPUT;
     } else {
-        rc = parse_object(&c, root, "", top_keys, N_TOP);
+        rc = parse_object(&c, root, "");
         if (rc == MTT_IO_OK)
             rc = check_params(&c);
     }

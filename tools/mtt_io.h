@@ -152,6 +152,11 @@ typedef struct mtt_io_settings {
 int mtt_io_read_settings(const char *path, mtt_io_settings *s);
 void mtt_io_free_settings(mtt_io_settings *s);
 
+/** Print the settings keys as a Markdown table (key, type, range, default,
+ *  meaning): mtt_params_info's rows, then initial_tracks.  docs/FORMATS.md
+ *  shows this table. */
+void mtt_io_list_settings(FILE *out);
+
 /** The settings key of a seeded track's element, for messages
  *  ("initial_tracks[2].P"); buf needs 64 bytes. */
 void mtt_io_seed_key(size_t i, const char *member, char *buf, size_t size);

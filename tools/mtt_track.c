@@ -41,7 +41,7 @@
 static const char usage_text[] =
     "Usage: " PROG " --config SETTINGS.json --detections RUN.det.csv --tracks RUN.tracks.csv\n"
     "                 [--tentative | --confirmed-only] [--stats]\n"
-    "       " PROG " --help | --version\n"
+    "       " PROG " --help | --version | --list-settings\n"
     "\n"
     "Run the mtt multi-target tracker over every scan of a detections file and\n"
     "write the live tracks after each scan.\n"
@@ -60,6 +60,8 @@ static const char usage_text[] =
     "  --stats             print a summary of the tracker's counters to stderr\n"
     "  --help              print this help and exit\n"
     "  --version           print the version and exit\n"
+    "  --list-settings     print the settings keys (key, type, range, default,\n"
+    "                      meaning) as a Markdown table and exit\n"
     "\n"
     "A value may also be given as --option=VALUE.  Each scan runs at its time\n"
     "counted from the first scan's (the tracker uses only time differences), so\n"
@@ -127,6 +129,10 @@ static int parse_args(int argc, char **argv, options *o)
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(usage_text, stdout);
+            return -1;
+        }
+        if (strcmp(a, "--list-settings") == 0) {
+            mtt_io_list_settings(stdout);
             return -1;
         }
         if (strcmp(a, "--version") == 0) {

@@ -309,7 +309,7 @@ cfg_unsupported_association)
     [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0 (jpda is built)"
     [ -f "$out" ] || fail "no tracks file written"
     ;;
-cfg_bad_init_gate)      cfg_fail cfg_bad_init_gate "key 'init_gate': unknown initial gate 'circle'" ;;
+cfg_bad_init_gate)      cfg_fail cfg_bad_init_gate "key 'init_gate': unknown init_gate 'circle' (expected one of: vmax, intensity)" ;;
 cfg_intensity_subkey)   cfg_fail cfg_intensity_subkey "key 'intensity_gate.f3': unknown key" ;;
 cfg_seed_missing_member) cfg_fail cfg_seed_missing_member "key 'initial_tracks[1].vy': missing" ;;
 cfg_seed_bad_cov)
