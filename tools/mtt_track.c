@@ -26,14 +26,6 @@
 #include "mtt/mtt.h"
 #include "mtt_io.h"
 
-#ifdef MTT_REAL_DOUBLE
-#define REAL_NAME "double"
-#define REAL_FMT "%.17g" /* enough digits to read back the same double */
-#else
-#define REAL_NAME "float"
-#define REAL_FMT "%.9g" /* enough digits to read back the same float */
-#endif
-
 #define PROG "mtt-track"
 #define EXIT_INPUT 2
 #define EXIT_FAIL 1
@@ -136,7 +128,7 @@ static int parse_args(int argc, char **argv, options *o)
             return -1;
         }
         if (strcmp(a, "--version") == 0) {
-            printf("%s %s (mtt_real=%s)\n", PROG, MTT_VERSION_STRING, REAL_NAME);
+            printf("%s %s (mtt_real=%s)\n", PROG, MTT_VERSION_STRING, MTT_IO_REAL_NAME);
             return -1;
         }
     }
@@ -271,34 +263,6 @@ static int add_seeds(mtt_tracker *trk, const options *o, const mtt_io_settings *
     return 0;
 }
 
-/* Write the rows of the live tracks after one scan. */
-static mtt_status write_scan(FILE *out, const mtt_tracker *trk, const mtt_io_scan *sc,
-                             int confirmed_only, unsigned long *rows)
-{
-    char time_str[32];
-    size_t n, i;
-    mtt_status st;
-
-    if ((st = mtt_tracker_count(trk, &n)) != MTT_OK)
-        return st;
-    mtt_io_format_double(sc->time, time_str, sizeof time_str); /* as the file gave it */
-    for (i = 0; i < n; ++i) {
-        mtt_track_view v;
-        if ((st = mtt_tracker_track(trk, i, &v)) != MTT_OK)
-            return st;
-        if (confirmed_only && !v.confirmed)
-            continue;
-        fprintf(out,
-                "%lu,%s,%" PRIu32 ",%s," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT
-                "," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT "\n",
-                sc->scan, time_str, v.id, v.confirmed ? "confirmed" : "tentative", (double)v.x[0],
-                (double)v.x[1], (double)v.x[2], (double)v.x[3], (double)v.existence,
-                (double)v.P[0][0], (double)v.P[0][1], (double)v.P[1][1]);
-        ++*rows;
-    }
-    return MTT_OK;
-}
-
 static void print_stats(const mtt_tracker *trk, size_t scans, unsigned long rows)
 {
     mtt_stats s;
@@ -378,7 +342,7 @@ static int run(const options *o)
         rc = EXIT_FAIL;
         goto done;
     }
-    fputs("scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy\n", out);
+    fputs(MTT_IO_TRACKS_HEADER "\n", out);
 
     for (k = 0; k < det.n_scans; ++k) {
         const mtt_io_scan *sc = &det.scans[k];
@@ -390,7 +354,7 @@ static int run(const options *o)
             rc = st == MTT_ERR_TIME ? EXIT_INPUT : EXIT_FAIL;
             goto done;
         }
-        if ((st = write_scan(out, trk, sc, o->confirmed_only, &rows)) != MTT_OK) {
+        if ((st = mtt_io_write_tracks(out, trk, sc, o->confirmed_only, &rows)) != MTT_OK) {
             mtt_io_error("scan %lu: reading the tracks failed: %s", sc->scan, status_text(st));
             rc = EXIT_FAIL;
             goto done;

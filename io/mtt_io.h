@@ -1,5 +1,11 @@
-/* tools/mtt_io.h - host-only readers for mtt-track: detections CSV and
- * tracker settings JSON, in the formats of FORMATS.md.
+/* io/mtt_io.h - libmtt_io, the host I/O library of mtt-track, mtt-bench
+ * and the fuzz harnesses: the settings JSON, the detections CSV and the
+ * tracks CSV of docs/FORMATS.md, one job per file:
+ *
+ *   error.c       the one-line messages        number.c   numbers in text
+ *   file.c        opening and reading files    csv.c      the CSV line reader
+ *   detections.c  *.det.csv                    settings.c settings JSON (the
+ *   tracks.c      *.tracks.csv                            parameter table)
  *
  * Not part of the library: this module uses stdio, malloc and cJSON.  Every
  * reader validates the whole file and reports the first problem as one line
@@ -11,8 +17,8 @@
  * and returns MTT_IO_EINPUT (bad input: exit code 2) or MTT_IO_ESYS (out of
  * memory, read error: exit code 1).
  */
-#ifndef MTT_TOOLS_MTT_IO_H
-#define MTT_TOOLS_MTT_IO_H
+#ifndef MTT_IO_MTT_IO_H
+#define MTT_IO_MTT_IO_H
 
 #include <stddef.h>
 #include <stdio.h>
@@ -23,6 +29,13 @@
 #define MTT_IO_PRINTF(f, a) __attribute__((format(printf, f, a)))
 #else
 #define MTT_IO_PRINTF(f, a)
+#endif
+
+/** "float" or "double": mtt_real, for messages. */
+#ifdef MTT_REAL_DOUBLE
+#define MTT_IO_REAL_NAME "double"
+#else
+#define MTT_IO_REAL_NAME "float"
 #endif
 
 /** Result of a reader; the values are the process exit codes. */
@@ -73,6 +86,16 @@ int mtt_io_to_real(double v, mtt_real *out);
 /** Write v with the fewest significant digits (at most 17) that read back
  *  as the same double.  buf needs 32 bytes. */
 void mtt_io_format_double(double v, char *buf, size_t size);
+
+/* ---- files ------------------------------------------------------------ */
+
+/** fopen for reading; reports (and returns NULL) when it cannot, or when
+ *  path is a directory. */
+FILE *mtt_io_open(const char *path, const char *mode);
+
+/** The whole file as a NUL-terminated string (*text, to free; *size bytes
+ *  before the NUL).  Reports and returns MTT_IO_EINPUT / MTT_IO_ESYS. */
+int mtt_io_read_text(const char *path, char **text, size_t *size);
 
 /* ---- CSV -------------------------------------------------------------- */
 
@@ -125,7 +148,7 @@ typedef struct mtt_io_detections {
     double time0;        /**< time of the first scan */
 } mtt_io_detections;
 
-/** Read and validate a detections file (FORMATS.md).  On failure nothing
+/** Read and validate a detections file (docs/FORMATS.md).  On failure nothing
  *  needs freeing. */
 int mtt_io_read_detections(const char *path, mtt_io_detections *d);
 void mtt_io_free_detections(mtt_io_detections *d);
@@ -161,4 +184,15 @@ void mtt_io_list_settings(FILE *out);
  *  ("initial_tracks[2].P"); buf needs 64 bytes. */
 void mtt_io_seed_key(size_t i, const char *member, char *buf, size_t size);
 
-#endif /* MTT_TOOLS_MTT_IO_H */
+/* ---- tracks (*.tracks.csv) ------------------------------------------- */
+
+/** The header line of a tracks file. */
+#define MTT_IO_TRACKS_HEADER "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy"
+
+/** Write the rows of trk's live tracks after scan sc (confirmed ones only
+ *  if confirmed_only), the time as the detections file gave it; adds the
+ *  rows written to *rows.  Returns the first failing mtt_status. */
+mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_scan *sc,
+                               int confirmed_only, unsigned long *rows);
+
+#endif /* MTT_IO_MTT_IO_H */

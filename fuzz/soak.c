@@ -1,5 +1,5 @@
-/* tools/soak.c - mtt-soak: a long run of the tracker on an evolving random
- * scene, checking every invariant after every frame (issue 6).
+/* fuzz/soak.c - mtt-soak: a long run of the tracker on an evolving random
+ * scene, checking every invariant after every frame.
  *
  *   mtt-soak [--frames N] [--seed S] [--mode NAME|all] [--progress K] [--quiet]
  *
@@ -349,7 +349,7 @@ static int usage(FILE *fp)
                 "  --frames N    frames of the scene (default 1000000)\n"
                 "  --seed S      scene seed (default 1); odd seeds use a known clutter density,\n"
                 "                even seeds let the tracker estimate it\n"
-                "  --mode NAME   association mode as FORMATS.md spells it (default lm-ihpda);\n"
+                "  --mode NAME   association mode as docs/FORMATS.md spells it (default lm-ihpda);\n"
                 "                'all' runs every mode the library accepts\n"
                 "  --progress K  a progress line on stderr every K frames (default 100000, 0: none)\n"
                 "Exit status: 0 all invariants held; 1 a violation (message on stderr); 2 usage.\n");
