@@ -75,8 +75,16 @@ class Seed:
 
 # ---------------------------------------------------------------- messages
 
+def _is_bool(v) -> bool:
+    try:
+        import numpy as np
+    except ImportError:  # pragma: no cover
+        return isinstance(v, bool)
+    return isinstance(v, (bool, np.bool_))
+
+
 def _json_type(v) -> str:
-    if isinstance(v, bool):
+    if _is_bool(v):
         return "a boolean"
     if isinstance(v, numbers.Number) or _is_np_number(v):
         return "a number"
@@ -180,7 +188,7 @@ class _Reader:
         self.fail(key, "unknown key")
 
     def number(self, v, key) -> float:
-        if isinstance(v, bool) or not (isinstance(v, numbers.Real) or _is_np_number(v)):
+        if _is_bool(v) or not (isinstance(v, numbers.Real) or _is_np_number(v)):
             self.fail(key, f"must be a number, found {_json_type(v)}")
         try:
             x = float(v)
@@ -230,7 +238,7 @@ class _Reader:
         if r.type == REAL:
             vals = [self.number(v, key)] if r.count == 1 else self.numbers(v, key, r.count)
         elif r.type == BOOL:
-            if not isinstance(v, (bool,)) and not (_is_np_number(v) and v.dtype == bool):
+            if not _is_bool(v):
                 self.fail(key, f"must be true or false, found {_json_type(v)}")
             vals = [1.0 if v else 0.0]
         else:
