@@ -5,7 +5,7 @@
  * The rows are params_table.h's, the range test is params.c's
  * mtt_params_rule_ok: this file adds the texts and the conversion from and
  * to double.  Nothing in the tracker calls it, so a firmware image does not
- * link it (nor the double arithmetic it needs: tools/ci-firmware.sh checks
+ * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
  * that no double helper is linked). */
 #include <string.h>
 
