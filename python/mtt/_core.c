@@ -335,11 +335,16 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
     return PyLong_FromLong((long)st);
 }
 
-/* tracks() -> list of (id, confirmed, x 4-tuple, P 16-tuple, existence, age, meas) */
-static PyObject *tracker_tracks(CoreTracker *self, PyObject *unused)
+/* table() -> bytes: one row of TABLE_COLUMNS float64 per live track, ascending id:
+ * id, confirmed, x, y, vx, vy, existence, age, detection, P (16, row-major).
+ * One call per step instead of one tuple per track (mtt_sim's Monte Carlo). */
+#define TABLE_COLUMNS 25
+static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
 {
     size_t n = 0, i;
-    PyObject *list;
+    PyObject *bytes;
+    double *row;
+    int k;
     (void)unused;
     if (!need_init(self))
         return NULL;
@@ -347,27 +352,28 @@ static PyObject *tracker_tracks(CoreTracker *self, PyObject *unused)
         PyErr_SetString(PyExc_RuntimeError, "mtt_tracker_count failed");
         return NULL;
     }
-    list = PyList_New((Py_ssize_t)n);
-    if (list == NULL)
+    bytes = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(n * TABLE_COLUMNS * sizeof(double)));
+    if (bytes == NULL)
         return NULL;
-    for (i = 0; i < n; ++i) {
+    row = (double *)(void *)PyBytes_AS_STRING(bytes);
+    for (i = 0; i < n; ++i, row += TABLE_COLUMNS) {
         mtt_track_view tv;
-        PyObject *row;
         if (mtt_tracker_track(self->trk, i, &tv) != MTT_OK) {
-            Py_DECREF(list);
+            Py_DECREF(bytes);
             PyErr_SetString(PyExc_RuntimeError, "mtt_tracker_track failed");
             return NULL;
         }
-        row = Py_BuildValue("(kONNdkl)", (unsigned long)tv.id, tv.confirmed ? Py_True : Py_False,
-                            matrix_tuple(tv.x, 4), matrix_tuple(&tv.P[0][0], 16),
-                            (double)tv.existence, (unsigned long)tv.age, (long)tv.meas);
-        if (row == NULL) {
-            Py_DECREF(list);
-            return NULL;
-        }
-        PyList_SET_ITEM(list, (Py_ssize_t)i, row);
+        row[0] = (double)tv.id;
+        row[1] = tv.confirmed ? 1.0 : 0.0;
+        for (k = 0; k < 4; ++k)
+            row[2 + k] = (double)tv.x[k];
+        row[6] = (double)tv.existence;
+        row[7] = (double)tv.age;
+        row[8] = (double)tv.meas;
+        for (k = 0; k < 16; ++k)
+            row[9 + k] = (double)tv.P[k / 4][k % 4];
     }
-    return list;
+    return bytes;
 }
 
 /* The fields of mtt_counts, in order (COUNT_FIELDS). */
@@ -430,7 +436,8 @@ static PyMethodDef tracker_methods[] = {
      "add_track(x, P) -> (status, id) of mtt_tracker_add_track"},
     {"step", (PyCFunction)tracker_step, METH_VARARGS,
      "step(time, float64 rows x, y, amplitude) -> status of mtt_tracker_step"},
-    {"tracks", (PyCFunction)tracker_tracks, METH_NOARGS, "tracks() -> list of track tuples"},
+    {"table", (PyCFunction)tracker_table, METH_NOARGS,
+     "table() -> bytes, TABLE_COLUMNS float64 per live track (see TABLE_NAMES)"},
     {"stats", (PyCFunction)tracker_stats, METH_NOARGS, "stats() -> (last, total, max_cluster_tracks)"},
     {"state_bytes", (PyCFunction)tracker_state_bytes, METH_NOARGS,
      "state_bytes() -> the tracker state as bytes"},
@@ -443,7 +450,7 @@ static PyTypeObject TrackerType = {
     .tp_itemsize = 0,
     .tp_dealloc = (destructor)tracker_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
-    .tp_doc = "One mtt_tracker: set_param / check / init, then add_track, step, tracks, stats.",
+    .tp_doc = "One mtt_tracker: set_param / check / init, then add_track, step, table, stats.",
     .tp_methods = tracker_methods,
     .tp_init = (initproc)tracker_init,
     .tp_new = PyType_GenericNew,
@@ -483,6 +490,7 @@ PyMODINIT_FUNC PyInit__core(void)
         PyModule_AddStringConstant(m, "REAL", REAL_NAME) < 0 ||
         PyModule_AddObject(m, "REAL_MAX", PyFloat_FromDouble((double)MTT_REAL_MAX)) < 0 ||
         PyModule_AddIntConstant(m, "MAX_TRACKS", MTT_MAX_TRACKS) < 0 ||
+        PyModule_AddIntConstant(m, "TABLE_COLUMNS", TABLE_COLUMNS) < 0 ||
         PyModule_AddIntConstant(m, "MAX_MEAS", MTT_MAX_MEAS) < 0 ||
         PyModule_AddIntConstant(m, "ERR_TIME", MTT_ERR_TIME) < 0 ||
         PyModule_AddIntConstant(m, "ERR_VALUE", MTT_ERR_VALUE) < 0 ||

@@ -207,8 +207,9 @@ class _Reader:
             self.fail(key, f"must be an array of {n} numbers, found {len(v)} elements")
         return [self.number(e, f"{key}[{i}]") for i, e in enumerate(v)]
 
-    def classify(self, prefix, name, sg):
-        """('key', row) | ('group', None) | (None, None); feeds the suggestion."""
+    def classify(self, prefix, name, sg=None):
+        """('key', row) | ('group', None) | (None, None); with sg, collects the
+        closest name at that level (for the message of an unknown key)."""
         kind, row = None, None
         for r in params_table():
             if not r.key.startswith(prefix):
@@ -219,8 +220,9 @@ class _Reader:
                 kind, row = "key", r
             elif dot and head == name and kind != "key":
                 kind = "group"
-            sg.consider(head)
-        if prefix == "":
+            if sg is not None:
+                sg.consider(head)
+        if prefix == "" and sg is not None:
             sg.consider(SEEDS_KEY)
         return kind, row
 
@@ -275,11 +277,12 @@ class _Reader:
         for name, v in d.items():
             if not isinstance(name, str):
                 self.fail(repr(name), "keys must be strings")
-            sg = _Suggestion(name)
-            kind, row = self.classify(prefix, name, sg)
+            kind, row = self.classify(prefix, name)
             seeds = prefix == "" and name == SEEDS_KEY
             key = prefix + name
             if kind is None and not seeds:
+                sg = _Suggestion(name)
+                self.classify(prefix, name, sg)
                 self.unknown(key, sg)
             if seeds:
                 self.tracks(v, key)
