@@ -23,10 +23,13 @@ import math
 
 import numpy as np
 
-from stonesoup.base import Property
-from stonesoup.tracker.base import Tracker as _SSTracker
-from stonesoup.types.state import GaussianState
-from stonesoup.types.track import Track as _SSTrack
+try:
+    from stonesoup.base import Property
+    from stonesoup.tracker.base import Tracker as _SSTracker
+    from stonesoup.types.state import GaussianState
+    from stonesoup.types.track import Track as _SSTrack
+except ImportError as e:  # the optional extra
+    raise ImportError(f"mtt.stonesoup needs Stone Soup: pip install 'mtt[stonesoup]' ({e})") from e
 
 from .tracker import Tracker
 
