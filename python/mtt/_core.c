@@ -382,6 +382,13 @@ static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
     X(clusters) X(births) X(births_dropped) X(merges) X(merge_dropped) X(deletions)               \
     X(numeric_deletions) X(confirmations) X(assign_fallbacks) X(jpda_fallbacks)
 
+/* A field added to mtt_counts must be added to COUNT_FIELDS: this breaks the
+ * build until it is (every field is a uint32_t). */
+#define COUNT_ONE(f) +1
+typedef char count_fields_cover_mtt_counts[(sizeof(mtt_counts) ==
+                                            (0 COUNT_FIELDS(COUNT_ONE)) * sizeof(uint32_t)) ? 1 : -1];
+#undef COUNT_ONE
+
 static PyObject *counts_dict(const mtt_counts *c)
 {
     PyObject *d = PyDict_New(), *v;

@@ -20,6 +20,8 @@ import numbers
 import os
 import re
 
+import numpy as np
+
 from . import _core
 
 __all__ = ["SettingsError", "Seed", "apply_settings", "load_settings", "params_table"]
@@ -76,10 +78,6 @@ class Seed:
 # ---------------------------------------------------------------- messages
 
 def _is_bool(v) -> bool:
-    try:
-        import numpy as np
-    except ImportError:  # pragma: no cover
-        return isinstance(v, bool)
     return isinstance(v, (bool, np.bool_))
 
 
@@ -100,21 +98,12 @@ def _json_type(v) -> str:
 
 
 def _is_np_number(v) -> bool:
-    try:
-        import numpy as np
-    except ImportError:  # pragma: no cover - numpy is a dependency
-        return False
     return isinstance(v, np.number)
 
 
 def _is_sequence(v) -> bool:
-    if isinstance(v, (list, tuple)):
-        return True
-    try:
-        import numpy as np
-    except ImportError:  # pragma: no cover
-        return False
-    return isinstance(v, np.ndarray) and v.ndim >= 1
+    """A JSON array: list, tuple or numpy array."""
+    return isinstance(v, (list, tuple)) or (isinstance(v, np.ndarray) and v.ndim >= 1)
 
 
 def _c_g(v: float, prec: int = 6) -> str:
