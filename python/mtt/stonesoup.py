@@ -25,6 +25,7 @@ import numpy as np
 
 try:
     from stonesoup.base import Property
+    from stonesoup.reader.base import DetectionReader
     from stonesoup.tracker.base import Tracker as _SSTracker
     from stonesoup.types.state import GaussianState
     from stonesoup.types.track import Track as _SSTrack
@@ -46,14 +47,16 @@ class MttTracker(_SSTracker):
     scan; both return ``(timestamp, tracks)``, the set of confirmed tracks.
     """
 
-    detector: object = Property(default=None, doc="Detection reader giving (timestamp, set of "
-                                "Detection) per scan; None when update_tracker is called directly")
+    detector: DetectionReader = Property(
+        default=None, doc="Detection reader (or any iterable) giving (timestamp, Detections) per "
+                          "scan; None when update_tracker is called directly")
     settings: object = Property(default=None, doc="mtt settings: a dict with the keys of "
                                 "docs/FORMATS.md, a path to a settings JSON file, or None")
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.detector_iter = None
+        #: the mtt.Tracker underneath (its stats, its numpy tracks)
         self.mtt = Tracker(self.settings)
         self._t0 = None
         self._live: dict[int, _SSTrack] = {}
