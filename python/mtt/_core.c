@@ -327,9 +327,9 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
             meas[i].amplitude = meas[i].has_amplitude ? (mtt_real)r[2] : MTT_R(0.0);
         }
     }
-    Py_BEGIN_ALLOW_THREADS
+    /* The GIL stays held: two threads stepping one tracker would race (the
+     * library is not thread-safe per tracker), and a step is short. */
     st = mtt_tracker_step(self->trk, rtime, meas, n);
-    Py_END_ALLOW_THREADS
     PyMem_Free(meas);
     PyBuffer_Release(&buf);
     return PyLong_FromLong((long)st);
