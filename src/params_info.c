@@ -59,14 +59,25 @@ mtt_status mtt_params_find(const char *key, size_t *i)
     return MTT_ERR_RANGE;
 }
 
-/* The row of key with n values, or NULL. */
-static const info_row *row_of(const char *key, size_t n)
+/* The arguments of mtt_params_set / get: *r the row of key, which must
+ * have n values. */
+static mtt_status row_of(const void *p, const char *key, const void *v, size_t n,
+                         const info_row **r)
 {
     size_t k;
-    if (mtt_params_find(key, &k) != MTT_OK || n != rows[k].info.count) {
-        return NULL;
+    mtt_status st;
+    if (p == NULL || v == NULL) {
+        return MTT_ERR_NULL;
     }
-    return &rows[k];
+    st = mtt_params_find(key, &k); /* MTT_ERR_NULL for a NULL key */
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (n != rows[k].info.count) {
+        return MTT_ERR_RANGE;
+    }
+    *r = &rows[k];
+    return MTT_OK;
 }
 
 /* ENUM and BOOL rows: the member, as an int.  One case per row: the enum
@@ -100,15 +111,12 @@ static void set_int(mtt_params *p, const info_row *r, int value)
 
 mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
 {
-    const info_row *r;
+    const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    if (p == NULL || key == NULL || v == NULL) {
-        return MTT_ERR_NULL;
-    }
-    r = row_of(key, n);
-    if (r == NULL) {
-        return MTT_ERR_RANGE;
+    mtt_status st = row_of(p, key, v, n, &r);
+    if (st != MTT_OK) {
+        return st;
     }
     if (r->info.type != MTT_PARAM_REAL) {
         /* an index in [0, hi]: whole, and compared before the conversion */
@@ -135,15 +143,12 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
 
 mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_t n)
 {
-    const info_row *r;
+    const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    if (p == NULL || key == NULL || v == NULL) {
-        return MTT_ERR_NULL;
-    }
-    r = row_of(key, n);
-    if (r == NULL) {
-        return MTT_ERR_RANGE;
+    mtt_status st = row_of(p, key, v, n, &r);
+    if (st != MTT_OK) {
+        return st;
     }
     if (r->info.type != MTT_PARAM_REAL) {
         v[0] = (double)get_int(p, r);

@@ -394,11 +394,14 @@ typedef struct mtt_tracker {
 MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
 
 /** Validate a parameter set.
- *  @param bad_field if not NULL, receives the name of the first invalid field
- *         (a static string such as "pd"), or NULL when valid.
+ *  @param bad_field if not NULL, receives the settings key of the first invalid
+ *         field (a static string such as "pd", "intensity_gate.blend"), or NULL
+ *         when valid.
  *  @return MTT_OK; MTT_ERR_NULL if p is NULL; MTT_ERR_PARAM if a field is out
- *          of range or not finite; MTT_ERR_UNSUPPORTED if the association mode
- *          is not built into this version (bad_field = "association"). */
+ *          of its range or not finite, or breaks a rule between fields (the
+ *          ranges and rules: see mtt_params_info); MTT_ERR_UNSUPPORTED if the
+ *          association mode is not built into this version (bad_field =
+ *          "association"). */
 MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
 
 /** The i-th settings key, 0 <= i < number of keys, in docs/FORMATS.md order.
