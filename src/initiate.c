@@ -228,3 +228,20 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
         }
     }
 }
+
+mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_real P[4][4])
+{
+    mtt_real R[3];
+    if (P == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (!(sx > MTT_R(0.0)) || !(sy > MTT_R(0.0)) || !(dt > MTT_R(0.0)) ||
+        !mtt_isfinite(sx) || !mtt_isfinite(sy) || !mtt_isfinite(dt)) {
+        return MTT_ERR_VALUE;
+    }
+    R[0] = sx * sx;
+    R[1] = MTT_R(0.0);
+    R[2] = sy * sy;
+    mtt_two_point_cov(R, dt, P);
+    return MTT_OK;
+}

@@ -18,6 +18,11 @@ void mtt_sym4(mtt_real P[4][4])
     }
 }
 
+int mtt_finite4(const mtt_real x[4])
+{
+    return mtt_isfinite(x[0]) && mtt_isfinite(x[1]) && mtt_isfinite(x[2]) && mtt_isfinite(x[3]);
+}
+
 void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4])
 {
     mtt_real q11 = sw * dt * dt * dt / MTT_R(3.0);

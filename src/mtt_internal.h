@@ -39,6 +39,8 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
                     const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
                     const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
 void mtt_sym4(mtt_real P[4][4]);
+/* 1 when all four values are finite. */
+int mtt_finite4(const mtt_real x[4]);
 /* 1 when the symmetric P is positive definite with margin: every L D L'
  * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
 int mtt_cov_ok(mtt_real P[4][4], mtt_real rel);
@@ -160,9 +162,17 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
 int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
-/* ---- tracker.c ---- */
+/* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n);
+
+/* ---- predict.c: prediction, S, S^-1 and gain of every track (§2, §3, §11) ---- */
+void mtt_predict_frame(mtt_tracker *trk, mtt_real dt);
+
+/* ---- track_table.c: the track table (§12.4) ---- */
 /* Append a track; returns its index or -1 when the table is full. */
 int mtt_track_append(mtt_tracker *trk, const mtt_real x[4], mtt_real P[4][4],
                      mtt_real existence, int confirmed, int born);
+/* End of frame: delete, confirm, compact. */
+void mtt_track_manage(mtt_tracker *trk);
 
 #endif /* MTT_INTERNAL_H */
