@@ -6,7 +6,9 @@
  * never the seed's alternating sum, which cancels catastrophically.
  * spec 7.3: A_j = PD PG m p_j P_r(l_j) / lambda_j,
  *           C_j = 1 - PD PG + PD PG (m / (lambda_j V_G)) (1 - P_r(l_j)),
- *           L_j = A_j + C_j, beta_j = A_j / L_j. */
+ *           L_j = A_j + C_j, beta_j = A_j / L_j.
+ * spec 7.4: the `ihpda` mode's selection on each track's full gate;
+ * spec 10.3: the final recomputation after an assignment. */
 #include "mtt_internal.h"
 
 void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out)
@@ -100,4 +102,51 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     }
     *best = (int16_t)pk[b];
     return m;
+}
+
+void mtt_ihpda_select_frame(mtt_tracker *trk)
+{
+    uint16_t i;
+    /* Each track selects on its own full gate; tracks may share (spec 15.1). */
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track_frame *tf = &trk->tf[i];
+        tf->assigned = -1;
+        if (tf->valid && tf->pair_count > 0u) {
+            (void)mtt_ihpda_row(trk, i, 0, -1, 1, &tf->assigned);
+        }
+    }
+    for (i = 0; i < trk->n_tracks; ++i) {
+        if (trk->tf[i].assigned >= 0) {
+            trk->meas[trk->pairs[trk->tf[i].assigned].meas].used = 1;
+        }
+    }
+}
+
+/* spec 10.3's set G_f = G minus the measurements assigned to other tracks
+ * is a subset of the set the track's last row was computed over (MMR: the
+ * free measurements when it was assigned; 2-D assignment: all of G).  So
+ * equal sizes mean equal sets, equal rows, and the recomputation can be
+ * skipped: the common case of a track that shares nothing. */
+static int final_set_changed(const mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t k, m = 0;
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        if (!trk->meas[trk->pairs[k].meas].used || (int16_t)k == tf->assigned) {
+            ++m;
+        }
+    }
+    return m != tf->row_m;
+}
+
+void mtt_ihpda_final_frame(mtt_tracker *trk)
+{
+    uint16_t i;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track_frame *tf = &trk->tf[i];
+        if (tf->valid && tf->assigned >= 0 && final_set_changed(trk, i)) {
+            int16_t best;
+            (void)mtt_ihpda_row(trk, i, 1, tf->assigned, 0, &best);
+        }
+    }
 }

@@ -1,4 +1,5 @@
-/* ipda.c - IPDA association probabilities (spec 6).
+/* ipda.c - IPDA association probabilities and the IPDA row of a track
+ * (spec 6); the association of the ipda and lm-ipda modes.
  *
  * Lambda = sum_j p_j / lambda_j, L = 1 - PD PG + PD PG Lambda,
  * beta_j = PD PG (p_j / lambda_j) / L, beta_0 = (1 - PD PG) / L.
@@ -20,4 +21,32 @@ void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real 
     }
     *beta0 = (MTT_R(1.0) - pdpg) / l;
     *L = l;
+}
+
+void mtt_ipda_track(mtt_tracker *trk, uint16_t ti)
+{
+    mtt_track_frame *tf = &trk->tf[ti];
+    const mtt_pair *pp = &trk->pairs[tf->pair_first];
+    const uint16_t m = tf->pair_count;
+    mtt_real L;
+    uint16_t j;
+    for (j = 0; j < m; ++j) {
+        trk->row.p[j] = pp[j].p;
+        trk->row.lam[j] = pp[j].lam;
+    }
+    mtt_ipda_betas(trk->par.pd, trk->par.pg, trk->row.p, trk->row.lam, m, trk->row.beta, &tf->beta0, &L);
+    for (j = 0; j < m; ++j) {
+        trk->pairs[tf->pair_first + j].beta = trk->row.beta[j];
+    }
+    tf->ex_post = mtt_existence_update(tf->ex_pred, L);
+}
+
+void mtt_ipda_frame(mtt_tracker *trk)
+{
+    uint16_t i;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        if (trk->tf[i].valid) {
+            mtt_ipda_track(trk, i);
+        }
+    }
 }

@@ -1,6 +1,6 @@
 /* jpda.c - exact JPDA, JPDA* and JIPDA by event enumeration per cluster
- * (spec 13.1, 13.2, 13.6), and the association stage of the JPDA-family
- * modes (spec 13, 15.1).
+ * (spec 13.1, 13.2, 13.6), and the weights A and B of the whole JPDA
+ * family (spec 13).
  *
  * Weights (spec 13): A_tj = N(nu; 0, S) = PG p_tj for a gated pair, B_t =
  * jpda_bias, or lambda_t (1 - PD PG) / PD when it is 0 (lambda_t the known
@@ -24,7 +24,8 @@
  * enumeration sums the kept ones.
  *
  * Existence (spec 13.2 CHOICE): jipda uses P_t of spec 13.2; every other
- * mode the IPDA formula of spec 6 on the track's own gate. */
+ * mode the IPDA formula of spec 6 on the track's own gate (mtt_ipda_frame,
+ * run by the association stage). */
 #include "mtt_internal.h"
 
 #if MTT_WITH_BASELINES
@@ -41,8 +42,6 @@ void mtt_jpda_weights(mtt_tracker *trk)
     uint16_t i, k;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        const uint16_t m = tf->pair_count;
-        mtt_real beta0, L;
         trk->base.jp.tb[i] = MTT_R(0.0);
         tf->beta0 = MTT_R(1.0);
         if (!tf->valid) {
@@ -55,16 +54,10 @@ void mtt_jpda_weights(mtt_tracker *trk)
         } else {
             trk->base.jp.tb[i] = tf->lambda * (MTT_R(1.0) - pdpg) / pd;
         }
-        for (k = 0; k < m; ++k) {
-            const mtt_pair *pp = &trk->pairs[tf->pair_first + k];
-            trk->row.p[k] = pp->p;
-            trk->row.lam[k] = pp->lam;
-            trk->base.jp.pa[tf->pair_first + k] =
-                jipda ? pdpg * tf->ex_pred * pp->p / pp->lam : pg * pp->p;
+        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+            const mtt_pair *pp = &trk->pairs[k];
+            trk->base.jp.pa[k] = jipda ? pdpg * tf->ex_pred * pp->p / pp->lam : pg * pp->p;
         }
-        /* spec 13.2 CHOICE: IPDA existence on the own gate (jipda overwrites). */
-        mtt_ipda_betas(pd, pg, trk->row.p, trk->row.lam, m, trk->row.beta, &beta0, &L);
-        tf->ex_post = mtt_existence_update(tf->ex_pred, L);
     }
 }
 
@@ -321,79 +314,6 @@ int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
         }
     }
     return 0;
-}
-
-/* jipda over the bounds: per-track IPDA beta (existence is already IPDA). */
-static void ipda_cluster(mtt_tracker *trk, uint16_t c)
-{
-    uint16_t q, k;
-    for (q = trk->cl_first[c]; q < trk->cl_first[c + 1u]; ++q) {
-        mtt_track_frame *tf = &trk->tf[trk->cl_list[q]];
-        const uint16_t m = tf->pair_count;
-        mtt_real L;
-        for (k = 0; k < m; ++k) {
-            trk->row.p[k] = trk->pairs[tf->pair_first + k].p;
-            trk->row.lam[k] = trk->pairs[tf->pair_first + k].lam;
-        }
-        mtt_ipda_betas(trk->par.pd, trk->par.pg, trk->row.p, trk->row.lam, m, trk->row.beta,
-                       &tf->beta0, &L);
-        for (k = 0; k < m; ++k) {
-            trk->pairs[tf->pair_first + k].beta = trk->row.beta[k];
-        }
-    }
-}
-
-/* Exact betas of cluster c, or the counted fallback. */
-static void exact_or_fallback(mtt_tracker *trk, uint16_t c, int kind)
-{
-    if (mtt_jpda_exact(trk, c, kind) == 0) {
-        return;
-    }
-    trk->stats.last.jpda_fallbacks++;
-    if (kind == MTT_JPDA_JIPDA) {
-        ipda_cluster(trk, c);
-    } else {
-        mtt_cheap_jpda(trk, c, 1);
-    }
-}
-
-void mtt_jpda_frame(mtt_tracker *trk)
-{
-    const mtt_assoc mode = trk->par.association;
-    uint16_t c;
-    mtt_jpda_weights(trk);
-    for (c = 0; c < trk->n_clusters; ++c) {
-        const uint16_t t0 = trk->cl_list[trk->cl_first[c]];
-        if (trk->cl_first[c + 1u] - trk->cl_first[c] == 1 && trk->tf[t0].pair_count == 0u) {
-            trk->tf[t0].beta0 = MTT_R(1.0); /* empty gate: m = 0 update */
-            continue;
-        }
-        switch (mode) {
-        case MTT_ASSOC_JIPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_JIPDA);
-            break;
-        case MTT_ASSOC_CHEAP_JPDA:
-            mtt_cheap_jpda(trk, c, 1);
-            break;
-        case MTT_ASSOC_SUBOPT_JPDA:
-            mtt_subopt_jpda(trk, c, 1);
-            break;
-        case MTT_ASSOC_NNJPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            mtt_nnjpda_cluster(trk, c);
-            break;
-        case MTT_ASSOC_JPDA_STAR:
-            exact_or_fallback(trk, c, MTT_JPDA_STAR);
-            break;
-        case MTT_ASSOC_ADAPTIVE_JPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            mtt_adaptive_split(trk, c);
-            break;
-        default: /* MTT_ASSOC_JPDA */
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            break;
-        }
-    }
 }
 
 #else

@@ -86,10 +86,21 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
  * spec 10.1; 1: smaller rank, then lower index, spec 7.4). */
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best);
+/* The `ihpda` association: each valid track selects on its full gate
+ * (tie rule 1); the selected measurements are marked used. */
+void mtt_ihpda_select_frame(mtt_tracker *trk);
+/* Final recomputation (spec 10.3) of every assigned track's row over G
+ * minus the measurements assigned to other tracks, when that set changed. */
+void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* ---- ipda.c: IPDA (spec 6) ---- */
 void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
                     uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L);
+/* IPDA row of track ti over its gate: pair.beta, tf.beta0 and the updated
+ * existence tf.ex_post.  The one place that gathers a gate for IPDA. */
+void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
+/* mtt_ipda_track for every valid track: the ipda / lm-ipda association. */
+void mtt_ipda_frame(mtt_tracker *trk);
 
 /* ---- existence.c: Markov chain one and the existence update (spec 11, 6) ---- */
 mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21);
@@ -118,18 +129,15 @@ void mtt_assign2d_solve(mtt_assign_scratch *s, uint16_t n, uint16_t m, mtt_row_f
 void mtt_assign2d_cluster(mtt_tracker *trk, uint16_t c);
 void mtt_assign2d_frame(mtt_tracker *trk);
 
-/* ---- jpda.c: exact JPDA, JPDA*, JIPDA (spec 13.1, 13.2, 13.6) and the
- *      per-mode dispatch of the JPDA family ---- */
+/* ---- jpda.c: exact JPDA, JPDA*, JIPDA (spec 13.1, 13.2, 13.6) ---- */
 enum { MTT_JPDA_EXACT = 0, MTT_JPDA_STAR = 1, MTT_JPDA_JIPDA = 2 };
-/* Per frame: jp.pa (A of each pair), jp.tb (B of each track) and every
- * track's IPDA existence in tf.ex_post (spec 13, 13.2 CHOICE). */
+/* Per frame: jp.pa (A of each pair), jp.tb (B of each track), tf.beta0 = 1
+ * (spec 13). */
 void mtt_jpda_weights(mtt_tracker *trk);
 /* Exact enumeration over cluster c; kind = MTT_JPDA_*.  Writes pair.beta,
  * tf.beta0 (and tf.ex_post for JIPDA).  Returns 0, or -1 (nothing written)
  * when the cluster exceeds MTT_MAX_JPDA_TRACKS / _MEAS / _EVENTS. */
 int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind);
-/* The association stage of the JPDA-family modes, all clusters. */
-void mtt_jpda_frame(mtt_tracker *trk);
 
 /* ---- jpda_approx.c: Cheap and Suboptimal JPDA (spec 13.3, 13.4) ---- */
 void mtt_cheap_jpda(mtt_tracker *trk, uint16_t c, int normalise);
@@ -145,6 +153,28 @@ void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c);
 void mtt_adaptive_gates(mtt_tracker *trk);
 /* After the JPDA betas of cluster c: equal split for shared measurements. */
 void mtt_adaptive_split(mtt_tracker *trk, uint16_t c);
+
+/* ---- associate.c: the association stage and the mode table (spec 15.1) ---- */
+enum { MTT_UPDATE_ONE = 0, MTT_UPDATE_PDA = 1, MTT_UPDATE_HARD = 2 };
+/* One association mode.  update: what the update stage does with the
+ * association's result -- ONE: the single assigned / selected pair with its
+ * beta and L (spec 7.4); PDA: every gated pair with the beta row, beta_0 and
+ * tf.ex_post (spec 6, 13.8); HARD: the assigned pair with beta 1 and
+ * tf.ex_post (spec 13.5). */
+typedef struct mtt_mode {
+    const char *name;                     /* docs/FORMATS.md `association` */
+    void (*associate)(mtt_tracker *trk);  /* after clustering; NULL: not built */
+    uint8_t lm;                           /* LM clutter densities (spec 8) */
+    uint8_t update;                       /* MTT_UPDATE_* */
+    uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
+    uint8_t shrink_gates;                 /* per-track gates before gating (spec 13.7) */
+} mtt_mode;
+extern const mtt_mode mtt_modes[MTT_ASSOC_COUNT];
+/* Clusters, then the mode's association; PDA modes mark every gated
+ * measurement used. */
+void mtt_associate_frame(mtt_tracker *trk);
+/* 1 when mode a is valid and built into this library. */
+int mtt_mode_built(mtt_assoc a);
 
 /* ---- update.c: state and existence update of every track (spec 6, 7.4, 10.3) ---- */
 void mtt_update_frame(mtt_tracker *trk);

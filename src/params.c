@@ -1,13 +1,10 @@
 /* params.c - parameter defaults (FORMATS.md, seed 000's IR set-up),
- * validation that names the first bad field, and the names of the modes. */
+ * validation that names the first bad field, and the status texts.  The
+ * mode names live in the mode table (associate.c). */
 #include <stddef.h>
 #include <string.h>
 
 #include "mtt_internal.h"
-
-static const char *const assoc_names[MTT_ASSOC_COUNT] = {
-    "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
-    "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"};
 
 mtt_status mtt_params_default(mtt_params *p)
 {
@@ -148,8 +145,8 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     }
     if ((int)p->association < 0 || (int)p->association >= (int)MTT_ASSOC_COUNT) {
         bad = "association";
-    } else if (!MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
-        bad = "association"; /* built with MTT_WITH_BASELINES 0 */
+    } else if (!mtt_mode_built(p->association)) {
+        bad = "association"; /* a baseline, built with MTT_WITH_BASELINES 0 */
         st = MTT_ERR_UNSUPPORTED;
     } else {
         for (k = 0; k < sizeof rules / sizeof rules[0] && bad == NULL; ++k) {
@@ -165,49 +162,6 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         *bad_field = bad;
     }
     return st;
-}
-
-mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
-{
-    if (name == NULL) {
-        return MTT_ERR_NULL;
-    }
-    if ((int)a < 0 || (int)a >= (int)MTT_ASSOC_COUNT) {
-        return MTT_ERR_RANGE;
-    }
-    *name = assoc_names[a];
-    return MTT_OK;
-}
-
-/* strcmp(a, b) == 0 without libc's strcmp (0.7 KiB on newlib); the names
- * are short, so at most 16 characters are compared. */
-static int same_text(const char *a, const char *b)
-{
-    int i;
-    for (i = 0; i < 16; ++i) {
-        if (a[i] != b[i]) {
-            return 0;
-        }
-        if (a[i] == '\0') {
-            return 1;
-        }
-    }
-    return 0;
-}
-
-mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
-{
-    int k;
-    if (name == NULL || a == NULL) {
-        return MTT_ERR_NULL;
-    }
-    for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
-        if (same_text(name, assoc_names[k])) {
-            *a = (mtt_assoc)k;
-            return MTT_OK;
-        }
-    }
-    return MTT_ERR_RANGE;
 }
 
 mtt_status mtt_status_text(mtt_status s, const char **text)

@@ -71,9 +71,8 @@ mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p)
 mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, size_t n)
 {
     mtt_real dt = MTT_R(0.0);
+    const mtt_mode *md;
     uint32_t mark;
-    uint16_t c;
-    const mtt_assoc mode = (trk != NULL) ? trk->par.association : MTT_ASSOC_LM_IHPDA;
     if (trk == NULL || (meas == NULL && n > 0u)) {
         return MTT_ERR_NULL;
     }
@@ -86,6 +85,7 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     if (trk->have_time) {
         dt = time - trk->time;
     }
+    md = &mtt_modes[trk->par.association];
     memset(&trk->stats.last, 0, sizeof trk->stats.last);
     memset(trk->stats.stage_cycles, 0, sizeof trk->stats.stage_cycles);
     trk->stats.last.frames = 1;
@@ -96,28 +96,16 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES
-    if (mode == MTT_ASSOC_ADAPTIVE_JPDA) {
+    if (md->shrink_gates) {
         mtt_adaptive_gates(trk); /* per-track gate thresholds (spec 13.7) */
     }
 #endif
     charge(trk, MTT_STAGE_PREDICT, &mark);
     mtt_gate_frame(trk);
     charge(trk, MTT_STAGE_GATE, &mark);
-    mtt_clutter_frame(trk, mode == MTT_ASSOC_LM_IHPDA || mode == MTT_ASSOC_LM_IPDA);
+    mtt_clutter_frame(trk, md->lm);
     charge(trk, MTT_STAGE_LM_CLUTTER, &mark);
-    mtt_cluster_frame(trk);
-    if (mode == MTT_ASSOC_LM_IHPDA) {
-        for (c = 0; c < trk->n_clusters; ++c) {
-            mtt_mmr_cluster(trk, c, 1);
-        }
-    }
-#if MTT_WITH_BASELINES
-    else if (mode == MTT_ASSOC_IHPDA_2D) {
-        mtt_assign2d_frame(trk);
-    } else if (mode >= MTT_ASSOC_JIPDA) {
-        mtt_jpda_frame(trk); /* JIPDA and the JPDA family (spec 13) */
-    }
-#endif
+    mtt_associate_frame(trk);
     charge(trk, MTT_STAGE_ASSOCIATE, &mark);
     mtt_update_frame(trk);
     charge(trk, MTT_STAGE_UPDATE, &mark);

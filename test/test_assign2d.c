@@ -201,6 +201,7 @@ static void test_tv8_optimal_and_final_recomputation(void)
     TV_ASSERT_REAL(1.235805911, sum); /* TV8: sum of beta of the optimal assignment */
     TV_ASSERT_REAL(0.4294519828, trk.pairs[pair_of(0, 0)].beta); /* TV8 initial matrix */
     TV_ASSERT_REAL(0.8063539279, trk.pairs[pair_of(1, 1)].beta);
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
     TV_ASSERT_REAL(0.9923727825, trk.pairs[pair_of(0, 0)].beta); /* TV8 final: T1 beta */
     TV_ASSERT_REAL(0.9828071472, trk.tracks[0].existence);       /* TV8 final: T1 P */

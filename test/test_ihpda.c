@@ -366,6 +366,7 @@ static void test_tv5_row_and_ihpda_mode_update(void)
         TV_ASSERT_REAL_MSG(tv5_beta[k], trk.pairs[k].beta, "TV5 beta_j");
         TV_ASSERT_REAL_MSG(tv5_L[k], trk.pairs[k].L, "TV5 L");
     }
+    mtt_associate_frame(&trk); /* the ihpda selection */
     mtt_update_frame(&trk);
     TEST_ASSERT_EQUAL_INT(1, trk.tf[0].assigned);
     TEST_ASSERT_EQUAL_INT(1, trk.tracks[0].meas);

@@ -153,7 +153,7 @@ static void tv6_tracker(mtt_real clutter_density)
     mtt_gate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(3, trk.tf[0].pair_count);
     mtt_clutter_frame(&trk, 0);
-    mtt_cluster_frame(&trk);
+    mtt_associate_frame(&trk);
     mtt_update_frame(&trk);
 }
 

@@ -346,7 +346,7 @@ static void test_event_bound_fallback(void)
     }
     problem(MTT_ASSOC_JPDA, 5, 8, a, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(-1, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    mtt_jpda_frame(&trk);
+    mtt_associate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
     for (t = 0; t < 5; ++t) {
         for (j = 0; j < 8; ++j) {
@@ -354,7 +354,7 @@ static void test_event_bound_fallback(void)
         }
     }
     problem(MTT_ASSOC_JIPDA, 5, 8, a, 0.0, NULL);
-    mtt_jpda_frame(&trk);
+    mtt_associate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
 }
 

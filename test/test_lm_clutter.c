@@ -110,7 +110,7 @@ static void test_tv8_lm_ipda(void)
         TV_ASSERT_REAL_MSG(ex[t], mtt_existence_update(tf->ex_pred, L), "TV8 LM-IPDA existence");
     }
     /* The same through the update stage in lm-ipda mode. */
-    mtt_cluster_frame(&trk);
+    mtt_associate_frame(&trk);
     mtt_update_frame(&trk);
     TV_ASSERT_REAL(0.9865483275, trk.tracks[0].existence); /* TV8 LM-IPDA T1 */
     TV_ASSERT_REAL(0.8990549324, trk.tracks[1].existence); /* TV8 LM-IPDA T2 */

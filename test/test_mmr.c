@@ -158,6 +158,7 @@ static void test_tv8_final_recomputation(void)
 {
     tv8_tracker();
     mtt_mmr_cluster(&trk, 0, 1);
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
     /* TV8 final: T1 assigned z2, m = 2, beta 0.8856765228, delta -6.305824947 */
     TV_ASSERT_REAL(0.8856765228, trk.pairs[1].beta);
@@ -197,6 +198,7 @@ static void test_tv8_optimal_result_recomputation(void)
     trk.tf[1].assigned = 2; /* (T2, z2) */
     trk.meas[0].used = 1;
     trk.meas[1].used = 1;
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
     TV_ASSERT_REAL(0.9923727825, trk.pairs[0].beta);              /* TV8 optimal T1 beta */
     TV_ASSERT_REAL(-13.29092596, MTT_R(1.0) - trk.pairs[0].L);    /* T1 delta */
