@@ -170,7 +170,8 @@ mtt_status mtt_status_text(mtt_status s, const char **text)
         "ok", "null pointer", "invalid parameter", "tracker not initialised",
         "time not finite or not increasing", "index or count out of range",
         "track table full", "state or covariance not finite or not positive definite",
-        "association mode not built into this version"};
+        "association mode not built into this version",
+        "caller compiled with another configuration than the library"};
     int k = -(int)s;
     if (text == NULL) {
         return MTT_ERR_NULL;

@@ -43,12 +43,18 @@ static void add_counts(mtt_counts *tot, const mtt_counts *c)
 
 /* ---- public ---- */
 
-mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p)
+mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_t tracker_size,
+                                    uint32_t config_id)
 {
     mtt_status st;
     uint16_t m;
     if (trk == NULL || p == NULL) {
         return MTT_ERR_NULL;
+    }
+    /* Before anything is read or written: the caller's mtt_tracker and
+     * mtt_params may have another layout than ours. */
+    if (tracker_size != sizeof(mtt_tracker) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
     st = mtt_params_check(p, NULL);
     if (st != MTT_OK) {

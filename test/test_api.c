@@ -250,6 +250,29 @@ void test_cycle_counter(void)
     }
 }
 
+/* mtt_tracker_init passes the caller's sizeof(mtt_tracker) and
+ * MTT_CONFIG_ID; another size or identity is refused before the tracker or
+ * the parameters are touched (the consumer tests build real mismatches). */
+static void test_init_refuses_other_configuration(void)
+{
+    static mtt_tracker t;
+    mtt_params p;
+    const unsigned char *b = (const unsigned char *)&t;
+    size_t i;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    memset(&t, 0xa5, sizeof t);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_init_checked(&t, &p, sizeof t - 4u, (uint32_t)(MTT_CONFIG_ID)));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_init_checked(&t, &p, sizeof t, (uint32_t)(MTT_CONFIG_ID) ^ 1u));
+    for (i = 0; i < sizeof t; ++i) {
+        TEST_ASSERT_EQUAL_HEX8(0xa5, b[i]);
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_init_checked(NULL, &p, sizeof t, 0u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init_checked(&t, &p, sizeof t, (uint32_t)(MTT_CONFIG_ID)));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&t, &p));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -260,5 +283,6 @@ int main(void)
     RUN_TEST(test_full_table);
     RUN_TEST(test_deterministic);
     RUN_TEST(test_cycle_counter);
+    RUN_TEST(test_init_refuses_other_configuration);
     return UNITY_END();
 }

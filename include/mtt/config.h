@@ -58,6 +58,12 @@
 #define MTT_MAX_JPDA_EVENTS 2048
 #endif
 
+/* Largest state of a motion model (the track table's x and P); the
+ * constant-velocity model needs 4 (x, y, vx, vy). */
+#ifndef MTT_MAX_STATE
+#define MTT_MAX_STATE 4
+#endif
+
 /* 1: build the comparison baselines (ihpda-2d, jipda, the JPDA family).
  * 0: leave them out -- their scratch (mostly the JPDA* event store) leaves
  * the tracker, and those modes report MTT_ERR_UNSUPPORTED.  For firmware
@@ -80,6 +86,13 @@
 #endif
 #if MTT_MAX_MERGE_PAIRS < 1 || MTT_MAX_MERGE_PAIRS > 65535
 #error "MTT_MAX_MERGE_PAIRS must be in [1, 65535]"
+#endif
+
+#if MTT_MAX_STATE < 4 || MTT_MAX_STATE > 9
+#error "MTT_MAX_STATE must be in [4, 9] (the CV model needs 4)"
+#endif
+#if MTT_WITH_BASELINES != 0 && MTT_WITH_BASELINES != 1
+#error "MTT_WITH_BASELINES must be 0 or 1"
 #endif
 
 #if MTT_MAX_ASSIGN_TRACKS < 1 || MTT_MAX_ASSIGN_TRACKS > 255

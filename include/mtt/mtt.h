@@ -32,6 +32,20 @@ extern "C" {
 #define MTT_VERSION_PATCH 0
 #define MTT_VERSION_STRING "0.1.0"
 
+/* The configuration identity: a hash (FNV-1a steps, a constant expression)
+ * of everything that fixes the layout or meaning of the tracker state --
+ * the version major, every bound of mtt/config.h, the size and kind of
+ * mtt_real and the feature switches.  mtt_tracker_init passes the caller's
+ * value, and the library refuses one that differs from its own. */
+#define MTT_CONFIG_MIX_(h, v) ((((uint32_t)(h)) ^ (uint32_t)(v)) * 16777619u)
+#define MTT_CONFIG_ID                                                                              \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                   \
+        MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
+        MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
+        MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real))
+
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
 #else
@@ -48,7 +62,9 @@ typedef enum mtt_status {
     MTT_ERR_RANGE = -5,       /**< an index or count is out of range */
     MTT_ERR_FULL = -6,        /**< the track table is full */
     MTT_ERR_VALUE = -7,       /**< a state or covariance argument is not finite / not positive definite */
-    MTT_ERR_UNSUPPORTED = -8  /**< the association mode is not built into this version */
+    MTT_ERR_UNSUPPORTED = -8, /**< the association mode is not built into this version */
+    MTT_ERR_CONFIG = -9       /**< the caller was compiled with another configuration than the
+                                   library (MTT_CONFIG_ID, sizeof(mtt_tracker)): see mtt_tracker_init */
 } mtt_status;
 
 /** Association mode (FORMATS.md `association`, spec 15.1). */
@@ -374,9 +390,22 @@ MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
 MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
 
 /** Initialise (or reset) a tracker.  Cost: O(MTT_MAX_GATED^2) for the rank table.
- *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
- *          mtt_params_check (the tracker is then left uninitialised). */
-MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p);
+ *  A macro, as zlib's deflateInit: it passes the caller's sizeof(mtt_tracker)
+ *  and MTT_CONFIG_ID, so a program compiled with other bounds, another
+ *  mtt_real or other feature switches than the library it links is refused
+ *  instead of corrupting memory.  Compile the caller with the library's
+ *  definitions (the CMake target mtt::mtt and pkg-config mtt carry them).
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG on a configuration mismatch
+ *          (nothing is written, p is not read); MTT_ERR_PARAM /
+ *          MTT_ERR_UNSUPPORTED as mtt_params_check (the tracker is then left
+ *          uninitialised). */
+#define mtt_tracker_init(trk, p) \
+    mtt_tracker_init_checked((trk), (p), sizeof(mtt_tracker), (uint32_t)(MTT_CONFIG_ID))
+
+/** mtt_tracker_init with the caller's size of mtt_tracker and configuration
+ *  identity given explicitly; call it through the macro. */
+MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p,
+                                                   size_t tracker_size, uint32_t config_id);
 
 /** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).
  *  Bad detections are skipped and counted; beyond MTT_MAX_MEAS the strongest
