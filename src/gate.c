@@ -146,7 +146,6 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_pair np;
             np.track = i;
             np.meas = cm[a];
-            np.d2 = cd[a];
             np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);

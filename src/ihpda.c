@@ -77,7 +77,6 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         c[m].lam = pp->lam;
         c[m].amp = ms->amp;
         c[m].idx = pp->meas;
-        c[m].has_amp = ms->has_amp;
         pk[m] = k;
         ++m;
     }

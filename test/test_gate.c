@@ -102,7 +102,7 @@ static void test_tv3_gate_frame(void)
         const mtt_pair *pp = &trk.pairs[k];
         TEST_ASSERT_EQUAL_UINT(0, pp->track);
         TEST_ASSERT_EQUAL_UINT(want_meas[k], pp->meas);
-        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], pp->d2, "TV3 d2");
+        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], tv_pair_d2(&trk, (uint16_t)k), "TV3 d2");
         TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]], pp->p, "TV3 p");
     }
     /* CSR: each gated measurement lists its one pair, c4 none. */
@@ -157,7 +157,7 @@ static void test_gate_bound_is_inclusive(void)
     TEST_ASSERT_EQUAL_UINT(2, trk.n_pairs);
     TEST_ASSERT_EQUAL_UINT(0, trk.pairs[0].meas);
     TEST_ASSERT_EQUAL_UINT(1, trk.pairs[1].meas);
-    TEST_ASSERT_TRUE(trk.pairs[0].d2 == MTT_R(4.0));
+    TEST_ASSERT_TRUE(tv_pair_d2(&trk, 0) == MTT_R(4.0));
 }
 
 static void test_tv8_two_track_gate_frame(void)
@@ -184,7 +184,7 @@ static void test_tv8_two_track_gate_frame(void)
     for (k = 0; k < 4; ++k) {
         TEST_ASSERT_EQUAL_UINT(pt[k], trk.pairs[k].track);
         TEST_ASSERT_EQUAL_UINT(pm[k], trk.pairs[k].meas);
-        TV_ASSERT_REAL_MSG(d2[k], trk.pairs[k].d2, "TV8 d2");
+        TV_ASSERT_REAL_MSG(d2[k], tv_pair_d2(&trk, (uint16_t)k), "TV8 d2");
         TV_ASSERT_REAL_MSG(pv[k], trk.pairs[k].p, "TV8 p");
     }
     /* TV8 ungated: T1 z3 d2 = 11.79272727, T2 z1 d2 = 14.59322034 > gamma */
@@ -224,8 +224,8 @@ static void test_gate_frame_unsorted_input(void)
     TEST_ASSERT_EQUAL_UINT(2, trk.pairs[1].meas); /* T1 z1 */
     TEST_ASSERT_EQUAL_UINT(0, trk.pairs[2].meas); /* T2 z3 */
     TEST_ASSERT_EQUAL_UINT(1, trk.pairs[3].meas); /* T2 z2 */
-    TV_ASSERT_REAL(1.472727273, trk.pairs[0].d2); /* TV8 T1 z2 */
-    TV_ASSERT_REAL(1.738983051, trk.pairs[2].d2); /* TV8 T2 z3 */
+    TV_ASSERT_REAL(1.472727273, tv_pair_d2(&trk, 0)); /* TV8 T1 z2 */
+    TV_ASSERT_REAL(1.738983051, tv_pair_d2(&trk, 2)); /* TV8 T2 z3 */
 }
 
 int main(void)

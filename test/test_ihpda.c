@@ -174,7 +174,6 @@ static void tv5_setup(struct tv5 *t)
         t->c[j].lam = LAMBDA;
         t->c[j].amp = tv5_amp[j];
         t->c[j].idx = (uint16_t)j;
-        t->c[j].has_amp = 1;
     }
 }
 

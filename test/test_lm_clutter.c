@@ -48,7 +48,7 @@ static void test_tv8_pairs(void)
     for (k = 0; k < 4; ++k) {
         TEST_ASSERT_EQUAL_UINT(pt[k], trk.pairs[k].track);
         TEST_ASSERT_EQUAL_UINT(pm[k], trk.pairs[k].meas);
-        TV_ASSERT_REAL_MSG(tv8_d2[k], trk.pairs[k].d2, "TV8 d2");
+        TV_ASSERT_REAL_MSG(tv8_d2[k], tv_pair_d2(&trk, (uint16_t)k), "TV8 d2");
         TV_ASSERT_REAL_MSG(tv8_p[k], trk.pairs[k].p, "TV8 p");
     }
     TV_ASSERT_REAL(95.96699484, trk.tf[0].vg); /* TV8 T1 V_G */

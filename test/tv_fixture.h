@@ -12,6 +12,28 @@
 #include "mtt_internal.h"
 #include "unity.h"
 
+/* ---- readers: the state a stage test checks, by what it means ---- */
+
+/* d^2 of gated pair k, as the gate computed it (the pair keeps only p). */
+static inline mtt_real tv_pair_d2(const mtt_tracker *trk, uint16_t k)
+{
+    const mtt_pair *pp = &trk->pairs[k];
+    const mtt_track_frame *tf = &trk->tf[pp->track];
+    return mtt_mahal2(tf->Si, trk->meas[pp->meas].x - tf->xp[0], trk->meas[pp->meas].y - tf->xp[1]);
+}
+
+/* Input index of kept measurement i of this frame, and how many are kept. */
+static inline uint32_t tv_meas_src(const mtt_tracker *trk, uint16_t i)
+{
+    return trk->meas[i].src;
+}
+static inline uint16_t tv_meas_count(const mtt_tracker *trk)
+{
+    return trk->n_meas;
+}
+
+/* ---- writers ---- */
+
 /* Initialise trk with p (must succeed); no tracks, no measurements. */
 static inline void tv_init(mtt_tracker *trk, const mtt_params *p)
 {
