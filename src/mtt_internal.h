@@ -5,6 +5,7 @@
 #define MTT_INTERNAL_H
 
 #include "mtt/mtt.h"
+#include "motion.h"
 
 #define MTT_MAGIC 0x4d54545fu /* "MTT_" : set by mtt_tracker_init */
 #define MTT_NONE16 ((uint16_t)0xffffu)
@@ -22,36 +23,36 @@ void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less
  * typed compares, no byte swaps. */
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
-/* ---- kalman.c: CV model and Kalman filter (spec 2, 3, 6) ---- */
-void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4]);
-void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real P[4][4],
-                        mtt_real xp[4], mtt_real Pp[4][4]);
+/* ---- kalman.c: Kalman filter on the motion model of motion.h (spec 3, 6) ---- */
+/* xp = F x, Pp = F P F' + Q through the model, symmetrised (spec 2, 3). */
+void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+                        mtt_cov Pp);
 /* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
  * Returns 0, or -1 when det S is not positive and finite (spec 3). */
-int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
-                     mtt_real Si[3], mtt_real *det, mtt_real K[4][2]);
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
+                     mtt_real K[][2]);
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
 /* PDA update with m measurements (spec 6), K and Si = S^-1 from
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
  * single-measurement update of spec 7.4, and with m = 0, beta0 = 0 it is
  * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (spec 3). */
-void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
-                    const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
-                    const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
-void mtt_sym4(mtt_real P[4][4]);
-/* 1 when all four values are finite. */
-int mtt_finite4(const mtt_real x[4]);
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                    mtt_real beta0, mtt_state x, mtt_cov P);
+void mtt_sym(mtt_cov P);
+/* 1 when the MTT_STATE_N entries of a state are finite. */
+int mtt_state_finite(const mtt_real *x);
 /* 1 when the symmetric P is positive definite with margin: every L D L'
  * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
-int mtt_cov_ok(mtt_real P[4][4], mtt_real rel);
+int mtt_cov_ok(mtt_cov P, mtt_real rel);
 /* Margins: a seeded covariance must leave room for a predict and update;
  * a track whose covariance falls below the per-frame one is numerically
  * invalid and deleted (spec 3, extended to P). */
 #define MTT_SEED_COV_MARGIN (MTT_R(1000.0) * MTT_REAL_EPS)
 #define MTT_FRAME_COV_MARGIN (MTT_R(16.0) * MTT_REAL_EPS)
-/* Solve (A) y = b for a symmetric positive definite 4x4 A by L D L';
- * returns d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
-int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2);
+/* Solve A y = b for a symmetric positive definite A by L D L'; returns
+ * d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
+int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
 
 /* ---- gate.c: gating, gate area, likelihood (spec 4) ---- */
 mtt_real mtt_gate_gamma(mtt_real pg);
@@ -181,8 +182,6 @@ void mtt_update_frame(mtt_tracker *trk);
 
 /* ---- initiate.c: two-point initiation (spec 12.1, 12.2) ---- */
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I);
-/* Two-point covariance [[R, R/dt], [R/dt, 2R/dt^2]] for a full R (spec 12.1). */
-void mtt_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_real P[4][4]);
 /* Velocity/intensity gate of a pair (a at k-1, b at k); 1 = accept. */
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt);
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
@@ -200,8 +199,8 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt);
 
 /* ---- track_table.c: the track table (§12.4) ---- */
 /* Append a track; returns its index or -1 when the table is full. */
-int mtt_track_append(mtt_tracker *trk, const mtt_real x[4], mtt_real P[4][4],
-                     mtt_real existence, int confirmed, int born);
+int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real existence,
+                     int confirmed, int born);
 /* End of frame: delete, confirm, compact. */
 void mtt_track_manage(mtt_tracker *trk);
 

@@ -32,7 +32,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
         tf->shrink = 0;
         tf->pair_first = 0;
         tf->pair_count = 0;
-        tf->valid = (uint8_t)(mtt_finite4(tf->xp) &&
+        tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&
                               mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K) == 0);
     }
 }

@@ -5,8 +5,8 @@
 
 #include "mtt_internal.h"
 
-int mtt_track_append(mtt_tracker *trk, const mtt_real x[4], mtt_real P[4][4],
-                     mtt_real existence, int confirmed, int born)
+int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real existence,
+                     int confirmed, int born)
 {
     mtt_track *t;
     if (trk->n_tracks >= MTT_MAX_TRACKS) {
@@ -58,7 +58,8 @@ void mtt_track_manage(mtt_tracker *trk)
 mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mtt_real P16[16],
                                  uint32_t *id)
 {
-    mtt_real P[4][4];
+    mtt_cov P;
+    mtt_state xs;
     int i, j, idx;
     if (trk == NULL || x == NULL || P16 == NULL) {
         return MTT_ERR_NULL;
@@ -66,12 +67,20 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
     if (trk->magic != MTT_MAGIC) {
         return MTT_ERR_NOT_INIT;
     }
-    if (!mtt_finite4(x)) {
+    /* The public seed is a CV state [x, y, vx, vy] with its 4x4 P. */
+    memset(xs, 0, sizeof xs);
+    memset(P, 0, sizeof P);
+    for (i = 0; i < 4; ++i) {
+        xs[i] = x[i];
+        for (j = 0; j < 4; ++j) {
+            P[i][j] = P16[4 * i + j];
+        }
+    }
+    if (!mtt_state_finite(xs)) {
         return MTT_ERR_VALUE;
     }
-    memcpy(P, P16, sizeof P);
-    for (i = 0; i < 4; ++i) {
-        if (!mtt_finite4(P[i])) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        if (!mtt_state_finite(P[i])) {
             return MTT_ERR_VALUE;
         }
         for (j = 0; j < i; ++j) {
@@ -87,11 +96,11 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
     if (!mtt_cov_ok(P, MTT_SEED_COV_MARGIN)) {
         return MTT_ERR_VALUE;
     }
-    idx = mtt_track_append(trk, x, P, MTT_R(1.0), 1, 0);
+    idx = mtt_track_append(trk, xs, P, MTT_R(1.0), 1, 0);
     if (idx < 0) {
         return MTT_ERR_FULL;
     }
-    mtt_sym4(trk->tracks[idx].P);
+    mtt_sym(trk->tracks[idx].P);
     if (id != NULL) {
         *id = trk->tracks[idx].id;
     }
@@ -113,6 +122,7 @@ mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count)
 mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *view)
 {
     const mtt_track *t;
+    int k;
     if (trk == NULL || view == NULL) {
         return MTT_ERR_NULL;
     }
@@ -125,8 +135,10 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     t = &trk->tracks[i];
     view->id = t->id;
     view->confirmed = t->confirmed;
-    memcpy(view->x, t->x, sizeof view->x);
-    memcpy(view->P, t->P, sizeof view->P);
+    for (k = 0; k < 4; ++k) { /* the CV part: x, y, vx, vy */
+        view->x[k] = t->x[k];
+        memcpy(view->P[k], t->P[k], sizeof view->P[k]);
+    }
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;

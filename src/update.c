@@ -17,9 +17,9 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
     int i, k;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         t->x[i] = tf->xp[i];
-        for (k = 0; k < 4; ++k) {
+        for (k = 0; k < MTT_STATE_N; ++k) {
             t->P[i][k] = tf->Pp[i][k];
         }
     }

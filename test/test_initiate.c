@@ -43,9 +43,9 @@ static void test_tv10_two_point_cov(void)
     const mtt_real R1[3] = {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)};
     const mtt_real R2[3] = {MTT_R(4.0), MTT_R(0.0), MTT_R(9.0)};
     mtt_real P[4][4];
-    mtt_two_point_cov(R1, MTT_R(1.0), P);
+    mtt_motion_two_point_cov(R1, MTT_R(1.0), P);
     TV_ASSERT_MAT4(tv10_P1, P); /* TV10 case 1 P_{2|2} */
-    mtt_two_point_cov(R2, MTT_R(0.5), P);
+    mtt_motion_two_point_cov(R2, MTT_R(0.5), P);
     TV_ASSERT_MAT4(tv10_P2, P); /* TV10 case 2 P_{2|2} */
     /* public wrapper, sigmas (2, 3) */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.5), P));
@@ -60,7 +60,7 @@ static void test_tv10_full_R(void)
     const mtt_real R[3] = {MTT_R(4.0), MTT_R(1.0), MTT_R(9.0)};
     static const double want[16] = {4, 1, 8, 2, 1, 9, 2, 18, 8, 2, 32, 8, 2, 18, 8, 72};
     mtt_real P[4][4];
-    mtt_two_point_cov(R, MTT_R(0.5), P);
+    mtt_motion_two_point_cov(R, MTT_R(0.5), P);
     TV_ASSERT_MAT4(want, P);
 }
 

@@ -16,8 +16,8 @@ extern "C" {
 
 /** A live track. */
 typedef struct mtt_track {
-    mtt_real x[4];
-    mtt_real P[4][4];
+    mtt_real x[MTT_MAX_STATE];    /* the motion model's state (x, y, vx, vy for CV) */
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE];
     mtt_real existence;
     uint32_t id;
     uint32_t age;
@@ -29,14 +29,14 @@ typedef struct mtt_track {
 
 /** Per-frame, per-track scratch (prediction, innovation, gate). */
 typedef struct mtt_track_frame {
-    mtt_real xp[4];
-    mtt_real Pp[4][4];
+    mtt_real xp[MTT_MAX_STATE];
+    mtt_real Pp[MTT_MAX_STATE][MTT_MAX_STATE];
     mtt_real ex_pred;    /* predicted existence (spec 11) */
     mtt_real S[3];       /* innovation covariance s11, s12, s22 */
     mtt_real Si[3];      /* its inverse */
     mtt_real det_s;
     mtt_real vg;         /* gate area (spec 4) */
-    mtt_real K[4][2];    /* Kalman gain */
+    mtt_real K[MTT_MAX_STATE][2]; /* Kalman gain */
     mtt_real lambda;     /* clutter density of this track: known, or estimate (spec 5.2) */
     uint16_t pair_first, pair_count;
     int16_t assigned;    /* pair index chosen, -1 */
