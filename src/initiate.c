@@ -1,6 +1,6 @@
-/* initiate.c - two-point differencing initiation (spec 12.1) with the
+/* initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1) with the
  * velocity gate |z_k - z_k-1| <= vmax dT, or the intensity-based gate of
- * seed 002 (spec 12.2): sigma_P = f(I)/sqrt(gamma), accept when
+ * [S2] (ALGORITHMS.md §12.2): sigma_P = f(I)/sqrt(gamma), accept when
  * d' (sigma_P^2 I + R)^-1 d <= gamma.
  *
  * U_k = measurements of frame k not used by any track; U_k-1 = the same of
@@ -20,7 +20,7 @@ mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
         I = MTT_R(0.0);
     }
     /* f2 is a downward parabola: clamp I at its peak so f never decreases
-     * (seed 002's f2 turns negative above I = 2341; spec 12.2 guards). */
+     * ([S2]'s f2 turns negative above I = 2341; ALGORITHMS.md §12.2 guards). */
     if (f2[0] < MTT_R(0.0)) {
         mtt_real peak = -f2[1] / (MTT_R(2.0) * f2[0]);
         if (I > peak) {
@@ -89,7 +89,7 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
 /* A birth needs a finite state and a positive definite covariance: with an
  * extreme frame interval R/dt^2 underflows to 0 (huge dt, tiny sigma) or
  * the velocity overflows (tiny dt), and such a track would report a
- * singular or infinite P until the next frame deletes it (spec 3).  Not
+ * singular or infinite P until the next frame deletes it (ALGORITHMS.md §3).  Not
  * counted: no track was possible. */
 static int birth_ok(const mtt_state x, mtt_cov P)
 {

@@ -1,9 +1,9 @@
 /* ipda.c - IPDA association probabilities and the IPDA row of a track
- * (spec 6); the association of the ipda and lm-ipda modes.
+ * (ALGORITHMS.md §6); the association of the ipda and lm-ipda modes.
  *
  * Lambda = sum_j p_j / lambda_j, L = 1 - PD PG + PD PG Lambda,
  * beta_j = PD PG (p_j / lambda_j) / L, beta_0 = (1 - PD PG) / L.
- * With lambda_j the LM density lambda~ this is LM-IPDA (spec 8.1). */
+ * With lambda_j the LM density lambda~ this is LM-IPDA (ALGORITHMS.md §8.1). */
 #include "mtt_internal.h"
 
 void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
@@ -44,8 +44,10 @@ void mtt_ipda_track(mtt_tracker *trk, uint16_t ti)
 void mtt_ipda_frame(mtt_tracker *trk)
 {
     uint16_t i;
+    /* An empty gate needs no row: the update keeps the prediction with
+     * L = 1 - PD PG (ALGORITHMS.md §6, m = 0). */
     for (i = 0; i < trk->n_tracks; ++i) {
-        if (trk->tf[i].valid) {
+        if (trk->tf[i].valid && trk->tf[i].pair_count > 0u) {
             mtt_ipda_track(trk, i);
         }
     }

@@ -1,13 +1,13 @@
 /* jpda.c - exact JPDA, JPDA* and JIPDA by event enumeration per cluster
- * (spec 13.1, 13.2, 13.6), and the weights A and B of the whole JPDA
- * family (spec 13).
+ * (ALGORITHMS.md §13.1, §13.2, §13.6), and the weights A and B of the whole JPDA
+ * family (ALGORITHMS.md §13).
  *
- * Weights (spec 13): A_tj = N(nu; 0, S) = PG p_tj for a gated pair, B_t =
+ * Weights (ALGORITHMS.md §13): A_tj = N(nu; 0, S) = PG p_tj for a gated pair, B_t =
  * jpda_bias, or lambda_t (1 - PD PG) / PD when it is 0 (lambda_t the known
- * density, or the track's estimate of spec 5.2).  JIPDA (spec 13.2) uses
+ * density, or the track's estimate of ALGORITHMS.md §5.2).  JIPDA (ALGORITHMS.md §13.2) uses
  * A_tj = PD PG Pbar_t p_tj / lambda_j and B_t = 1 - PD PG Pbar_t.
  *
- * Enumeration (spec 13.1): depth-first over the tracks of the cluster with
+ * Enumeration (ALGORITHMS.md §13.1): depth-first over the tracks of the cluster with
  * an explicit stack and a bit mask of used measurements; for each track
  * "none" first, then its gated measurements ascending.  Event weight
  * w = prod A (detected) * prod B (missed).  Each row (A_t., B_t) is divided
@@ -15,16 +15,16 @@
  * so the normalised probabilities are unchanged and the products cannot
  * underflow in float.  Over MTT_MAX_JPDA_TRACKS tracks, MTT_MAX_JPDA_MEAS
  * measurements or MTT_MAX_JPDA_EVENTS events the cluster falls back
- * (spec 13.1 CHOICE): Cheap JPDA, or per-track IPDA in jipda.
+ * (ALGORITHMS.md §13.1 CHOICE): Cheap JPDA, or per-track IPDA in jipda.
  *
- * JPDA* (spec 13.6): events grouped by (detected tracks, used
+ * JPDA* (ALGORITHMS.md §13.6): events grouped by (detected tracks, used
  * measurements); each group keeps its largest weight (ties: first in
  * enumeration order); kept events with normalised probability below
  * jpda_star_threshold are dropped (unless that drops all); a second
  * enumeration sums the kept ones.
  *
- * Existence (spec 13.2 CHOICE): jipda uses P_t of spec 13.2; every other
- * mode the IPDA formula of spec 6 on the track's own gate (mtt_ipda_frame,
+ * Existence (ALGORITHMS.md §13.2 CHOICE): jipda uses P_t of ALGORITHMS.md §13.2; every other
+ * mode the IPDA formula of ALGORITHMS.md §6 on the track's own gate (mtt_ipda_frame,
  * run by the association stage). */
 #include "mtt_internal.h"
 
@@ -137,7 +137,7 @@ static int next_meas(const mtt_jpda_scratch *s, uint16_t d, int j0)
     return (int)s->m;
 }
 
-/* Enumerate every feasible event in the order of spec 13.6.  record: store
+/* Enumerate every feasible event in the order of ALGORITHMS.md §13.6.  record: store
  * each event (key and weight); kept_only: sum only events with their keep
  * bit.  Returns 0, or -1 beyond MTT_MAX_JPDA_EVENTS.  Each loop pass either
  * moves one option forward or one level back, so the loop is bounded by
@@ -204,7 +204,7 @@ static int enumerate(mtt_jpda_scratch *s, int record, int kept_only)
 }
 
 /* JPDA* order: by group (detected, used), then larger weight, then
- * enumeration order (spec 13.6 tie rule). */
+ * enumeration order (ALGORITHMS.md §13.6 tie rule). */
 static int ev_less(const void *pa, const void *pb, const void *ctx)
 {
     const mtt_jpda_scratch *s = (const mtt_jpda_scratch *)ctx;
@@ -282,7 +282,7 @@ int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
         mtt_real b0 = MTT_R(1.0), norm = MTT_R(0.0);
         if (s->W > MTT_R(0.0)) {
             if (kind == MTT_JPDA_JIPDA) {
-                /* spec 13.2: P_t = D_t + q_t U_t; beta over P_t. */
+                /* ALGORITHMS.md §13.2: P_t = D_t + q_t U_t; beta over P_t. */
                 const mtt_real pb = tf->ex_pred;
                 const mtt_real q = (MTT_R(1.0) - pdpg) * pb / (MTT_R(1.0) - pdpg * pb);
                 mtt_real det = MTT_R(0.0), den, pt;

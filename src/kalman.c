@@ -18,17 +18,6 @@ void mtt_sym(mtt_cov P)
     }
 }
 
-int mtt_state_finite(const mtt_real *x)
-{
-    int i;
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        if (!mtt_isfinite(x[i])) {
-            return 0;
-        }
-    }
-    return 1;
-}
-
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp)
 {
@@ -46,7 +35,7 @@ int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si
     S[2] = Pp[1][1] + R[2];
     d = S[0] * S[2] - S[1] * S[1];
     if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
-        return -1; /* spec 3: the track is numerically invalid */
+        return -1; /* ALGORITHMS.md §3: the track is numerically invalid */
     }
     *det = d;
     Si[0] = S[2] / d;
@@ -102,8 +91,8 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
         x[i] = xp[i] + K[i][0] * cx + K[i][1] * cy;
     }
     /* P = beta0 Pp + (1 - beta0) P_c + K (sum beta nu nu' - nu_c nu_c') K'
-     * (spec 6, S1 Table 2 erratum applied), with the Joseph form
-     * P_c = A Pp A' + K R K', A = I - K H (spec 3).  Both K . K' terms
+     * (ALGORITHMS.md §6, [S1] Table 2 erratum applied), with the Joseph form
+     * P_c = A Pp A' + K R K', A = I - K H (ALGORITHMS.md §3).  Both K . K' terms
      * share one 2x2 middle matrix M = (1 - beta0) R + spread. */
     m11 = w * R[0] + sxx;
     m12 = w * R[1] + sxy;

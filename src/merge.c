@@ -1,4 +1,4 @@
-/* merge.c - track merging (spec 12.3, S0 eq. 17).
+/* merge.c - track merging (ALGORITHMS.md §12.3, [S0] eq. 17).
  *
  * d^2 = (x_a - x_b)' (P_a + P_b)^-1 (x_a - x_b) < t_merge merges.  Only
  * tracks of one cluster are candidates (they share gated measurements

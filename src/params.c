@@ -1,4 +1,4 @@
-/* params.c - parameter defaults (FORMATS.md, seed 000's IR set-up),
+/* params.c - parameter defaults (docs/FORMATS.md, [S0]'s IR set-up),
  * validation that names the first bad field, and the status texts.  The
  * mode names live in the mode table (associate.c). */
 #include <stddef.h>
@@ -29,7 +29,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->initiate = 1;
     p->vmax = MTT_R(60.0);
     p->init_gate = MTT_INIT_GATE_VMAX;
-    /* seed 002, spec 12.2 */
+    /* [S2], ALGORITHMS.md §12.2 */
     p->intensity_f1[0] = MTT_R(-0.0007);
     p->intensity_f1[1] = MTT_R(0.5072);
     p->intensity_f1[2] = MTT_R(39.70);

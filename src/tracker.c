@@ -1,6 +1,7 @@
-/* tracker.c - the per-frame pipeline (spec 15, DESIGN.md stages 1-10) and
- * the tracker's public functions.  This file only sequences the stages;
- * each stage computes in its own file. */
+/* tracker.c - the per-frame pipeline (ALGORITHMS.md §15; docs/DESIGN.md
+ * stages 1-10): mtt_tracker_init, mtt_tracker_step and the statistics.
+ * This file only sequences the stages; each stage computes in its own
+ * file, and the association mode is a row of the mode table (associate.c). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -66,7 +67,7 @@ mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_
     trk->R[0] = p->meas_sigma[0] * p->meas_sigma[0];
     trk->R[1] = MTT_R(0.0);
     trk->R[2] = p->meas_sigma[1] * p->meas_sigma[1];
-    /* rho is a global constant: tabulate P_r(l|m) once (spec 7.2). */
+    /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
     for (m = 1; m <= MTT_MAX_GATED; ++m) {
         mtt_ihpda_prank(m, p->snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
     }
@@ -103,7 +104,7 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES
     if (md->shrink_gates) {
-        mtt_adaptive_gates(trk); /* per-track gate thresholds (spec 13.7) */
+        mtt_adaptive_gates(trk); /* per-track gate thresholds (ALGORITHMS.md §13.7) */
     }
 #endif
     charge(trk, MTT_STAGE_PREDICT, &mark);

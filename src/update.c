@@ -2,13 +2,13 @@
  * update kind of its mode's row (associate.c); the association stage has
  * written every beta.
  *
- * ONE (IHPDA modes, spec 7.4, 10.3): the assigned (or selected) pair with
+ * ONE (IHPDA modes, ALGORITHMS.md §7.4, §10.3): the assigned (or selected) pair with
  * its final beta_s and L_s; existence P = L_s P^/(1-P^+L_s P^); state
  * x = x^ + beta_s K nu_s, P = beta0 P^ + beta_s P_c + beta_s beta0 K nu nu' K'.
- * PDA (IPDA modes spec 6, JPDA family spec 13.8): the PDA update with the
+ * PDA (IPDA modes ALGORITHMS.md §6, JPDA family ALGORITHMS.md §13.8): the PDA update with the
  * beta row and beta_0; existence from the association stage.
- * HARD (NNJPDA, spec 13.5): the Kalman update with the assigned measurement
- * (beta 1, beta0 0); existence from the association stage (spec 13.2).
+ * HARD (NNJPDA, ALGORITHMS.md §13.5): the Kalman update with the assigned measurement
+ * (beta 1, beta0 0); existence from the association stage (ALGORITHMS.md §13.2).
  * A track with no measurement keeps its prediction, with L = 1 - PD PG. */
 #include "mtt_internal.h"
 
@@ -27,7 +27,7 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
     t->meas = -1;
 }
 
-/* Single-measurement update with pair k (spec 7.4). */
+/* Single-measurement update with pair k (ALGORITHMS.md §7.4). */
 static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -46,7 +46,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
 }
 
 /* PDA update with the beta row, beta_0 and existence of the association
- * stage (spec 6, 13.8); the reported measurement is the largest beta. */
+ * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta. */
 static void update_pda(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -68,8 +68,8 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
 
-/* NNJPDA: hard Kalman update with the assigned pair (spec 13.5), or the
- * prediction; existence per spec 13.2 either way. */
+/* NNJPDA: hard Kalman update with the assigned pair (ALGORITHMS.md §13.5), or the
+ * prediction; existence per ALGORITHMS.md §13.2 either way. */
 static void update_nn(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -95,7 +95,7 @@ void mtt_update_frame(mtt_tracker *trk)
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
         if (!tf->valid) {
-            continue; /* deleted by the manager (spec 3) */
+            continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
         if (kind == MTT_UPDATE_ONE) {
             if (tf->assigned < 0) {
@@ -110,7 +110,7 @@ void mtt_update_frame(mtt_tracker *trk)
         } else {
             update_pda(trk, i);
         }
-        /* spec 3 deletes a track whose S is not positive definite; the same
+        /* ALGORITHMS.md §3 deletes a track whose S is not positive definite; the same
          * for its covariance, which float arithmetic can lose for extreme
          * priors (a velocity variance 1e30 beside a position variance of 4:
          * fuzz finding F7).  The manager counts it in numeric_deletions. */

@@ -1,7 +1,7 @@
 /* test_e2e.c - whole-tracker scenarios (end-to-end a-c):
  * deterministic simulated scenes through the public API, asserting tracking
  * outcomes.  Frame counts that the outcome depends on are computed here from
- * the parameters with the spec's existence recursion (spec 6, 7.3, 11),
+ * the parameters with the spec's existence recursion (ALGORITHMS.md §6, §7.3, §11),
  * never hard-coded. */
 #include <math.h>
 #include <string.h>
@@ -31,8 +31,8 @@ static int find_view(uint32_t id, mtt_track_view *out)
 }
 
 /* Frames from birth (existence_init) to confirmation when the target is
- * detected every frame with likelihood ratio L per frame (spec 7.3 m = 1,
- * spec 11): P^ = p11 P, P = L P^ / (1 - P^ + L P^). */
+ * detected every frame with likelihood ratio L per frame (ALGORITHMS.md §7.3 m = 1,
+ * ALGORITHMS.md §11): P^ = p11 P, P = L P^ / (1 - P^ + L P^). */
 static int frames_to_confirm(const mtt_params *p, double L)
 {
     double P = (double)p->existence_init;
@@ -46,7 +46,7 @@ static int frames_to_confirm(const mtt_params *p, double L)
 }
 
 /* Likelihood ratio of a single gated measurement at squared distance d2
- * for innovation determinant detS (spec 7.3, m = 1): A + C with
+ * for innovation determinant detS (ALGORITHMS.md §7.3, m = 1): A + C with
  * A = PD PG p / lambda, C = 1 - PD PG. */
 static double single_L(const mtt_params *p, double d2, double detS)
 {
@@ -257,7 +257,7 @@ void test_disappearing_target_deleted(void)
             TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
             TEST_ASSERT_TRUE(v.confirmed);
             id = v.id;
-            /* Empty frames: P^ = p11 P, L = 1 - PD PG (spec 7.4 m = 0). */
+            /* Empty frames: P^ = p11 P, L = 1 - PD PG (ALGORITHMS.md §7.4 m = 0). */
             P = (double)v.existence;
             while (P >= (double)p.terminate_threshold) {
                 double Pb = (double)p.markov_p11 * P, L = 1.0 - (double)p.pd * (double)p.pg;

@@ -1,5 +1,5 @@
-/* test_initiate.c - two-point differencing initiation (spec 12.1, TV10) and
- * the intensity-based initial gate f(I) (spec 12.2, TV12). */
+/* test_initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1, TV10) and
+ * the intensity-based initial gate f(I) (ALGORITHMS.md §12.2, TV12). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -88,7 +88,7 @@ static void run_initiate(mtt_real ax, mtt_real ay, mtt_real bx, mtt_real by, mtt
 {
     trk.n_prev = 0;
     trk.prev[trk.n_prev++] = ms(ax, ay, MTT_R(0.0), 0);
-    trk.n_meas = 0;
+    TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, bx, by, MTT_R(0.0), 0);
     mtt_initiate_frame(&trk, dt);
 }
@@ -99,25 +99,25 @@ static void test_tv10_initiate_frame(void)
     static const double x2[4] = {14, 17, 8, -6};     /* TV10 case 2 x_{2|2} */
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(130.0), MTT_R(190.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_tracks);
-    TV_ASSERT_VEC(x1, trk.tracks[0].x, 4);
-    TV_ASSERT_MAT4(tv10_P1, trk.tracks[0].P);
-    TV_ASSERT_REAL(0.1, trk.tracks[0].existence); /* existence_init default 0.1 (S0) */
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].confirmed);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].born);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[0].used);   /* started a track */
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_TRACKS(&trk));
+    TV_ASSERT_VEC(x1, TV_X(&trk, 0), 4);
+    TV_ASSERT_MAT4(tv10_P1, TV_P(&trk, 0));
+    TV_ASSERT_REAL(0.1, TV_EXISTENCE(&trk, 0)); /* existence_init default 0.1 (S0) */
+    TEST_ASSERT_EQUAL_UINT(0, TV_CONFIRMED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_TRACK(&trk, 0)->born);
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));   /* started a track */
     TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);          /* so not in U_{k-1} next frame */
-    TEST_ASSERT_EQUAL_UINT(1, trk.stats.last.births);
+    TEST_ASSERT_EQUAL_UINT(1, TV_STATS(&trk).last.births);
 
     init_with(MTT_R(2.0), MTT_R(3.0), MTT_R(12.0));
     run_initiate(MTT_R(10.0), MTT_R(20.0), MTT_R(14.0), MTT_R(17.0), MTT_R(0.5));
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_tracks);
-    TV_ASSERT_VEC(x2, trk.tracks[0].x, 4);
-    TV_ASSERT_MAT4(tv10_P2, trk.tracks[0].P);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_TRACKS(&trk));
+    TV_ASSERT_VEC(x2, TV_X(&trk, 0), 4);
+    TV_ASSERT_MAT4(tv10_P2, TV_P(&trk, 0));
 
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(150.0), MTT_R(240.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);        /* TV10 case 3: initiate = false */
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));        /* TV10 case 3: initiate = false */
     TEST_ASSERT_EQUAL_UINT(1, trk.n_prev);          /* z_k is kept for the next frame */
     TV_ASSERT_REAL(150.0, trk.prev[0].x);
 }
@@ -127,17 +127,17 @@ static void test_initiate_skips_used_and_disabled(void)
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     trk.n_prev = 0;
     trk.prev[trk.n_prev++] = ms(MTT_R(100.0), MTT_R(200.0), MTT_R(0.0), 0);
-    trk.n_meas = 0;
+    TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, MTT_R(130.0), MTT_R(190.0), MTT_R(0.0), 0);
-    trk.meas[0].used = 1; /* assigned to a track: not in U_k */
+    TV_USED(&trk, 0) = 1; /* assigned to a track: not in U_k */
     mtt_initiate_frame(&trk, MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
     TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);
 
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     trk.par.initiate = 0;
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(130.0), MTT_R(190.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
 }
 
 static void test_tv10_public_api(void)

@@ -1,5 +1,5 @@
 /* test_ipda.c - IPDA on the TV5 inputs (TV6): betas, delta, existence,
- * PDA state update, and the non-parametric clutter density (spec 5.2, 6). */
+ * PDA state update, and the non-parametric clutter density (ALGORITHMS.md §5.2, §6). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -85,7 +85,7 @@ static void test_tv6_betas_and_existence(void)
     for (j = 0; j < 3; ++j) {
         sum += (double)beta[j];
     }
-    TV_ASSERT_REAL(1.0, sum); /* spec 6: beta_0 + sum beta_j = 1 */
+    TV_ASSERT_REAL(1.0, sum); /* ALGORITHMS.md §6: beta_0 + sum beta_j = 1 */
     TV_ASSERT_REAL(tv6_ex, mtt_existence_update(MTT_R(0.6), L)); /* TV6 P(exist|Z^k) */
 }
 
@@ -151,7 +151,7 @@ static void tv6_tracker(mtt_real clutter_density)
     }
     (void)tv_add_meas(&trk, MTT_R(118.0), MTT_R(38.0), MTT_R(1.0), 1); /* TV3 c4: outside */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(3, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT(3, TV_PAIR_COUNT(&trk, 0));
     mtt_clutter_frame(&trk, 0);
     mtt_associate_frame(&trk);
     mtt_update_frame(&trk);
@@ -160,23 +160,23 @@ static void tv6_tracker(mtt_real clutter_density)
 static void test_tv6_ipda_mode_known_lambda(void)
 {
     tv6_tracker(LAMBDA);
-    TV_ASSERT_REAL(0.002, trk.tf[0].lambda);
-    TV_ASSERT_VEC(tv6_x, trk.tracks[0].x, 4);            /* TV6 x_upd */
-    TV_ASSERT_MAT4(tv6_P, trk.tracks[0].P);              /* TV6 P_upd */
-    TV_ASSERT_REAL(tv6_ex, trk.tracks[0].existence);     /* TV6 P(exist|Z^k) */
-    TEST_ASSERT_EQUAL_INT(0, trk.tracks[0].meas);        /* largest beta: z1 */
+    TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 0));
+    TV_ASSERT_VEC(tv6_x, TV_X(&trk, 0), 4);            /* TV6 x_upd */
+    TV_ASSERT_MAT4(tv6_P, TV_P(&trk, 0));              /* TV6 P_upd */
+    TV_ASSERT_REAL(tv6_ex, TV_EXISTENCE(&trk, 0));     /* TV6 P(exist|Z^k) */
+    TEST_ASSERT_EQUAL_INT(0, TV_TRACK_MEAS(&trk, 0));        /* largest beta: z1 */
     /* PDA modes: gated measurements are used, the ungated one is not. */
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[0].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[2].used);
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[3].used);
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 3));
 }
 
 static void test_tv6_ipda_mode_estimated_lambda(void)
 {
     tv6_tracker(MTT_R(0.0));
-    TV_ASSERT_REAL(tv6_lamhat, trk.tf[0].lambda);        /* TV6 lambda_hat */
-    TV_ASSERT_REAL(tv6_lamhat, trk.pairs[1].lam);
-    TV_ASSERT_REAL(tv6h_ex, trk.tracks[0].existence);    /* TV6 with lambda_hat */
+    TV_ASSERT_REAL(tv6_lamhat, TV_LAMBDA(&trk, 0));        /* TV6 lambda_hat */
+    TV_ASSERT_REAL(tv6_lamhat, TV_PAIR_LAM(&trk, 1));
+    TV_ASSERT_REAL(tv6h_ex, TV_EXISTENCE(&trk, 0));    /* TV6 with lambda_hat */
 }
 
 int main(void)

@@ -1,6 +1,6 @@
 /* test_kalman.c - CV model, Kalman predict / innovation / Joseph update,
  * PDA combination with one measurement, Cholesky quadratic form.
- * Expected numbers: test_vectors.md TV1, TV2 (and TV11 for chol4). */
+ * Expected numbers: docs/TEST_VECTORS.md TV1, TV2 (and TV11 for chol4). */
 #include <string.h>
 
 #include "mtt_internal.h"

@@ -30,7 +30,7 @@ static void test_cap_keeps_strongest_in_input_order(void)
     sim_amplitude_permutation(many, n);
     mtt_measure_select(&trk, many, n);
     TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
-    TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, trk.stats.last.meas_dropped);
+    TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, TV_STATS(&trk).last.meas_dropped);
     for (i = 0; i < MTT_MAX_MEAS; ++i) {
         const uint32_t src = tv_meas_src(&trk, (uint16_t)i);
         TEST_ASSERT_TRUE((src * 7u) % n >= 2u * MTT_MAX_MEAS);
@@ -62,7 +62,7 @@ static void test_bad_detections_skipped(void)
     mtt_meas m[7];
     sim_bad_mix(m);
     mtt_measure_select(&trk, m, 7);
-    TEST_ASSERT_EQUAL_UINT32(5u, trk.stats.last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT(2u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(4u, tv_meas_src(&trk, 0));
     TEST_ASSERT_EQUAL_UINT32(5u, tv_meas_src(&trk, 1));

@@ -1,4 +1,4 @@
-/* test_params.c - defaults (FORMATS.md table), validation naming the first
+/* test_params.c - defaults (docs/FORMATS.md table), validation naming the first
  * bad field, association names, unsupported modes. */
 #include <string.h>
 
@@ -34,7 +34,7 @@ static void test_defaults_match_formats_table(void)
     TEST_ASSERT_TRUE(p.initiate != 0);
     TV_ASSERT_REAL(60.0, p.vmax);
     TEST_ASSERT_EQUAL_INT(MTT_INIT_GATE_VMAX, p.init_gate);
-    /* seed 002 coefficients (spec 12.2) */
+    /* [S2] coefficients (ALGORITHMS.md §12.2) */
     TV_ASSERT_REAL(-0.0007, p.intensity_f1[0]);
     TV_ASSERT_REAL(0.5072, p.intensity_f1[1]);
     TV_ASSERT_REAL(39.70, p.intensity_f1[2]);
@@ -275,7 +275,7 @@ static void test_assoc_names_round_trip(void)
 {
     static const char *const names[MTT_ASSOC_COUNT] = {
         "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
-        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"}; /* FORMATS.md */
+        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"}; /* docs/FORMATS.md */
     int a;
     for (a = 0; a < (int)MTT_ASSOC_COUNT; ++a) {
         const char *name = NULL;

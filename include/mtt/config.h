@@ -39,13 +39,13 @@
 #endif
 
 /* Tracks of one cluster solved by the optimal 2-D assignment (ihpda-2d,
- * spec 10.2); larger clusters fall back to MMR (counted in the stats). */
+ * ALGORITHMS.md §10.2); larger clusters fall back to MMR (counted in the stats). */
 #ifndef MTT_MAX_ASSIGN_TRACKS
 #define MTT_MAX_ASSIGN_TRACKS 16
 #endif
 
 /* Exact JPDA enumeration (jpda, jipda, nnjpda, jpda-star, adaptive-jpda,
- * spec 13.1, 16): tracks and measurements of one cluster, and feasible
+ * ALGORITHMS.md §13.1, §16): tracks and measurements of one cluster, and feasible
  * joint events.  Beyond any of them the cluster falls back (counted in the
  * stats): to Cheap JPDA, or to per-track IPDA in jipda. */
 #ifndef MTT_MAX_JPDA_TRACKS
@@ -82,7 +82,7 @@
 #error "MTT_MAX_PAIRS must be in [1, 65535]"
 #endif
 #if MTT_MAX_GATED < 1 || MTT_MAX_GATED > 64
-#error "MTT_MAX_GATED must be in [1, 64] (rank probabilities are verified to 64, spec 7.2)"
+#error "MTT_MAX_GATED must be in [1, 64] (rank probabilities are verified to 64, ALGORITHMS.md §7.2)"
 #endif
 #if MTT_MAX_MERGE_PAIRS < 1 || MTT_MAX_MERGE_PAIRS > 65535
 #error "MTT_MAX_MERGE_PAIRS must be in [1, 65535]"
@@ -102,7 +102,7 @@
 #error "MTT_MAX_JPDA_TRACKS must be in [1, 16] (detected-track bit mask)"
 #endif
 #if MTT_MAX_JPDA_MEAS < 1 || MTT_MAX_JPDA_MEAS > 32
-#error "MTT_MAX_JPDA_MEAS must be in [1, 32] (used-measurement bit mask, spec 13.1)"
+#error "MTT_MAX_JPDA_MEAS must be in [1, 32] (used-measurement bit mask, ALGORITHMS.md §13.1)"
 #endif
 #if MTT_MAX_JPDA_EVENTS < 1 || MTT_MAX_JPDA_EVENTS > 65535
 #error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"

@@ -4,7 +4,7 @@
  * LM-IHPDA association (or IPDA, LM-IPDA, IHPDA, IHPDA with optimal 2-D
  * assignment, JIPDA and the JPDA family), MMR assignment, Markov
  * existence, two-point initiation, merging, confirm/delete.  The algorithm
- * reference is ALGORITHMS.md ("spec"); section numbers below point into it.
+ * reference is docs/ALGORITHMS.md; "§N" below is its section N.
  *
  * Memory: all state is one caller-allocated mtt_tracker whose size is fixed
  * by mtt/config.h.  No allocation, no I/O, no clocks, no hidden statics: the
@@ -67,32 +67,32 @@ typedef enum mtt_status {
                                    library (MTT_CONFIG_ID, sizeof(mtt_tracker)): see mtt_tracker_init */
 } mtt_status;
 
-/** Association mode (FORMATS.md `association`, spec 15.1). */
+/** Association mode (docs/FORMATS.md `association`, ALGORITHMS.md §15.1). */
 typedef enum mtt_assoc {
-    MTT_ASSOC_LM_IHPDA = 0, /**< LM-IHPDA with MMR (default, spec 7, 8, 10.1, 10.3) */
-    MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (spec 7.4) */
-    MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (spec 6, 8) */
-    MTT_ASSOC_IPDA,         /**< IPDA per track (spec 6) */
-    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment per cluster, plain lambda (spec 10.2, 10.3);
+    MTT_ASSOC_LM_IHPDA = 0, /**< LM-IHPDA with MMR (default, ALGORITHMS.md §7, §8, §10.1, §10.3) */
+    MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (ALGORITHMS.md §7.4) */
+    MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (ALGORITHMS.md §6, §8) */
+    MTT_ASSOC_IPDA,         /**< IPDA per track (ALGORITHMS.md §6) */
+    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment per cluster, plain lambda (ALGORITHMS.md §10.2, §10.3);
                                  clusters over MTT_MAX_ASSIGN_TRACKS use MMR (counts.assign_fallbacks) */
-    MTT_ASSOC_JIPDA,        /**< JIPDA: exact enumeration, beta and existence (spec 13.2); clusters over
+    MTT_ASSOC_JIPDA,        /**< JIPDA: exact enumeration, beta and existence (ALGORITHMS.md §13.2); clusters over
                                  the MTT_MAX_JPDA_* bounds use per-track IPDA (counts.jpda_fallbacks) */
-    MTT_ASSOC_JPDA,         /**< exact JPDA (spec 13.1); over the bounds Cheap JPDA (counts.jpda_fallbacks) */
-    MTT_ASSOC_CHEAP_JPDA,   /**< Cheap JPDA, rows normalised (spec 13.3) */
-    MTT_ASSOC_SUBOPT_JPDA,  /**< Suboptimal JPDA with the per-track B_t (spec 13.4) */
-    MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (spec 13.5) */
-    MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (spec 13.6) */
-    MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (spec 13.7) */
+    MTT_ASSOC_JPDA,         /**< exact JPDA (ALGORITHMS.md §13.1); over the bounds Cheap JPDA (counts.jpda_fallbacks) */
+    MTT_ASSOC_CHEAP_JPDA,   /**< Cheap JPDA, rows normalised (ALGORITHMS.md §13.3) */
+    MTT_ASSOC_SUBOPT_JPDA,  /**< Suboptimal JPDA with the per-track B_t (ALGORITHMS.md §13.4) */
+    MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (ALGORITHMS.md §13.5) */
+    MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (ALGORITHMS.md §13.6) */
+    MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (ALGORITHMS.md §13.7) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
 
-/** Initial (two-point) velocity gate (spec 12.1, 12.2). */
+/** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
 typedef enum mtt_init_gate {
     MTT_INIT_GATE_VMAX = 0,     /**< |z_k - z_{k-1}| <= vmax * dT */
-    MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) (seed 002) */
+    MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) ([S2]) */
 } mtt_init_gate;
 
-/** Stages whose cost the optional cycle counter measures (DESIGN.md). */
+/** Stages whose cost the optional cycle counter measures (docs/DESIGN.md). */
 typedef enum mtt_stage {
     MTT_STAGE_VALIDATE = 0,
     MTT_STAGE_PREDICT,
@@ -109,14 +109,14 @@ typedef enum mtt_stage {
 /** A user cycle counter: returns a free-running count (wraps modulo 2^32). */
 typedef uint32_t (*mtt_cycle_fn)(void *ctx);
 
-/** Tracker parameters; mtt_params_default gives FORMATS.md's defaults. */
+/** Tracker parameters; mtt_params_default gives docs/FORMATS.md's defaults. */
 typedef struct mtt_params {
     mtt_assoc association;      /**< default MTT_ASSOC_LM_IHPDA */
     mtt_real process_psd;       /**< Sw of the CV model, > 0 (default 5) */
     mtt_real meas_sigma[2];     /**< sx, sy in [1e-9, 1e9] (default 1, 1): sigma^2 stays a normal float */
     mtt_real pd;                /**< detection probability in (0, 1] (default 0.9); PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability in (0, 1) (default 0.999) */
-    mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (spec 5.2) (default 0) */
+    mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (ALGORITHMS.md §5.2) (default 0) */
     mtt_real snr_rho;           /**< rho in [0, 1e6]; 0 ignores amplitude (default 0) */
     mtt_real markov_p11;        /**< in [0, 1] (default 0.98) */
     mtt_real markov_p21;        /**< in [0, 1] (default 0) */
@@ -127,10 +127,10 @@ typedef struct mtt_params {
     int initiate;               /**< nonzero: start tracks from unused measurements (default 1) */
     mtt_real vmax;              /**< > 0, length per time (default 60) */
     mtt_init_gate init_gate;    /**< default MTT_INIT_GATE_VMAX */
-    mtt_real intensity_f1[3];   /**< f1(I) = a2 I^2 + a1 I + a0 (default seed 002) */
-    mtt_real intensity_f2[3];   /**< f2(I) (default seed 002) */
+    mtt_real intensity_f1[3];   /**< f1(I) = a2 I^2 + a1 I + a0 (default [S2]) */
+    mtt_real intensity_f2[3];   /**< f2(I) (default [S2]) */
     mtt_real intensity_blend[2];/**< I_lo < I_hi of the f1/f2 blend (default 150, 250) */
-    mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (spec 13) */
+    mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (ALGORITHMS.md §13) */
     mtt_real jpda_star_threshold;   /**< JPDA* pruning probability in [0, 1) (default 0) */
     mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta in [0, 1) (default 0) */
     mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas, > 0 (default 9) */
@@ -166,13 +166,13 @@ typedef struct mtt_counts {
     uint32_t pairs;           /**< gated pairs kept */
     uint32_t pairs_dropped;   /**< gated, but beyond MTT_MAX_PAIRS (least likely dropped) */
     uint32_t gated_dropped;   /**< gated, but beyond MTT_MAX_GATED in one gate (largest d^2 dropped) */
-    uint32_t clusters;        /**< clusters formed (spec 9) */
+    uint32_t clusters;        /**< clusters formed (ALGORITHMS.md §9) */
     uint32_t births;          /**< tentative tracks started */
     uint32_t births_dropped;  /**< pairs that passed the velocity gate with the table full */
     uint32_t merges;          /**< tracks removed by merging */
     uint32_t merge_dropped;   /**< merge candidates beyond MTT_MAX_MERGE_PAIRS */
     uint32_t deletions;       /**< tracks deleted on existence */
-    uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (spec 3) */
+    uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (ALGORITHMS.md §3) */
     uint32_t confirmations;   /**< tracks confirmed */
     uint32_t assign_fallbacks;/**< ihpda-2d clusters over MTT_MAX_ASSIGN_TRACKS, resolved by MMR */
     uint32_t jpda_fallbacks;  /**< clusters over the exact-JPDA bounds (tracks, measurements, events):
@@ -195,7 +195,7 @@ typedef struct mtt_stats {
  * Functions
  * ---------------------------------------------------------------------- */
 
-/** Fill p with FORMATS.md's defaults (seed 000's IR set-up).
+/** Fill p with docs/FORMATS.md's defaults ([S0]'s IR set-up).
  *  @return MTT_OK; MTT_ERR_NULL if p is NULL. */
 MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
 
@@ -236,6 +236,13 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_p
  *  O(pairs), Cheap / Suboptimal JPDA O(pairs * neighbouring tracks),
  *  ihpda-2d O(t^3) up to MTT_MAX_ASSIGN_TRACKS, the exact JPDA family and
  *  JIPDA O(events) up to MTT_MAX_JPDA_EVENTS (then the counted fallback).
+ *  Overflow (counted in the stats): beyond MTT_MAX_MEAS a heap keeps the
+ *  strongest, O(n log MTT_MAX_MEAS); but the other caps let the worst entry
+ *  give way by a linear scan, so each entry over a cap costs a scan of it:
+ *  O(MTT_MAX_PAIRS) per pair beyond MTT_MAX_PAIRS, O(MTT_MAX_GATED) per
+ *  measurement beyond a full gate, O(MTT_MAX_MERGE_PAIRS) per merge
+ *  candidate beyond it.  A frame that overflows MTT_MAX_PAIRS by e pairs
+ *  thus costs up to e * MTT_MAX_PAIRS more: size the bounds for the scene.
  *  Every loop is bounded by config.h; nothing allocates or recurses.
  *  @return MTT_OK; MTT_ERR_NULL (trk NULL, or meas NULL with n > 0);
  *          MTT_ERR_NOT_INIT; MTT_ERR_TIME if time is not finite or not greater
@@ -243,7 +250,7 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_p
 MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
                                            const mtt_meas *meas, size_t n);
 
-/** Add a known (seeded) track: confirmed, existence 1 (FORMATS.md initial_tracks).
+/** Add a known (seeded) track: confirmed, existence 1 (docs/FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16
  *         values; pass &P[0][0] for a mtt_real[4][4]), symmetric (to 1e-6
  *         relative) and positive definite with room for rounding: every
@@ -270,17 +277,17 @@ MTT_MUST_CHECK mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i,
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_NOT_INIT. */
 MTT_MUST_CHECK mtt_status mtt_tracker_stats(const mtt_tracker *trk, mtt_stats *stats);
 
-/** The two-point initial covariance of spec 12.1 for measurement sigmas
+/** The two-point initial covariance of ALGORITHMS.md §12.1 for measurement sigmas
  *  (sx, sy) and frame interval dt > 0: [[R, R/dt], [R/dt, 2R/dt^2]].
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if an argument is not finite
  *          or not positive. */
 MTT_MUST_CHECK mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt,
                                                  mtt_real P[4][4]);
 
-/** Name of an association mode as FORMATS.md spells it ("lm-ihpda", ...). */
+/** Name of an association mode as docs/FORMATS.md spells it ("lm-ihpda", ...). */
 MTT_MUST_CHECK mtt_status mtt_assoc_name(mtt_assoc a, const char **name);
 
-/** Parse a FORMATS.md association name.
+/** Parse a docs/FORMATS.md association name.
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the name is unknown. */
 MTT_MUST_CHECK mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a);
 

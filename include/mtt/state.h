@@ -31,35 +31,35 @@ typedef struct mtt_track {
 typedef struct mtt_track_frame {
     mtt_real xp[MTT_MAX_STATE];
     mtt_real Pp[MTT_MAX_STATE][MTT_MAX_STATE];
-    mtt_real ex_pred;    /* predicted existence (spec 11) */
+    mtt_real ex_pred;    /* predicted existence (ALGORITHMS.md §11) */
     mtt_real S[3];       /* innovation covariance s11, s12, s22 */
     mtt_real Si[3];      /* its inverse */
     mtt_real det_s;
-    mtt_real vg;         /* gate area (spec 4) */
+    mtt_real vg;         /* gate area (ALGORITHMS.md §4) */
     mtt_real K[MTT_MAX_STATE][2]; /* Kalman gain */
-    mtt_real lambda;     /* clutter density of this track: known, or estimate (spec 5.2) */
+    mtt_real lambda;     /* clutter density of this track: known, or estimate (ALGORITHMS.md §5.2) */
     uint16_t pair_first, pair_count;
     int16_t assigned;    /* pair index chosen, -1 */
     uint16_t cluster;
     int16_t best;        /* MMR: pair index of the row's best beta, -1 */
     uint8_t row_m;       /* candidates of the last IHPDA row computed (its m) */
     mtt_real best_beta;  /* MMR: that beta */
-    mtt_real beta0;      /* JPDA family: beta of "no measurement" (spec 13) */
-    mtt_real ex_post;    /* JPDA family: updated existence (spec 13.2) */
+    mtt_real beta0;      /* JPDA family: beta of "no measurement" (ALGORITHMS.md §13) */
+    mtt_real ex_post;    /* JPDA family: updated existence (ALGORITHMS.md §13.2) */
     uint8_t has_all_amp; /* every gated measurement has an amplitude */
     uint8_t valid;       /* S positive definite */
-    uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (spec 13.7) */
+    uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (ALGORITHMS.md §13.7) */
 } mtt_track_frame;
 
 /** A gated (track, measurement) pair. */
 typedef struct mtt_pair {
     uint16_t track;      /* index into the track table */
     uint16_t meas;       /* index into the frame's measurement store */
-    mtt_real p;          /* gate-normalised likelihood N/PG (spec 4) */
-    mtt_real w;          /* LM weight p * Pt / (1 - Pt) (spec 8.2) */
+    mtt_real p;          /* gate-normalised likelihood N/PG (ALGORITHMS.md §4) */
+    mtt_real w;          /* LM weight p * Pt / (1 - Pt) (ALGORITHMS.md §8.2) */
     mtt_real lam;        /* clutter density this track sees for this measurement */
     mtt_real beta;       /* association probability of the current row */
-    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (spec 7.3) */
+    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (ALGORITHMS.md §7.3) */
 } mtt_pair;
 
 /** A measurement kept for this frame (or the previous one, for initiation). */
@@ -95,7 +95,7 @@ typedef struct mtt_row_scratch {
     (((MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) < MTT_MAX_MEAS ? (MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) \
                                                              : MTT_MAX_MEAS) + MTT_MAX_ASSIGN_TRACKS)
 
-/** Scratch of the optimal 2-D assignment (spec 10.2), one cluster at a time. */
+/** Scratch of the optimal 2-D assignment (ALGORITHMS.md §10.2), one cluster at a time. */
 typedef struct mtt_assign_scratch {
     mtt_real u[MTT_MAX_ASSIGN_TRACKS + 1];  /* row potentials */
     mtt_real v[MTT_ASSIGN_COLS + 1];        /* column potentials */
@@ -109,7 +109,7 @@ typedef struct mtt_assign_scratch {
     int16_t col_row[MTT_MAX_ASSIGN_TRACKS]; /* result: column of each row, -1 */
 } mtt_assign_scratch;
 
-/** Scratch of the JPDA family (spec 13): per-frame weights, one dense
+/** Scratch of the JPDA family (ALGORITHMS.md §13): per-frame weights, one dense
  *  cluster, the explicit depth-first stack and the events of the last
  *  enumeration (JPDA* grouping). */
 typedef struct mtt_jpda_scratch {
@@ -142,7 +142,7 @@ typedef struct mtt_jpda_scratch {
     uint8_t ev_keep[(MTT_MAX_JPDA_EVENTS + 7) / 8];
 } mtt_jpda_scratch;
 
-/** A track pair that passed the merge test (spec 12.3). */
+/** A track pair that passed the merge test (ALGORITHMS.md §12.3). */
 typedef struct mtt_merge_cand {
     mtt_real d2;
     uint16_t a, b;       /* track indices, a < b */
@@ -154,7 +154,7 @@ typedef struct mtt_tracker {
     mtt_params par;
     mtt_real gamma;                 /* gate threshold from pg */
     mtt_real R[3];                  /* measurement covariance (sym) */
-    mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), spec 7.2 */
+    mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */
     mtt_real time;
     uint8_t have_time;
     uint32_t next_id;
@@ -185,7 +185,7 @@ typedef struct mtt_tracker {
         mtt_jpda_scratch jp;        /* JIPDA and the JPDA family */
     } base;
 #endif
-    /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
+    /* previous frame's unused measurements (U_{k-1}, ALGORITHMS.md §12.1) */
     uint16_t n_prev;
     mtt_mstore prev[MTT_MAX_MEAS];
     uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
