@@ -6,18 +6,17 @@
  * With lambda_j the LM density lambda~ this is LM-IPDA (ALGORITHMS.md §8.1). */
 #include "mtt_internal.h"
 
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
-                    uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L)
+void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L)
 {
     const mtt_real pdpg = pd * pg;
     mtt_real big = MTT_R(0.0), l;
     uint16_t j;
     for (j = 0; j < m; ++j) {
-        big += p[j] / lam[j];
+        big += pp[j].p / pp[j].lam;
     }
     l = MTT_R(1.0) - pdpg + pdpg * big;
     for (j = 0; j < m; ++j) {
-        beta[j] = pdpg * (p[j] / lam[j]) / l;
+        pp[j].beta = pdpg * (pp[j].p / pp[j].lam) / l;
     }
     *beta0 = (MTT_R(1.0) - pdpg) / l;
     *L = l;
@@ -26,18 +25,8 @@ void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real 
 void mtt_ipda_track(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track_frame *tf = &trk->tf[ti];
-    const mtt_pair *pp = &trk->pairs[tf->pair_first];
-    const uint16_t m = tf->pair_count;
     mtt_real L;
-    uint16_t j;
-    for (j = 0; j < m; ++j) {
-        trk->row.p[j] = pp[j].p;
-        trk->row.lam[j] = pp[j].lam;
-    }
-    mtt_ipda_betas(trk->par.pd, trk->par.pg, trk->row.p, trk->row.lam, m, trk->row.beta, &tf->beta0, &L);
-    for (j = 0; j < m; ++j) {
-        trk->pairs[tf->pair_first + j].beta = trk->row.beta[j];
-    }
+    mtt_ipda_betas(trk->par.pd, trk->par.pg, &trk->pairs[tf->pair_first], tf->pair_count, &tf->beta0, &L);
     tf->ex_post = mtt_existence_update(tf->ex_pred, L);
 }
 

@@ -93,10 +93,11 @@ void mtt_ihpda_select_frame(mtt_tracker *trk);
 void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
-                    uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L);
+/* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
+ * beta; beta_0 and L. */
+void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L);
 /* IPDA row of track ti over its gate: pair.beta, tf.beta0 and the updated
- * existence tf.ex_post.  The one place that gathers a gate for IPDA. */
+ * existence tf.ex_post. */
 void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
 /* mtt_ipda_track for every valid track with a non-empty gate: the ipda /
  * lm-ipda association. */

@@ -264,7 +264,7 @@ static void test_tv5_m1_any_rho_equals_ipda(void)
     TV_ASSERT_REAL(0.9115326816, mtt_existence_update(MTT_R(0.6), L[0]));
     mtt_ihpda_betas(PD, PG, t.vg, NULL, t.c, 1, beta, L, NULL); /* no intensity */
     TV_ASSERT_REAL(6.869072848, L[0]);
-    mtt_ipda_betas(PD, PG, p1, lam, 1, bp, &b0, &Lp);
+    tv_ipda_betas(PD, PG, p1, lam, 1, bp, &b0, &Lp);
     TV_ASSERT_REAL(6.869072848, Lp);              /* IPDA with z1 alone */
     TV_ASSERT_REAL(0.9841317741, bp[0]);
     TV_ASSERT_REAL(0.01586822595, b0);
@@ -288,7 +288,7 @@ static void test_tv5_rho0_equivalence(void)
         lam[j] = LAMBDA;
     }
     p[0] = t.c[0].p;
-    mtt_ipda_betas(PD, PG, p, lam, 3, bp, &b0, &Lp);
+    tv_ipda_betas(PD, PG, p, lam, 3, bp, &b0, &Lp);
     TV_ASSERT_REAL(9.92672424, Lp);
 }
 

@@ -76,7 +76,7 @@ static void test_tv6_betas_and_existence(void)
     int j;
     double sum;
     tv5_setup(&t);
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     TV_ASSERT_REAL(tv6_L, L);                  /* TV6 L = 1 - delta */
     TV_ASSERT_REAL(tv6_delta, MTT_R(1.0) - L); /* TV6 delta */
     TV_ASSERT_VEC(tv6_beta, beta, 3);          /* TV6 beta_1..3 */
@@ -95,7 +95,7 @@ static void test_tv6_state_update(void)
     const mtt_real lam[3] = {LAMBDA, LAMBDA, LAMBDA};
     mtt_real beta[3], beta0, L, x[4], P[4][4];
     tv5_setup(&t);
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     mtt_kalman_pda(t.xp, t.Pp, t.K, t.Si, tv5_R, 3, t.nu, beta, beta0, x, P);
     TV_ASSERT_VEC(tv6_x, x, 4); /* TV6 x_upd */
     TV_ASSERT_MAT4(tv6_P, P);   /* TV6 P_upd */
@@ -106,7 +106,7 @@ static void test_tv6_m0(void)
 {
     /* m = 0: L = 1 - PD PG, beta_0 = 1 (TV5 m = 0: delta = 0.891). */
     mtt_real beta[1], beta0, L;
-    mtt_ipda_betas(PD, PG, NULL, NULL, 0, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, NULL, NULL, 0, beta, &beta0, &L);
     TV_ASSERT_REAL(0.891, MTT_R(1.0) - L);
     TV_ASSERT_REAL(1.0, beta0);
     TV_ASSERT_REAL(0.1405242802, mtt_existence_update(MTT_R(0.6), L)); /* TV5 m = 0 */
@@ -122,7 +122,7 @@ static void test_tv6_lambda_hat(void)
     lam[0] = lh;
     lam[1] = lh;
     lam[2] = lh;
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     TV_ASSERT_REAL(tv6h_delta, MTT_R(1.0) - L); /* TV6 IPDA with lambda_hat: delta */
     TV_ASSERT_VEC(tv6h_beta, beta, 3);
     TV_ASSERT_REAL(tv6h_beta0, beta0);

@@ -102,7 +102,7 @@ static void test_tv8_lm_ipda(void)
             p[j] = TV_PAIR_P(&trk, tf->pair_first + j);
             lam[j] = TV_PAIR_LAM(&trk, tf->pair_first + j);
         }
-        mtt_ipda_betas(trk.par.pd, trk.par.pg, p, lam, 2, b, &b0, &L);
+        tv_ipda_betas(trk.par.pd, trk.par.pg, p, lam, 2, b, &b0, &L);
         TV_ASSERT_REAL_MSG(delta[t], MTT_R(1.0) - L, "TV8 LM-IPDA delta");
         TV_ASSERT_REAL_MSG(beta[2 * t], b[0], "TV8 LM-IPDA beta");
         TV_ASSERT_REAL_MSG(beta[2 * t + 1], b[1], "TV8 LM-IPDA beta");

@@ -81,6 +81,24 @@ static inline uint16_t tv_meas_count(const mtt_tracker *trk)
     return trk->n_meas;
 }
 
+/* IPDA betas of m candidates given as arrays (p, lambda), through the
+ * library's pair-based mtt_ipda_betas. */
+static inline void tv_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
+                                 uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L)
+{
+    mtt_pair pp[MTT_MAX_GATED];
+    uint16_t j;
+    memset(pp, 0, sizeof pp);
+    for (j = 0; j < m; ++j) {
+        pp[j].p = p[j];
+        pp[j].lam = lam[j];
+    }
+    mtt_ipda_betas(pd, pg, pp, m, beta0, L);
+    for (j = 0; j < m; ++j) {
+        beta[j] = pp[j].beta;
+    }
+}
+
 /* ---- writers ---- */
 
 /* Initialise trk with p (must succeed); no tracks, no measurements. */

@@ -83,8 +83,6 @@ typedef struct mtt_row_scratch {
     uint16_t pair[MTT_MAX_GATED];
     mtt_real beta[MTT_MAX_GATED];
     mtt_real L[MTT_MAX_GATED];
-    mtt_real p[MTT_MAX_GATED];
-    mtt_real lam[MTT_MAX_GATED];
     mtt_real nu[MTT_MAX_GATED][2];
     uint8_t rank[MTT_MAX_GATED];
 } mtt_row_scratch;
