@@ -11,28 +11,11 @@
  * table also gives the names of docs/FORMATS.md `association`. */
 #include "mtt_internal.h"
 
-#if MTT_WITH_BASELINES
-#define BASELINE(fn) fn
-#else
-#define BASELINE(fn) NULL /* not built: mtt_params_check reports MTT_ERR_UNSUPPORTED */
-#endif
-
-static void assoc_lm_ihpda(mtt_tracker *trk)
-{
-    uint16_t c;
-    for (c = 0; c < trk->n_clusters; ++c) {
-        mtt_mmr_cluster(trk, c, 1);
-    }
-    mtt_ihpda_final_frame(trk);
-}
+/* The association routines a row names (MTT_ASSOCIATE_*): called by a
+ * switch, not through pointers, so every call is direct (the firmware's
+ * stack analysis sees every edge; no table of code addresses). */
 
 #if MTT_WITH_BASELINES
-
-static void assoc_ihpda_2d(mtt_tracker *trk)
-{
-    mtt_assign2d_frame(trk);
-    mtt_ihpda_final_frame(trk);
-}
 
 /* Exact betas of cluster c, or the counted fallback to Cheap JPDA (§13.1 CHOICE). */
 static void exact_or_cheap(mtt_tracker *trk, uint16_t c, int kind)
@@ -43,51 +26,41 @@ static void exact_or_cheap(mtt_tracker *trk, uint16_t c, int kind)
     }
 }
 
-static void jipda_cluster(mtt_tracker *trk, uint16_t c)
+/* Cluster c of a JPDA-family mode (§13.1 to §13.7). */
+static void jpda_cluster(mtt_tracker *trk, uint16_t c, uint8_t how)
 {
-    if (mtt_jpda_exact(trk, c, MTT_JPDA_JIPDA) != 0) {
-        /* Over the bounds: the per-track IPDA betas written by
-         * mtt_ipda_frame stay (§13.2). */
-        trk->stats.last.jpda_fallbacks++;
+    switch (how) {
+    case MTT_ASSOCIATE_JIPDA:
+        if (mtt_jpda_exact(trk, c, MTT_JPDA_JIPDA) != 0) {
+            /* Over the bounds: the per-track IPDA betas written by
+             * mtt_ipda_frame stay (§13.2). */
+            trk->stats.last.jpda_fallbacks++;
+        }
+        break;
+    case MTT_ASSOCIATE_CHEAP_JPDA:
+        mtt_cheap_jpda(trk, c, 1);
+        break;
+    case MTT_ASSOCIATE_SUBOPT_JPDA:
+        mtt_subopt_jpda(trk, c, 1);
+        break;
+    case MTT_ASSOCIATE_JPDA_STAR:
+        exact_or_cheap(trk, c, MTT_JPDA_STAR);
+        break;
+    default: /* exact JPDA; NNJPDA and adaptive JPDA post-process it */
+        exact_or_cheap(trk, c, MTT_JPDA_EXACT);
+        if (how == MTT_ASSOCIATE_NNJPDA) {
+            mtt_nnjpda_cluster(trk, c);
+        } else if (how == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
+            mtt_adaptive_split(trk, c);
+        }
+        break;
     }
-}
-
-static void jpda_cluster(mtt_tracker *trk, uint16_t c)
-{
-    exact_or_cheap(trk, c, MTT_JPDA_EXACT);
-}
-
-static void cheap_cluster(mtt_tracker *trk, uint16_t c)
-{
-    mtt_cheap_jpda(trk, c, 1);
-}
-
-static void subopt_cluster(mtt_tracker *trk, uint16_t c)
-{
-    mtt_subopt_jpda(trk, c, 1);
-}
-
-static void nnjpda_cluster(mtt_tracker *trk, uint16_t c)
-{
-    exact_or_cheap(trk, c, MTT_JPDA_EXACT);
-    mtt_nnjpda_cluster(trk, c);
-}
-
-static void star_cluster(mtt_tracker *trk, uint16_t c)
-{
-    exact_or_cheap(trk, c, MTT_JPDA_STAR);
-}
-
-static void adaptive_cluster(mtt_tracker *trk, uint16_t c)
-{
-    exact_or_cheap(trk, c, MTT_JPDA_EXACT);
-    mtt_adaptive_split(trk, c);
 }
 
 /* The JPDA family (§13): A and B of every pair and track, the IPDA row of
  * every track (its existence is §13.2's CHOICE for all but jipda, and the
  * jipda fallback's betas), then each cluster. */
-static void jpda_family(mtt_tracker *trk, void (*cluster)(mtt_tracker *, uint16_t))
+static void jpda_family(mtt_tracker *trk, uint8_t how)
 {
     uint16_t c;
     mtt_jpda_weights(trk);
@@ -98,17 +71,9 @@ static void jpda_family(mtt_tracker *trk, void (*cluster)(mtt_tracker *, uint16_
             trk->tf[t0].beta0 = MTT_R(1.0); /* empty gate: m = 0 update */
             continue;
         }
-        cluster(trk, c);
+        jpda_cluster(trk, c, how);
     }
 }
-
-static void assoc_jipda(mtt_tracker *trk) { jpda_family(trk, jipda_cluster); }
-static void assoc_jpda(mtt_tracker *trk) { jpda_family(trk, jpda_cluster); }
-static void assoc_cheap(mtt_tracker *trk) { jpda_family(trk, cheap_cluster); }
-static void assoc_subopt(mtt_tracker *trk) { jpda_family(trk, subopt_cluster); }
-static void assoc_nnjpda(mtt_tracker *trk) { jpda_family(trk, nnjpda_cluster); }
-static void assoc_star(mtt_tracker *trk) { jpda_family(trk, star_cluster); }
-static void assoc_adaptive(mtt_tracker *trk) { jpda_family(trk, adaptive_cluster); }
 
 #endif /* MTT_WITH_BASELINES */
 
@@ -117,21 +82,21 @@ static void assoc_adaptive(mtt_tracker *trk) { jpda_family(trk, adaptive_cluster
 #define HARD MTT_UPDATE_HARD
 
 /* One row per mode, in mtt_assoc order:
- *  name (docs/FORMATS.md), associate, LM densities, update kind, baseline,
- *  per-track gates before gating (adaptive JPDA, §13.7). */
+ *  name (docs/FORMATS.md), association routine, LM densities, update kind,
+ *  baseline. */
 const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
-    {"lm-ihpda", assoc_lm_ihpda, 1, ONE, 0, 0},
-    {"ihpda", mtt_ihpda_select_frame, 0, ONE, 0, 0},
-    {"lm-ipda", mtt_ipda_frame, 1, PDA, 0, 0},
-    {"ipda", mtt_ipda_frame, 0, PDA, 0, 0},
-    {"ihpda-2d", BASELINE(assoc_ihpda_2d), 0, ONE, 1, 0},
-    {"jipda", BASELINE(assoc_jipda), 0, PDA, 1, 0},
-    {"jpda", BASELINE(assoc_jpda), 0, PDA, 1, 0},
-    {"cheap-jpda", BASELINE(assoc_cheap), 0, PDA, 1, 0},
-    {"suboptimal-jpda", BASELINE(assoc_subopt), 0, PDA, 1, 0},
-    {"nnjpda", BASELINE(assoc_nnjpda), 0, HARD, 1, 0},
-    {"jpda-star", BASELINE(assoc_star), 0, PDA, 1, 0},
-    {"adaptive-jpda", BASELINE(assoc_adaptive), 0, PDA, 1, 1},
+    {"lm-ihpda", MTT_ASSOCIATE_MMR, 1, ONE, 0},
+    {"ihpda", MTT_ASSOCIATE_SELECT, 0, ONE, 0},
+    {"lm-ipda", MTT_ASSOCIATE_IPDA, 1, PDA, 0},
+    {"ipda", MTT_ASSOCIATE_IPDA, 0, PDA, 0},
+    {"ihpda-2d", MTT_ASSOCIATE_ASSIGN_2D, 0, ONE, 1},
+    {"jipda", MTT_ASSOCIATE_JIPDA, 0, PDA, 1},
+    {"jpda", MTT_ASSOCIATE_JPDA, 0, PDA, 1},
+    {"cheap-jpda", MTT_ASSOCIATE_CHEAP_JPDA, 0, PDA, 1},
+    {"suboptimal-jpda", MTT_ASSOCIATE_SUBOPT_JPDA, 0, PDA, 1},
+    {"nnjpda", MTT_ASSOCIATE_NNJPDA, 0, HARD, 1},
+    {"jpda-star", MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1},
+    {"adaptive-jpda", MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1},
 };
 
 void mtt_associate_frame(mtt_tracker *trk)
@@ -139,17 +104,37 @@ void mtt_associate_frame(mtt_tracker *trk)
     const mtt_mode *md = &mtt_modes[trk->par.association];
     uint16_t k;
     mtt_cluster_frame(trk);
-    md->associate(trk);
+    switch (md->associate) {
+    case MTT_ASSOCIATE_MMR: /* lm-ihpda: MMR with recomputation, final rows (§10.1, §10.3) */
+        for (k = 0; k < trk->n_clusters; ++k) {
+            mtt_mmr_cluster(trk, k, 1);
+        }
+        mtt_ihpda_final_frame(trk);
+        break;
+    case MTT_ASSOCIATE_SELECT: /* ihpda (§7.4) */
+        mtt_ihpda_select_frame(trk);
+        break;
+    case MTT_ASSOCIATE_IPDA: /* ipda, lm-ipda (§6, §8) */
+        mtt_ipda_frame(trk);
+        break;
+#if MTT_WITH_BASELINES
+    case MTT_ASSOCIATE_ASSIGN_2D: /* ihpda-2d (§10.2, §10.3) */
+        mtt_assign2d_frame(trk);
+        mtt_ihpda_final_frame(trk);
+        break;
+    default: /* the JPDA family (§13) */
+        jpda_family(trk, md->associate);
+        break;
+#else
+    default: /* not built: refused by mtt_params_check */
+        break;
+#endif
+    }
     if (md->update == MTT_UPDATE_PDA) {
         for (k = 0; k < trk->n_pairs; ++k) {
             trk->meas[trk->pairs[k].meas].used = 1;
         }
     }
-}
-
-int mtt_mode_built(mtt_assoc a)
-{
-    return (int)a >= 0 && (int)a < (int)MTT_ASSOC_COUNT && mtt_modes[a].associate != NULL;
 }
 
 mtt_status mtt_assoc_name(mtt_assoc a, const char **name)

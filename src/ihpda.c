@@ -106,17 +106,16 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
 void mtt_ihpda_select_frame(mtt_tracker *trk)
 {
     uint16_t i;
-    /* Each track selects on its own full gate; tracks may share (ALGORITHMS.md §15.1). */
+    /* Each track selects on its own full gate (the row ignores `used`), so
+     * tracks may share (ALGORITHMS.md §15.1). */
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
         tf->assigned = -1;
         if (tf->valid && tf->pair_count > 0u) {
             (void)mtt_ihpda_row(trk, i, 0, -1, 1, &tf->assigned);
-        }
-    }
-    for (i = 0; i < trk->n_tracks; ++i) {
-        if (trk->tf[i].assigned >= 0) {
-            trk->meas[trk->pairs[trk->tf[i].assigned].meas].used = 1;
+            if (tf->assigned >= 0) {
+                trk->meas[trk->pairs[tf->assigned].meas].used = 1;
+            }
         }
     }
 }

@@ -181,8 +181,6 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
 mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_real P[4][4])
 {
     mtt_real R[3];
-    mtt_cov Pm;
-    int i;
     if (P == NULL) {
         return MTT_ERR_NULL;
     }
@@ -193,9 +191,17 @@ mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_rea
     R[0] = sx * sx;
     R[1] = MTT_R(0.0);
     R[2] = sy * sy;
-    mtt_motion_two_point_cov(R, dt, Pm);
-    for (i = 0; i < 4; ++i) { /* the CV part */
-        memcpy(P[i], Pm[i], sizeof P[i]);
+#if MTT_MAX_STATE == 4
+    mtt_motion_two_point_cov(R, dt, P); /* mtt_cov is mtt_real[4][4] */
+#else
+    {
+        mtt_cov Pm;
+        int i;
+        mtt_motion_two_point_cov(R, dt, Pm);
+        for (i = 0; i < 4; ++i) { /* the CV part */
+            memcpy(P[i], Pm[i], sizeof P[i]);
+        }
     }
+#endif
     return MTT_OK;
 }

@@ -18,6 +18,17 @@ void mtt_sym(mtt_cov P)
     }
 }
 
+int mtt_state_finite(const mtt_real *x)
+{
+    int i;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        if (!mtt_isfinite(x[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp)
 {

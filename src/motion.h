@@ -35,18 +35,8 @@
 typedef mtt_real mtt_state[MTT_MAX_STATE];
 typedef mtt_real mtt_cov[MTT_MAX_STATE][MTT_MAX_STATE];
 
-/* 1 when the MTT_STATE_N entries of a state are finite (inline: once per
- * track and frame). */
-static inline int mtt_state_finite(const mtt_real *x)
-{
-    int i;
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        if (!mtt_isfinite(x[i])) {
-            return 0;
-        }
-    }
-    return 1;
-}
+/* 1 when the MTT_STATE_N entries of a state are finite. */
+int mtt_state_finite(const mtt_real *x);
 
 /* Q(dt) for the process noise power spectral density sw (§2). */
 void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q);

@@ -157,6 +157,12 @@ void mtt_adaptive_split(mtt_tracker *trk, uint16_t c);
 
 /* ---- associate.c: the association stage and the mode table (ALGORITHMS.md §15.1) ---- */
 enum { MTT_UPDATE_ONE = 0, MTT_UPDATE_PDA = 1, MTT_UPDATE_HARD = 2 };
+/* The association routine of a mode (associate.c's switch). */
+enum {
+    MTT_ASSOCIATE_MMR = 0, MTT_ASSOCIATE_SELECT, MTT_ASSOCIATE_IPDA, MTT_ASSOCIATE_ASSIGN_2D,
+    MTT_ASSOCIATE_JIPDA, MTT_ASSOCIATE_JPDA, MTT_ASSOCIATE_CHEAP_JPDA, MTT_ASSOCIATE_SUBOPT_JPDA,
+    MTT_ASSOCIATE_NNJPDA, MTT_ASSOCIATE_JPDA_STAR, MTT_ASSOCIATE_ADAPTIVE_JPDA
+};
 /* One association mode.  update: what the update stage does with the
  * association's result -- ONE: the single assigned / selected pair with its
  * beta and L (ALGORITHMS.md §7.4); PDA: every gated pair with the beta row, beta_0 and
@@ -164,18 +170,15 @@ enum { MTT_UPDATE_ONE = 0, MTT_UPDATE_PDA = 1, MTT_UPDATE_HARD = 2 };
  * tf.ex_post (ALGORITHMS.md §13.5). */
 typedef struct mtt_mode {
     const char *name;                     /* docs/FORMATS.md `association` */
-    void (*associate)(mtt_tracker *trk);  /* after clustering; NULL: not built */
+    uint8_t associate;                    /* MTT_ASSOCIATE_*: the routine, after clustering */
     uint8_t lm;                           /* LM clutter densities (ALGORITHMS.md §8) */
     uint8_t update;                       /* MTT_UPDATE_* */
     uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
-    uint8_t shrink_gates;                 /* per-track gates before gating (ALGORITHMS.md §13.7) */
 } mtt_mode;
 extern const mtt_mode mtt_modes[MTT_ASSOC_COUNT];
 /* Clusters, then the mode's association; PDA modes mark every gated
  * measurement used. */
 void mtt_associate_frame(mtt_tracker *trk);
-/* 1 when mode a is valid and built into this library. */
-int mtt_mode_built(mtt_assoc a);
 
 /* ---- update.c: state and existence update of every track (ALGORITHMS.md §6, §7.4, §10.3) ---- */
 void mtt_update_frame(mtt_tracker *trk);

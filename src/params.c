@@ -145,7 +145,7 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     }
     if ((int)p->association < 0 || (int)p->association >= (int)MTT_ASSOC_COUNT) {
         bad = "association";
-    } else if (!mtt_mode_built(p->association)) {
+    } else if (!MTT_WITH_BASELINES && mtt_modes[p->association].baseline) {
         bad = "association"; /* a baseline, built with MTT_WITH_BASELINES 0 */
         st = MTT_ERR_UNSUPPORTED;
     } else {
@@ -171,7 +171,7 @@ mtt_status mtt_status_text(mtt_status s, const char **text)
         "time not finite or not increasing", "index or count out of range",
         "track table full", "state or covariance not finite or not positive definite",
         "association mode not built into this version",
-        "caller compiled with another configuration than the library"};
+        "configuration mismatch"};
     int k = -(int)s;
     if (text == NULL) {
         return MTT_ERR_NULL;

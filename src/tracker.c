@@ -103,8 +103,8 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES
-    if (md->shrink_gates) {
-        mtt_adaptive_gates(trk); /* per-track gate thresholds (ALGORITHMS.md §13.7) */
+    if (md->associate == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
+        mtt_adaptive_gates(trk); /* per-track gate thresholds before gating (ALGORITHMS.md §13.7) */
     }
 #endif
     charge(trk, MTT_STAGE_PREDICT, &mark);

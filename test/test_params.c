@@ -315,7 +315,7 @@ static void test_status_text(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_status_text(MTT_OK, &t));
     TEST_ASSERT_EQUAL_STRING("ok", t);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_status_text(MTT_ERR_CONFIG, &t));
-    TEST_ASSERT_EQUAL_STRING("caller compiled with another configuration than the library", t);
+    TEST_ASSERT_EQUAL_STRING("configuration mismatch", t);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_status_text((mtt_status)1, &t));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_status_text((mtt_status)-10, &t));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_status_text(MTT_OK, NULL));

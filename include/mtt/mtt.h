@@ -98,8 +98,9 @@ typedef enum mtt_stage {
     MTT_STAGE_PREDICT,
     MTT_STAGE_GATE,
     MTT_STAGE_LM_CLUTTER,
-    MTT_STAGE_ASSOCIATE,   /* clusters, beta rows and assignment */
-    MTT_STAGE_UPDATE,
+    MTT_STAGE_ASSOCIATE,   /* clusters and the mode's whole association: every beta row,
+                              selection / assignment, the final recomputation */
+    MTT_STAGE_UPDATE,      /* state and existence update only */
     MTT_STAGE_INITIATE,
     MTT_STAGE_MERGE,
     MTT_STAGE_MANAGE,
