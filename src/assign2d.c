@@ -1,7 +1,7 @@
 /* assign2d.c - optimal 2-D assignment per cluster, the `ihpda-2d` mode
- * (spec 10.2; S0 eq. 11 and 12; spec 15.1).
+ * (ALGORITHMS.md §10.2; [S0] eq. 11 and 12; ALGORITHMS.md §15.1).
  *
- * The beta matrix is static: each track's IHPDA row (spec 7.3) over its full
+ * The beta matrix is static: each track's IHPDA row (ALGORITHMS.md §7.3) over its full
  * gate, with the plain lambda (the mode skips the LM step).  The weights are
  * w = beta + (n_c + 1) for gated pairs and 0 otherwise; maximising sum w
  * first maximises the number of assigned tracks (every beta <= 1), then the
@@ -9,8 +9,8 @@
  * O(n^2 (m + n))) on the cost -w, with one dummy zero-weight column per row
  * so that every row can be matched; zero-weight matches are dropped.
  * Clusters over MTT_MAX_ASSIGN_TRACKS fall back to MMR with recomputation
- * (spec 10.2 CHOICE, counted in the stats).  The final recomputation of
- * spec 10.3 is done by update.c. */
+ * (ALGORITHMS.md §10.2 CHOICE, counted in the stats).  The final recomputation of
+ * ALGORITHMS.md §10.3 follows in the association stage (ihpda.c). */
 #include "mtt_internal.h"
 
 #if MTT_WITH_BASELINES

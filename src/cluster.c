@@ -1,8 +1,8 @@
 /* cluster.c - clusters: connected components of the track-measurement
- * gating graph (spec 9), by union-find.
+ * gating graph (ALGORITHMS.md §9), by union-find.
  *
  * Union by smallest index keeps every root the cluster's smallest track,
- * which gives the deterministic order of spec 9 for free: clusters by their
+ * which gives the deterministic order of ALGORITHMS.md §9 for free: clusters by their
  * smallest track, tracks ascending inside.  Tracks with an empty gate are
  * singleton clusters; numerically invalid tracks get no cluster. */
 #include "mtt_internal.h"

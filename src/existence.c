@@ -1,9 +1,9 @@
 /* existence.c - track existence probability.
  *
- * spec 11: Markov chain one prediction P_k|k-1 = p11 P + p21 (1 - P).
- * spec 6 / 7.4: update in the L form P = L P / (1 - P + L P), which stays
- * accurate when delta = 1 - L is large and negative (spec 16).  Results are
- * clamped to [0, 1] (spec 16), with anything below 1e-30 taken as 0. */
+ * ALGORITHMS.md §11: Markov chain one prediction P_k|k-1 = p11 P + p21 (1 - P).
+ * ALGORITHMS.md §6 / §7.4: update in the L form P = L P / (1 - P + L P), which stays
+ * accurate when delta = 1 - L is large and negative (ALGORITHMS.md §16).  Results are
+ * clamped to [0, 1] (ALGORITHMS.md §16), with anything below 1e-30 taken as 0. */
 #include "mtt_internal.h"
 
 static mtt_real clamp01(mtt_real p)

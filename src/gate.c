@@ -1,4 +1,4 @@
-/* gate.c - ellipsoidal gating of every track (spec 4).
+/* gate.c - ellipsoidal gating of every track (ALGORITHMS.md §4).
  *
  * gamma = -2 ln(1 - PG); a measurement is gated when d^2 = nu' S^-1 nu <=
  * gamma; V_G = pi gamma sqrt(det S); p = N(nu; 0, S) / PG.
@@ -47,7 +47,7 @@ static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_real v)
     return lo;
 }
 
-/* Beyond MTT_MAX_PAIRS: the least likely pair of the frame gives way (DESIGN.md). */
+/* Beyond MTT_MAX_PAIRS: the least likely pair of the frame gives way (docs/DESIGN.md). */
 static void push_pair(mtt_tracker *trk, const mtt_pair *np, int *resort)
 {
     uint16_t k, worst = 0;
@@ -91,7 +91,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             continue;
         }
         if (tf->shrink) {
-            gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (spec 13.7) */
+            gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (ALGORITHMS.md §13.7) */
         }
         tf->vg = mtt_gate_volume(gamma, tf->det_s);
         wx = mtt_sqrt(gamma * tf->S[0]);
@@ -114,7 +114,7 @@ void mtt_gate_frame(mtt_tracker *trk)
                 cd[nc] = d2;
                 ++nc;
             } else {
-                /* Gate full: the largest d^2 gives way (spec 7.2, cap). */
+                /* Gate full: the largest d^2 gives way (ALGORITHMS.md §7.2, cap). */
                 uint16_t w = 0;
                 for (a = 1; a < nc; ++a) {
                     if (cd[a] > cd[w] || (cd[a] == cd[w] && cm[a] > cm[w])) {
@@ -146,7 +146,6 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_pair np;
             np.track = i;
             np.meas = cm[a];
-            np.d2 = cd[a];
             np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);

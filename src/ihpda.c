@@ -1,12 +1,14 @@
 /* ihpda.c - IHPDA: one selected measurement per track, using the ranks of
- * the gated intensities (spec 7).
+ * the gated intensities (ALGORITHMS.md §7).
  *
- * spec 7.2: P_r(l | m, rho) in the product/recurrence form
+ * ALGORITHMS.md §7.2: P_r(l | m, rho) in the product/recurrence form
  *   a = 1/(1+rho), P_r(1) = prod_{j<m} j/(j+a), P_r(l+1) = P_r(l)(l-1+a)/l,
  * never the seed's alternating sum, which cancels catastrophically.
- * spec 7.3: A_j = PD PG m p_j P_r(l_j) / lambda_j,
+ * ALGORITHMS.md §7.3: A_j = PD PG m p_j P_r(l_j) / lambda_j,
  *           C_j = 1 - PD PG + PD PG (m / (lambda_j V_G)) (1 - P_r(l_j)),
- *           L_j = A_j + C_j, beta_j = A_j / L_j. */
+ *           L_j = A_j + C_j, beta_j = A_j / L_j.
+ * ALGORITHMS.md §7.4: the `ihpda` mode's selection on each track's full gate;
+ * ALGORITHMS.md §10.3: the final recomputation after an assignment. */
 #include "mtt_internal.h"
 
 void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out)
@@ -36,7 +38,7 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
         mtt_real pr, A, C;
         uint16_t rank = 1;
         /* Rank 1 is the strongest; equal intensities: lower index ranks
-         * stronger (spec 7.1). */
+         * stronger (ALGORITHMS.md §7.1). */
         for (j = 0; j < m; ++j) {
             if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
                 ++rank;
@@ -75,7 +77,6 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         c[m].lam = pp->lam;
         c[m].amp = ms->amp;
         c[m].idx = pp->meas;
-        c[m].has_amp = ms->has_amp;
         pk[m] = k;
         ++m;
     }
@@ -84,7 +85,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     if (m == 0u) {
         return 0;
     }
-    /* A track with any gated measurement lacking amplitude uses rho = 0 (spec 7.1). */
+    /* A track with any gated measurement lacking amplitude uses rho = 0 (ALGORITHMS.md §7.1). */
     if (trk->par.snr_rho > MTT_R(0.0) && tf->has_all_amp) {
         prank = &trk->prank[MTT_PRANK_ROW(m)];
     }
@@ -100,4 +101,50 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     }
     *best = (int16_t)pk[b];
     return m;
+}
+
+void mtt_ihpda_select_frame(mtt_tracker *trk)
+{
+    uint16_t i;
+    /* Each track selects on its own full gate (the row ignores `used`), so
+     * tracks may share (ALGORITHMS.md §15.1). */
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track_frame *tf = &trk->tf[i];
+        tf->assigned = -1;
+        if (tf->valid && tf->pair_count > 0u) {
+            (void)mtt_ihpda_row(trk, i, 0, -1, 1, &tf->assigned);
+            if (tf->assigned >= 0) {
+                trk->meas[trk->pairs[tf->assigned].meas].used = 1;
+            }
+        }
+    }
+}
+
+/* ALGORITHMS.md §10.3's set G_f = G minus the measurements assigned to other tracks
+ * is a subset of the set the track's last row was computed over (MMR: the
+ * free measurements when it was assigned; 2-D assignment: all of G).  So
+ * equal sizes mean equal sets, equal rows, and the recomputation can be
+ * skipped: the common case of a track that shares nothing. */
+static int final_set_changed(const mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t k, m = 0;
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        if (!trk->meas[trk->pairs[k].meas].used || (int16_t)k == tf->assigned) {
+            ++m;
+        }
+    }
+    return m != tf->row_m;
+}
+
+void mtt_ihpda_final_frame(mtt_tracker *trk)
+{
+    uint16_t i;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track_frame *tf = &trk->tf[i];
+        if (tf->valid && tf->assigned >= 0 && final_set_changed(trk, i)) {
+            int16_t best;
+            (void)mtt_ihpda_row(trk, i, 1, tf->assigned, 0, &best);
+        }
+    }
 }

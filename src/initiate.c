@@ -1,12 +1,14 @@
-/* initiate.c - two-point differencing initiation (spec 12.1) with the
+/* initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1) with the
  * velocity gate |z_k - z_k-1| <= vmax dT, or the intensity-based gate of
- * seed 002 (spec 12.2): sigma_P = f(I)/sqrt(gamma), accept when
+ * [S2] (ALGORITHMS.md §12.2): sigma_P = f(I)/sqrt(gamma), accept when
  * d' (sigma_P^2 I + R)^-1 d <= gamma.
  *
  * U_k = measurements of frame k not used by any track; U_k-1 = the same of
  * the previous frame minus those that already started a track.  Every
  * accepted pair starts one tentative track (merging removes duplicates).
  * Cost: O((|U_k| + |U_k-1| + pairs within reach) log n), by an x sweep. */
+#include <string.h>
+
 #include "mtt_internal.h"
 
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
@@ -18,7 +20,7 @@ mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
         I = MTT_R(0.0);
     }
     /* f2 is a downward parabola: clamp I at its peak so f never decreases
-     * (seed 002's f2 turns negative above I = 2341; spec 12.2 guards). */
+     * ([S2]'s f2 turns negative above I = 2341; ALGORITHMS.md §12.2 guards). */
     if (f2[0] < MTT_R(0.0)) {
         mtt_real peak = -f2[1] / (MTT_R(2.0) * f2[0]);
         if (I > peak) {
@@ -35,20 +37,6 @@ mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
     }
     w1 = (hi - I) / (hi - lo);
     return w1 * v1 + (MTT_R(1.0) - w1) * v2;
-}
-
-void mtt_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_real P[4][4])
-{
-    const mtt_real r[2][2] = {{R[0], R[1]}, {R[1], R[2]}};
-    int i, j;
-    for (i = 0; i < 2; ++i) {
-        for (j = 0; j < 2; ++j) {
-            P[i][j] = r[i][j];
-            P[i][j + 2] = r[i][j] / dt;
-            P[i + 2][j] = r[i][j] / dt;
-            P[i + 2][j + 2] = MTT_R(2.0) * r[i][j] / (dt * dt);
-        }
-    }
 }
 
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt)
@@ -101,48 +89,13 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
 /* A birth needs a finite state and a positive definite covariance: with an
  * extreme frame interval R/dt^2 underflows to 0 (huge dt, tiny sigma) or
  * the velocity overflows (tiny dt), and such a track would report a
- * singular or infinite P until the next frame deletes it (spec 3).  Not
+ * singular or infinite P until the next frame deletes it (ALGORITHMS.md §3).  Not
  * counted: no track was possible. */
-static int birth_ok(const mtt_real x[4], mtt_real P[4][4])
+static int birth_ok(const mtt_state x, mtt_cov P)
 {
-    const mtt_real zero[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    const mtt_state zero = {MTT_R(0.0)};
     mtt_real d2;
-    int i;
-    for (i = 0; i < 4; ++i) {
-        if (!mtt_isfinite(x[i])) {
-            return 0;
-        }
-    }
-    return mtt_chol4_quad(P, zero, &d2) == 0;
-}
-
-/* [CHOICE] The velocity gate says |v| <= vmax, but the two-point velocity
- * variance 2R/dT^2 exceeds vmax^2 when dT < sqrt(2) sigma / vmax, i.e. when
- * the two detections are closer in time than the noise can resolve.  Then
- * the velocity rows and columns are scaled (P <- D P D, D = diag(1, 1, c,
- * c)) so that the larger velocity variance is vmax^2: still positive
- * definite, same correlations as spec 12.1.  Unscaled, a float track turns
- * singular at its first prediction (fuzz finding F6: sigma 32, dT 1e-6).
- * With ordinary frame intervals (dT >= sqrt(2) sigma / vmax) this does
- * nothing. */
-static void cap_velocity(mtt_real P[4][4], mtt_real vmax)
-{
-    const mtt_real vv = (P[2][2] > P[3][3]) ? P[2][2] : P[3][3];
-    const mtt_real cap = vmax * vmax;
-    mtt_real c;
-    int i;
-    if (!(vv > cap)) {
-        return;
-    }
-    c = mtt_sqrt(cap / vv);
-    for (i = 0; i < 4; ++i) {
-        P[i][2] *= c;
-        P[i][3] *= c;
-    }
-    for (i = 0; i < 4; ++i) {
-        P[2][i] *= c;
-        P[3][i] *= c;
-    }
+    return mtt_state_finite(x) && mtt_chol_quad(P, zero, &d2) == 0;
 }
 
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
@@ -186,16 +139,12 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             }
             for (k = 0; k < nc; ++k) {
                 const mtt_mstore *pa = &trk->prev[trk->init_cand[k]];
-                mtt_real x[4], P[4][4];
+                mtt_state x;
+                mtt_cov P;
                 if (!mtt_init_pair_ok(trk, pa, b, dt)) {
                     continue;
                 }
-                x[0] = b->x;
-                x[1] = b->y;
-                x[2] = (b->x - pa->x) / dt;
-                x[3] = (b->y - pa->y) / dt;
-                mtt_two_point_cov(trk->R, dt, P);
-                cap_velocity(P, trk->par.vmax);
+                mtt_motion_birth(pa, b, dt, trk->R, trk->par.vmax, x, P);
                 if (!birth_ok(x, P)) {
                     continue;
                 }
@@ -227,4 +176,32 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             trk->prev_order[a++] = trk->init_cand[j];
         }
     }
+}
+
+mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_real P[4][4])
+{
+    mtt_real R[3];
+    if (P == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (!(sx > MTT_R(0.0)) || !(sy > MTT_R(0.0)) || !(dt > MTT_R(0.0)) ||
+        !mtt_isfinite(sx) || !mtt_isfinite(sy) || !mtt_isfinite(dt)) {
+        return MTT_ERR_VALUE;
+    }
+    R[0] = sx * sx;
+    R[1] = MTT_R(0.0);
+    R[2] = sy * sy;
+#if MTT_MAX_STATE == 4
+    mtt_motion_two_point_cov(R, dt, P); /* mtt_cov is mtt_real[4][4] */
+#else
+    {
+        mtt_cov Pm;
+        int i;
+        mtt_motion_two_point_cov(R, dt, Pm);
+        for (i = 0; i < 4; ++i) { /* the CV part */
+            memcpy(P[i], Pm[i], sizeof P[i]);
+        }
+    }
+#endif
+    return MTT_OK;
 }

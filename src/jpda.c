@@ -1,13 +1,13 @@
 /* jpda.c - exact JPDA, JPDA* and JIPDA by event enumeration per cluster
- * (spec 13.1, 13.2, 13.6), and the association stage of the JPDA-family
- * modes (spec 13, 15.1).
+ * (ALGORITHMS.md §13.1, §13.2, §13.6), and the weights A and B of the whole JPDA
+ * family (ALGORITHMS.md §13).
  *
- * Weights (spec 13): A_tj = N(nu; 0, S) = PG p_tj for a gated pair, B_t =
+ * Weights (ALGORITHMS.md §13): A_tj = N(nu; 0, S) = PG p_tj for a gated pair, B_t =
  * jpda_bias, or lambda_t (1 - PD PG) / PD when it is 0 (lambda_t the known
- * density, or the track's estimate of spec 5.2).  JIPDA (spec 13.2) uses
+ * density, or the track's estimate of ALGORITHMS.md §5.2).  JIPDA (ALGORITHMS.md §13.2) uses
  * A_tj = PD PG Pbar_t p_tj / lambda_j and B_t = 1 - PD PG Pbar_t.
  *
- * Enumeration (spec 13.1): depth-first over the tracks of the cluster with
+ * Enumeration (ALGORITHMS.md §13.1): depth-first over the tracks of the cluster with
  * an explicit stack and a bit mask of used measurements; for each track
  * "none" first, then its gated measurements ascending.  Event weight
  * w = prod A (detected) * prod B (missed).  Each row (A_t., B_t) is divided
@@ -15,16 +15,17 @@
  * so the normalised probabilities are unchanged and the products cannot
  * underflow in float.  Over MTT_MAX_JPDA_TRACKS tracks, MTT_MAX_JPDA_MEAS
  * measurements or MTT_MAX_JPDA_EVENTS events the cluster falls back
- * (spec 13.1 CHOICE): Cheap JPDA, or per-track IPDA in jipda.
+ * (ALGORITHMS.md §13.1 CHOICE): Cheap JPDA, or per-track IPDA in jipda.
  *
- * JPDA* (spec 13.6): events grouped by (detected tracks, used
+ * JPDA* (ALGORITHMS.md §13.6): events grouped by (detected tracks, used
  * measurements); each group keeps its largest weight (ties: first in
  * enumeration order); kept events with normalised probability below
  * jpda_star_threshold are dropped (unless that drops all); a second
  * enumeration sums the kept ones.
  *
- * Existence (spec 13.2 CHOICE): jipda uses P_t of spec 13.2; every other
- * mode the IPDA formula of spec 6 on the track's own gate. */
+ * Existence (ALGORITHMS.md §13.2 CHOICE): jipda uses P_t of ALGORITHMS.md §13.2; every other
+ * mode the IPDA formula of ALGORITHMS.md §6 on the track's own gate (mtt_ipda_frame,
+ * run by the association stage). */
 #include "mtt_internal.h"
 
 #if MTT_WITH_BASELINES
@@ -41,8 +42,6 @@ void mtt_jpda_weights(mtt_tracker *trk)
     uint16_t i, k;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        const uint16_t m = tf->pair_count;
-        mtt_real beta0, L;
         trk->base.jp.tb[i] = MTT_R(0.0);
         tf->beta0 = MTT_R(1.0);
         if (!tf->valid) {
@@ -55,16 +54,10 @@ void mtt_jpda_weights(mtt_tracker *trk)
         } else {
             trk->base.jp.tb[i] = tf->lambda * (MTT_R(1.0) - pdpg) / pd;
         }
-        for (k = 0; k < m; ++k) {
-            const mtt_pair *pp = &trk->pairs[tf->pair_first + k];
-            trk->row.p[k] = pp->p;
-            trk->row.lam[k] = pp->lam;
-            trk->base.jp.pa[tf->pair_first + k] =
-                jipda ? pdpg * tf->ex_pred * pp->p / pp->lam : pg * pp->p;
+        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+            const mtt_pair *pp = &trk->pairs[k];
+            trk->base.jp.pa[k] = jipda ? pdpg * tf->ex_pred * pp->p / pp->lam : pg * pp->p;
         }
-        /* spec 13.2 CHOICE: IPDA existence on the own gate (jipda overwrites). */
-        mtt_ipda_betas(pd, pg, trk->row.p, trk->row.lam, m, trk->row.beta, &beta0, &L);
-        tf->ex_post = mtt_existence_update(tf->ex_pred, L);
     }
 }
 
@@ -144,7 +137,7 @@ static int next_meas(const mtt_jpda_scratch *s, uint16_t d, int j0)
     return (int)s->m;
 }
 
-/* Enumerate every feasible event in the order of spec 13.6.  record: store
+/* Enumerate every feasible event in the order of ALGORITHMS.md §13.6.  record: store
  * each event (key and weight); kept_only: sum only events with their keep
  * bit.  Returns 0, or -1 beyond MTT_MAX_JPDA_EVENTS.  Each loop pass either
  * moves one option forward or one level back, so the loop is bounded by
@@ -211,7 +204,7 @@ static int enumerate(mtt_jpda_scratch *s, int record, int kept_only)
 }
 
 /* JPDA* order: by group (detected, used), then larger weight, then
- * enumeration order (spec 13.6 tie rule). */
+ * enumeration order (ALGORITHMS.md §13.6 tie rule). */
 static int ev_less(const void *pa, const void *pb, const void *ctx)
 {
     const mtt_jpda_scratch *s = (const mtt_jpda_scratch *)ctx;
@@ -289,7 +282,7 @@ int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
         mtt_real b0 = MTT_R(1.0), norm = MTT_R(0.0);
         if (s->W > MTT_R(0.0)) {
             if (kind == MTT_JPDA_JIPDA) {
-                /* spec 13.2: P_t = D_t + q_t U_t; beta over P_t. */
+                /* ALGORITHMS.md §13.2: P_t = D_t + q_t U_t; beta over P_t. */
                 const mtt_real pb = tf->ex_pred;
                 const mtt_real q = (MTT_R(1.0) - pdpg) * pb / (MTT_R(1.0) - pdpg * pb);
                 mtt_real det = MTT_R(0.0), den, pt;
@@ -321,79 +314,6 @@ int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind)
         }
     }
     return 0;
-}
-
-/* jipda over the bounds: per-track IPDA beta (existence is already IPDA). */
-static void ipda_cluster(mtt_tracker *trk, uint16_t c)
-{
-    uint16_t q, k;
-    for (q = trk->cl_first[c]; q < trk->cl_first[c + 1u]; ++q) {
-        mtt_track_frame *tf = &trk->tf[trk->cl_list[q]];
-        const uint16_t m = tf->pair_count;
-        mtt_real L;
-        for (k = 0; k < m; ++k) {
-            trk->row.p[k] = trk->pairs[tf->pair_first + k].p;
-            trk->row.lam[k] = trk->pairs[tf->pair_first + k].lam;
-        }
-        mtt_ipda_betas(trk->par.pd, trk->par.pg, trk->row.p, trk->row.lam, m, trk->row.beta,
-                       &tf->beta0, &L);
-        for (k = 0; k < m; ++k) {
-            trk->pairs[tf->pair_first + k].beta = trk->row.beta[k];
-        }
-    }
-}
-
-/* Exact betas of cluster c, or the counted fallback. */
-static void exact_or_fallback(mtt_tracker *trk, uint16_t c, int kind)
-{
-    if (mtt_jpda_exact(trk, c, kind) == 0) {
-        return;
-    }
-    trk->stats.last.jpda_fallbacks++;
-    if (kind == MTT_JPDA_JIPDA) {
-        ipda_cluster(trk, c);
-    } else {
-        mtt_cheap_jpda(trk, c, 1);
-    }
-}
-
-void mtt_jpda_frame(mtt_tracker *trk)
-{
-    const mtt_assoc mode = trk->par.association;
-    uint16_t c;
-    mtt_jpda_weights(trk);
-    for (c = 0; c < trk->n_clusters; ++c) {
-        const uint16_t t0 = trk->cl_list[trk->cl_first[c]];
-        if (trk->cl_first[c + 1u] - trk->cl_first[c] == 1 && trk->tf[t0].pair_count == 0u) {
-            trk->tf[t0].beta0 = MTT_R(1.0); /* empty gate: m = 0 update */
-            continue;
-        }
-        switch (mode) {
-        case MTT_ASSOC_JIPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_JIPDA);
-            break;
-        case MTT_ASSOC_CHEAP_JPDA:
-            mtt_cheap_jpda(trk, c, 1);
-            break;
-        case MTT_ASSOC_SUBOPT_JPDA:
-            mtt_subopt_jpda(trk, c, 1);
-            break;
-        case MTT_ASSOC_NNJPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            mtt_nnjpda_cluster(trk, c);
-            break;
-        case MTT_ASSOC_JPDA_STAR:
-            exact_or_fallback(trk, c, MTT_JPDA_STAR);
-            break;
-        case MTT_ASSOC_ADAPTIVE_JPDA:
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            mtt_adaptive_split(trk, c);
-            break;
-        default: /* MTT_ASSOC_JPDA */
-            exact_or_fallback(trk, c, MTT_JPDA_EXACT);
-            break;
-        }
-    }
 }
 
 #else

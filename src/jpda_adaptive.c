@@ -1,5 +1,5 @@
-/* jpda_adaptive.c - adaptive JPDA (spec 13.7, CHOICE interpretation of S1
- * section 3).
+/* jpda_adaptive.c - adaptive JPDA (ALGORITHMS.md §13.7, CHOICE
+ * interpretation of [S1] §3).
  *
  * 1. Overlap: tracks t and s overlap when |H xbar_t - H xbar_s| <=
  *    adaptive_jpda_distance * max(sigma_x, sigma_y).

@@ -1,19 +1,19 @@
-/* jpda_approx.c - Cheap JPDA and Suboptimal JPDA per cluster (spec 13.3,
- * 13.4; S1 eq. 2 to 5).  Both work on the sparse gated pairs (no cluster
+/* jpda_approx.c - Cheap JPDA and Suboptimal JPDA per cluster (ALGORITHMS.md §13.3,
+ * §13.4; [S1] eq. 2 to 5).  Both work on the sparse gated pairs (no cluster
  * bound): A_tj = jp.pa of the pair, B_t = jp.tb of the track (jpda.c).
  *
  * Cheap JPDA (Fitzgerald; Blair's beta_t0):
  *   T_t = sum_j A_tj, M_j = sum_t A_tj,
  *   beta_tj = A_tj / (T_t + M_j - A_tj + B_t), beta_t0 = B_t / (T_t + B_t);
- *   normalise = 1 scales each row (beta_t0 and beta_tj) to sum 1 (spec 13.3
+ *   normalise = 1 scales each row (beta_t0 and beta_tj) to sum 1 (ALGORITHMS.md §13.3
  *   CHOICE), 0 leaves the raw values (TV13).
  *
- * Suboptimal JPDA (Roecker, as written in S1 with the errata of spec 13.4):
+ * Suboptimal JPDA (Roecker, as written in S1 with the errata of ALGORITHMS.md §13.4):
  *   L_t = tracks other than t that share a gated measurement with t,
  *   N_sj = max_{k in A_s, k != j} A_sk (0 if none),
  *   D_tj = A_tj if L_t is empty, else A_tj sum_{s in L_t} N_sj,
  *   beta_tj = D_tj / (B'_t + sum_l D_tl), beta_t0 = B'_t / (...),
- *   with B'_t = B_t sum_{s in L_t} max_k A_sk (spec 13.4 CHOICE, per_track_b
+ *   with B'_t = B_t sum_{s in L_t} max_k A_sk (ALGORITHMS.md §13.4 CHOICE, per_track_b
  *   = 1; B'_t = B_t when L_t is empty) or the constant B'_t = B_t. */
 #include "mtt_internal.h"
 

@@ -1,16 +1,16 @@
-/* kalman.c - constant-velocity model and Kalman filter steps.
- *
- * spec 2 (F, Q of continuous white-noise acceleration), spec 3 (predict,
- * closed-form S^-1, Joseph-form update, symmetrisation), spec 6 (the PDA
- * combined update, which with one measurement is also spec 7.4's IHPDA
- * update).  State [x, y, vx, vy], measurement [x, y], H = [I 0]. */
+/* kalman.c - the Kalman filter steps on the motion model of motion.h
+ * (ALGORITHMS.md §3: predict, closed-form S^-1, Joseph-form update,
+ * symmetrisation; §6: the PDA combined update, which with one measurement
+ * is also §7.4's IHPDA update), and the small dense helpers they and the
+ * merge test share (L D L', positive-definite test).  H = [I 0]
+ * (motion.h): S and K read the position block of P only. */
 #include "mtt_internal.h"
 
-void mtt_sym4(mtt_real P[4][4])
+void mtt_sym(mtt_cov P)
 {
     int i, j;
-    for (i = 0; i < 4; ++i) {
-        for (j = i + 1; j < 4; ++j) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = i + 1; j < MTT_STATE_N; ++j) {
             mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
             P[i][j] = s;
             P[j][i] = s;
@@ -18,51 +18,26 @@ void mtt_sym4(mtt_real P[4][4])
     }
 }
 
-void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4])
+int mtt_state_finite(const mtt_real *x)
 {
-    mtt_real q11 = sw * dt * dt * dt / MTT_R(3.0);
-    mtt_real q13 = sw * dt * dt / MTT_R(2.0);
-    mtt_real q33 = sw * dt;
-    int i, j;
-    for (i = 0; i < 4; ++i) {
-        for (j = 0; j < 4; ++j) {
-            Q[i][j] = MTT_R(0.0);
+    int i;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        if (!mtt_isfinite(x[i])) {
+            return 0;
         }
     }
-    Q[0][0] = q11; Q[1][1] = q11;
-    Q[0][2] = q13; Q[2][0] = q13; Q[1][3] = q13; Q[3][1] = q13;
-    Q[2][2] = q33; Q[3][3] = q33;
+    return 1;
 }
 
-void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real P[4][4],
-                        mtt_real xp[4], mtt_real Pp[4][4])
+void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+                        mtt_cov Pp)
 {
-    mtt_real FP[4][4], Q[4][4];
-    int i, j;
-    xp[0] = x[0] + dt * x[2];
-    xp[1] = x[1] + dt * x[3];
-    xp[2] = x[2];
-    xp[3] = x[3];
-    /* F P: rows 0,1 gain dt times rows 2,3 (F is sparse; no 4x4 product). */
-    for (j = 0; j < 4; ++j) {
-        FP[0][j] = P[0][j] + dt * P[2][j];
-        FP[1][j] = P[1][j] + dt * P[3][j];
-        FP[2][j] = P[2][j];
-        FP[3][j] = P[3][j];
-    }
-    mtt_cv_q(dt, sw, Q);
-    /* (F P) F': columns 0,1 gain dt times columns 2,3. */
-    for (i = 0; i < 4; ++i) {
-        Pp[i][0] = FP[i][0] + dt * FP[i][2] + Q[i][0];
-        Pp[i][1] = FP[i][1] + dt * FP[i][3] + Q[i][1];
-        Pp[i][2] = FP[i][2] + Q[i][2];
-        Pp[i][3] = FP[i][3] + Q[i][3];
-    }
-    mtt_sym4(Pp);
+    mtt_motion_predict(dt, sw, x, P, xp, Pp);
+    mtt_sym(Pp);
 }
 
-int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
-                     mtt_real Si[3], mtt_real *det, mtt_real K[4][2])
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
+                     mtt_real K[][2])
 {
     mtt_real d;
     int i;
@@ -71,13 +46,13 @@ int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
     S[2] = Pp[1][1] + R[2];
     d = S[0] * S[2] - S[1] * S[1];
     if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
-        return -1; /* spec 3: the track is numerically invalid */
+        return -1; /* ALGORITHMS.md §3: the track is numerically invalid */
     }
     *det = d;
     Si[0] = S[2] / d;
     Si[1] = -S[1] / d;
     Si[2] = S[0] / d;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         K[i][0] = Pp[i][0] * Si[0] + Pp[i][1] * Si[1];
         K[i][1] = Pp[i][0] * Si[1] + Pp[i][1] * Si[2];
     }
@@ -89,11 +64,12 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
 }
 
-void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
-                    const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
-                    const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4])
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                    mtt_real beta0, mtt_state x, mtt_cov P)
 {
-    mtt_real AP[4][4], A[4][2];
+    mtt_cov AP;
+    mtt_real A[MTT_MAX_STATE][2];
     mtt_real cx = MTT_R(0.0), cy = MTT_R(0.0);
     mtt_real sxx = MTT_R(0.0), sxy = MTT_R(0.0), syy = MTT_R(0.0);
     mtt_real w = MTT_R(1.0) - beta0, m11, m12, m22;
@@ -122,12 +98,12 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
         sxy += bsum * cx * cy;
         syy += bsum * cy * cy;
     }
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         x[i] = xp[i] + K[i][0] * cx + K[i][1] * cy;
     }
     /* P = beta0 Pp + (1 - beta0) P_c + K (sum beta nu nu' - nu_c nu_c') K'
-     * (spec 6, S1 Table 2 erratum applied), with the Joseph form
-     * P_c = A Pp A' + K R K', A = I - K H (spec 3).  Both K . K' terms
+     * (ALGORITHMS.md §6, [S1] Table 2 erratum applied), with the Joseph form
+     * P_c = A Pp A' + K R K', A = I - K H (ALGORITHMS.md §3).  Both K . K' terms
      * share one 2x2 middle matrix M = (1 - beta0) R + spread. */
     m11 = w * R[0] + sxx;
     m12 = w * R[1] + sxy;
@@ -141,23 +117,23 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
     A[0][1] = R[0] * Si[1] + R[1] * Si[2];
     A[1][0] = R[1] * Si[0] + R[2] * Si[1];
     A[1][1] = R[1] * Si[1] + R[2] * Si[2];
-    for (i = 2; i < 4; ++i) {
+    for (i = MTT_MEAS_DIM; i < MTT_STATE_N; ++i) {
         A[i][0] = -K[i][0];
         A[i][1] = -K[i][1];
     }
     /* A Pp: A differs from I only in columns 0 and 1. */
-    for (i = 0; i < 4; ++i) {
-        for (k = 0; k < 4; ++k) {
-            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= 2) ? Pp[i][k] : MTT_R(0.0));
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (k = 0; k < MTT_STATE_N; ++k) {
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= MTT_MEAS_DIM) ? Pp[i][k] : MTT_R(0.0));
         }
     }
     /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
      * symmetric by construction. */
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         const mtt_real a = K[i][0] * m11 + K[i][1] * m12;
         const mtt_real b = K[i][0] * m12 + K[i][1] * m22;
-        for (k = i; k < 4; ++k) {
-            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= 2) ? AP[i][k] : MTT_R(0.0));
+        for (k = i; k < MTT_STATE_N; ++k) {
+            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= MTT_MEAS_DIM) ? AP[i][k] : MTT_R(0.0));
             const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
             P[i][k] = v;
             P[k][i] = v;
@@ -167,10 +143,10 @@ void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
 
 /* A = L D L' (unit lower L) without square roots: cheap on soft float.
  * Returns 0, or -1 when a pivot d_i is not positive and finite. */
-static int ldl4(mtt_real A[4][4], mtt_real L[4][4], mtt_real d[4])
+static int ldl(mtt_cov A, mtt_cov L, mtt_state d)
 {
     int i, j, k;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         mtt_real di = A[i][i];
         for (j = 0; j < i; ++j) {
             mtt_real s = A[i][j];
@@ -188,17 +164,18 @@ static int ldl4(mtt_real A[4][4], mtt_real L[4][4], mtt_real d[4])
     return 0;
 }
 
-int mtt_cov_ok(mtt_real P[4][4], mtt_real rel)
+int mtt_cov_ok(mtt_cov P, mtt_real rel)
 {
-    mtt_real L[4][4], d[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_cov L;
+    mtt_state d = {MTT_R(0.0)};
     int i;
     /* d_i / P_ii is the share of state i's variance not explained by the
      * states before it: scale-free (the squared Cholesky pivots of the
      * correlation matrix). */
-    if (ldl4(P, L, d) != 0) {
+    if (ldl(P, L, d) != 0) {
         return 0;
     }
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         if (!(d[i] > rel * P[i][i])) {
             return 0;
         }
@@ -206,17 +183,18 @@ int mtt_cov_ok(mtt_real P[4][4], mtt_real rel)
     return 1;
 }
 
-int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2)
+int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
 {
-    mtt_real L[4][4], d[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-    mtt_real y[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)}; /* zeroed for static analysis */
+    mtt_cov L;
+    mtt_state d = {MTT_R(0.0)};
+    mtt_state y = {MTT_R(0.0)}; /* zeroed for static analysis */
     mtt_real acc = MTT_R(0.0);
     int i, k;
-    if (ldl4(A, L, d) != 0) {
+    if (ldl(A, L, d) != 0) {
         return -1;
     }
     /* b' A^-1 b = sum y_i^2 / d_i with L y = b: one forward substitution. */
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         mtt_real s = b[i];
         for (k = 0; k < i; ++k) {
             s -= L[i][k] * y[k];

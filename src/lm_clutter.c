@@ -1,16 +1,16 @@
 /* lm_clutter.c - clutter density seen by each gated pair.
  *
- * spec 5.1: known uniform lambda; spec 5.2: when lambda = 0, the per-track
+ * ALGORITHMS.md §5.1: known uniform lambda; §5.2: when lambda = 0, the per-track
  * estimate lambda^ = (m - PD PG P^) / V_G.
- * spec 8.2: the LM density lambda~_j^t = lambda + sum over the OTHER tracks
+ * ALGORITHMS.md §8.2: the LM density lambda~_j^t = lambda + sum over the OTHER tracks
  * s gating j of p_j^s Pt_j^s / (1 - Pt_j^s), with
  * Pt_j^s = PD PG P^s (p_j^s / lambda) / sum_{l in G^s} (p_l^s / lambda).
  * Two passes over the gated pairs: O(pairs).  Only tracks that gate j
- * contribute, which is seed 004's cluster-only computation. */
+ * contribute, which is [S4]'s cluster-only computation. */
 #include "mtt_internal.h"
 
 /* Measurements gated by at most this many tracks sum the other tracks'
- * terms directly; above it, W_j - w (spec 8.2: avoids float cancellation). */
+ * terms directly; above it, W_j - w (ALGORITHMS.md §8.2: avoids float cancellation). */
 #define MTT_LM_DIRECT 4u
 
 mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg)
@@ -21,7 +21,7 @@ mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_
 void mtt_clutter_frame(mtt_tracker *trk, int lm)
 {
     const mtt_real pdpg = trk->par.pd * trk->par.pg;
-    const mtt_real pt_max = MTT_R(1.0) - MTT_R(1e-6); /* spec 16 clamp */
+    const mtt_real pt_max = MTT_R(1.0) - MTT_R(1e-6); /* ALGORITHMS.md §16 clamp */
     uint16_t i, k;
 
     for (i = 0; i < trk->n_tracks; ++i) {
@@ -43,7 +43,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         if (!lm) {
             continue;
         }
-        /* Pass 1: w_j^s.  The uniform lambda cancels inside Pt (spec 8.1). */
+        /* Pass 1: w_j^s.  The uniform lambda cancels inside Pt (ALGORITHMS.md §8.1). */
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             mtt_pair *pp = &trk->pairs[k];
             mtt_real pt = pdpg * tf->ex_pred * pp->p / sum;
@@ -63,7 +63,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         }
         trk->wsum[i] = W;
     }
-    /* Pass 2: lambda~ = lambda + (W_j - w_j^t), clamped at 0 (spec 8.2). */
+    /* Pass 2: lambda~ = lambda + (W_j - w_j^t), clamped at 0 (ALGORITHMS.md §8.2). */
     for (k = 0; k < trk->n_pairs; ++k) {
         mtt_pair *pp = &trk->pairs[k];
         uint16_t j = pp->meas;

@@ -1,4 +1,4 @@
-/* merge.c - track merging (spec 12.3, S0 eq. 17).
+/* merge.c - track merging (ALGORITHMS.md §12.3, [S0] eq. 17).
  *
  * d^2 = (x_a - x_b)' (P_a + P_b)^-1 (x_a - x_b) < t_merge merges.  Only
  * tracks of one cluster are candidates (they share gated measurements
@@ -11,15 +11,16 @@
 
 int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2)
 {
-    mtt_real A[4][4], d[4];
+    mtt_cov A;
+    mtt_state d;
     int i, j;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < MTT_STATE_N; ++i) {
         d[i] = a->x[i] - b->x[i];
-        for (j = 0; j < 4; ++j) {
+        for (j = 0; j < MTT_STATE_N; ++j) {
             A[i][j] = a->P[i][j] + b->P[i][j];
         }
     }
-    return mtt_chol4_quad(A, d, d2);
+    return mtt_chol_quad(A, d, d2);
 }
 
 static int less_cand(const void *pa, const void *pb, const void *ctx)

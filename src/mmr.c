@@ -1,5 +1,5 @@
 /* mmr.c - maximum marginal return assignment with recomputation
- * (spec 10.1; S0 eq. 13; Kolitz 1988).
+ * (ALGORITHMS.md §10.1; [S0] eq. 13; Kolitz 1988).
  *
  * Repeatedly take the global maximum beta of the cluster (ties: lowest track
  * index, then lowest measurement index), assign it, and recompute the rows

@@ -1,10 +1,11 @@
 /* mtt_internal.h - stage functions shared by the source files and the unit
- * tests.  Not installed; not part of the API.  Section numbers refer to
- * ALGORITHMS.md ("spec"). */
+ * tests.  Not installed; not part of the API.  Sections "§N" are those of
+ * docs/ALGORITHMS.md. */
 #ifndef MTT_INTERNAL_H
 #define MTT_INTERNAL_H
 
 #include "mtt/mtt.h"
+#include "motion.h"
 
 #define MTT_MAGIC 0x4d54545fu /* "MTT_" : set by mtt_tracker_init */
 #define MTT_NONE16 ((uint16_t)0xffffu)
@@ -22,36 +23,36 @@ void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less
  * typed compares, no byte swaps. */
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
-/* ---- kalman.c: CV model and Kalman filter (spec 2, 3, 6) ---- */
-void mtt_cv_q(mtt_real dt, mtt_real sw, mtt_real Q[4][4]);
-void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_real x[4], mtt_real P[4][4],
-                        mtt_real xp[4], mtt_real Pp[4][4]);
+/* ---- kalman.c: Kalman filter on the motion model of motion.h (ALGORITHMS.md §3, §6) ---- */
+/* xp = F x, Pp = F P F' + Q through the model, symmetrised (ALGORITHMS.md §2, §3). */
+void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+                        mtt_cov Pp);
 /* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
- * Returns 0, or -1 when det S is not positive and finite (spec 3). */
-int mtt_kalman_innov(mtt_real Pp[4][4], const mtt_real R[3], mtt_real S[3],
-                     mtt_real Si[3], mtt_real *det, mtt_real K[4][2]);
+ * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
+                     mtt_real K[][2]);
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
-/* PDA update with m measurements (spec 6), K and Si = S^-1 from
+/* PDA update with m measurements (ALGORITHMS.md §6), K and Si = S^-1 from
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
- * single-measurement update of spec 7.4, and with m = 0, beta0 = 0 it is
- * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (spec 3). */
-void mtt_kalman_pda(const mtt_real xp[4], mtt_real Pp[4][4], mtt_real K[4][2],
-                    const mtt_real Si[3], const mtt_real R[3], uint16_t m, mtt_real nu[][2],
-                    const mtt_real beta[], mtt_real beta0, mtt_real x[4], mtt_real P[4][4]);
-void mtt_sym4(mtt_real P[4][4]);
+ * single-measurement update of ALGORITHMS.md §7.4, and with m = 0, beta0 = 0 it is
+ * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                    mtt_real beta0, mtt_state x, mtt_cov P);
+void mtt_sym(mtt_cov P);
 /* 1 when the symmetric P is positive definite with margin: every L D L'
  * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
-int mtt_cov_ok(mtt_real P[4][4], mtt_real rel);
+int mtt_cov_ok(mtt_cov P, mtt_real rel);
 /* Margins: a seeded covariance must leave room for a predict and update;
  * a track whose covariance falls below the per-frame one is numerically
- * invalid and deleted (spec 3, extended to P). */
+ * invalid and deleted (ALGORITHMS.md §3, extended to P). */
 #define MTT_SEED_COV_MARGIN (MTT_R(1000.0) * MTT_REAL_EPS)
 #define MTT_FRAME_COV_MARGIN (MTT_R(16.0) * MTT_REAL_EPS)
-/* Solve (A) y = b for a symmetric positive definite 4x4 A by L D L';
- * returns d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
-int mtt_chol4_quad(mtt_real A[4][4], const mtt_real b[4], mtt_real *d2);
+/* Solve A y = b for a symmetric positive definite A by L D L'; returns
+ * d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
+int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
 
-/* ---- gate.c: gating, gate area, likelihood (spec 4) ---- */
+/* ---- gate.c: gating, gate area, likelihood (ALGORITHMS.md §4) ---- */
 mtt_real mtt_gate_gamma(mtt_real pg);
 mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s);
 mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N / PG */
@@ -60,18 +61,18 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
  * pairs per measurement.  Needs trk->tf[].xp/Pp/S/Si/det_s/valid. */
 void mtt_gate_frame(mtt_tracker *trk);
 
-/* ---- lm_clutter.c: clutter densities (spec 5.2, 8) ---- */
+/* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
 mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg);
-/* Frame stage: per-track lambda (known or spec 5.2), then pair.lam = lambda
- * (lm = 0) or the LM density lambda~ (lm = 1, spec 8.2). */
+/* Frame stage: per-track lambda (known or ALGORITHMS.md §5.2), then pair.lam = lambda
+ * (lm = 0) or the LM density lambda~ (lm = 1, ALGORITHMS.md §8.2). */
 void mtt_clutter_frame(mtt_tracker *trk, int lm);
 
-/* ---- ihpda.c: intensity order statistics and IHPDA (spec 7) ---- */
-/* P_r(l | m, rho), l = 1..m, into out[0..m-1], product/recurrence form (spec 7.2). */
+/* ---- ihpda.c: intensity order statistics and IHPDA (ALGORITHMS.md §7) ---- */
+/* P_r(l | m, rho), l = 1..m, into out[0..m-1], product/recurrence form (ALGORITHMS.md §7.2). */
 void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out);
 /* Index of row m (1-based m) of the tabulated P_r triangle. */
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
-/* beta_j and L_j (spec 7.3) of the m candidates; prank = P_r(1..m) for
+/* beta_j and L_j (ALGORITHMS.md §7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
  * NULL) receives the 1-based rank of each candidate. */
 void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
@@ -81,27 +82,40 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
  * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);
  * returns the number of candidates m; *best gets the argmax pair index (-1
  * when m = 0) under the tie rule `rule` (0: lowest measurement index,
- * spec 10.1; 1: smaller rank, then lower index, spec 7.4). */
+ * ALGORITHMS.md §10.1; 1: smaller rank, then lower index, ALGORITHMS.md §7.4). */
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best);
+/* The `ihpda` association: each valid track selects on its full gate
+ * (tie rule 1); the selected measurements are marked used. */
+void mtt_ihpda_select_frame(mtt_tracker *trk);
+/* Final recomputation (ALGORITHMS.md §10.3) of every assigned track's row over G
+ * minus the measurements assigned to other tracks, when that set changed. */
+void mtt_ihpda_final_frame(mtt_tracker *trk);
 
-/* ---- ipda.c: IPDA (spec 6) ---- */
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
-                    uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L);
+/* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
+/* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
+ * beta; beta_0 and L. */
+void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L);
+/* IPDA row of track ti over its gate: pair.beta, tf.beta0 and the updated
+ * existence tf.ex_post. */
+void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
+/* mtt_ipda_track for every valid track with a non-empty gate: the ipda /
+ * lm-ipda association. */
+void mtt_ipda_frame(mtt_tracker *trk);
 
-/* ---- existence.c: Markov chain one and the existence update (spec 11, 6) ---- */
+/* ---- existence.c: Markov chain one and the existence update (ALGORITHMS.md §11, §6) ---- */
 mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21);
 mtt_real mtt_existence_update(mtt_real ex_pred, mtt_real L);
 
-/* ---- cluster.c: clusters by union-find (spec 9) ---- */
+/* ---- cluster.c: clusters by union-find (ALGORITHMS.md §9) ---- */
 void mtt_cluster_frame(mtt_tracker *trk);
 
-/* ---- mmr.c: MMR assignment with recomputation (spec 10.1) ---- */
+/* ---- mmr.c: MMR assignment with recomputation (ALGORITHMS.md §10.1) ---- */
 /* Assigns within cluster c; recompute = 0 runs the static greedy on the
- * pair.beta values as they are (spec 10.1 without recomputation, TV9). */
+ * pair.beta values as they are (ALGORITHMS.md §10.1 without recomputation, TV9). */
 void mtt_mmr_cluster(mtt_tracker *trk, uint16_t c, int recompute);
 
-/* ---- assign2d.c: optimal 2-D assignment (spec 10.2) ---- */
+/* ---- assign2d.c: optimal 2-D assignment (ALGORITHMS.md §10.2) ---- */
 /* Fills w[0..m-1] with the weights (>= 0; 0 = not allowed) of row r. */
 typedef void (*mtt_row_fn)(const void *ctx, uint16_t r, mtt_real *w);
 /* Maximise sum of w over a one-to-one matching of n rows (n <=
@@ -116,53 +130,80 @@ void mtt_assign2d_solve(mtt_assign_scratch *s, uint16_t n, uint16_t m, mtt_row_f
 void mtt_assign2d_cluster(mtt_tracker *trk, uint16_t c);
 void mtt_assign2d_frame(mtt_tracker *trk);
 
-/* ---- jpda.c: exact JPDA, JPDA*, JIPDA (spec 13.1, 13.2, 13.6) and the
- *      per-mode dispatch of the JPDA family ---- */
+/* ---- jpda.c: exact JPDA, JPDA*, JIPDA (ALGORITHMS.md §13.1, §13.2, §13.6) ---- */
 enum { MTT_JPDA_EXACT = 0, MTT_JPDA_STAR = 1, MTT_JPDA_JIPDA = 2 };
-/* Per frame: jp.pa (A of each pair), jp.tb (B of each track) and every
- * track's IPDA existence in tf.ex_post (spec 13, 13.2 CHOICE). */
+/* Per frame: jp.pa (A of each pair), jp.tb (B of each track), tf.beta0 = 1
+ * (ALGORITHMS.md §13). */
 void mtt_jpda_weights(mtt_tracker *trk);
 /* Exact enumeration over cluster c; kind = MTT_JPDA_*.  Writes pair.beta,
  * tf.beta0 (and tf.ex_post for JIPDA).  Returns 0, or -1 (nothing written)
  * when the cluster exceeds MTT_MAX_JPDA_TRACKS / _MEAS / _EVENTS. */
 int mtt_jpda_exact(mtt_tracker *trk, uint16_t c, int kind);
-/* The association stage of the JPDA-family modes, all clusters. */
-void mtt_jpda_frame(mtt_tracker *trk);
 
-/* ---- jpda_approx.c: Cheap and Suboptimal JPDA (spec 13.3, 13.4) ---- */
+/* ---- jpda_approx.c: Cheap and Suboptimal JPDA (ALGORITHMS.md §13.3, §13.4) ---- */
 void mtt_cheap_jpda(mtt_tracker *trk, uint16_t c, int normalise);
-/* per_track_b: the library's B_t of spec 13.4 (1) or the constant B (0). */
+/* per_track_b: the library's B_t of ALGORITHMS.md §13.4 (1) or the constant B (0). */
 void mtt_subopt_jpda(mtt_tracker *trk, uint16_t c, int per_track_b);
 
-/* ---- nnjpda.c: NNJPDA (spec 13.5) ---- */
+/* ---- nnjpda.c: NNJPDA (ALGORITHMS.md §13.5) ---- */
 /* Static MMR on the betas of cluster c with the nnjpda threshold. */
 void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c);
 
-/* ---- jpda_adaptive.c: adaptive JPDA (spec 13.7) ---- */
+/* ---- jpda_adaptive.c: adaptive JPDA (ALGORITHMS.md §13.7) ---- */
 /* Before gating: tf.shrink = 1 for tracks that overlap another track. */
 void mtt_adaptive_gates(mtt_tracker *trk);
 /* After the JPDA betas of cluster c: equal split for shared measurements. */
 void mtt_adaptive_split(mtt_tracker *trk, uint16_t c);
 
-/* ---- update.c: state and existence update of every track (spec 6, 7.4, 10.3) ---- */
+/* ---- associate.c: the association stage and the mode table (ALGORITHMS.md §15.1) ---- */
+enum { MTT_UPDATE_ONE = 0, MTT_UPDATE_PDA = 1, MTT_UPDATE_HARD = 2 };
+/* The association routine of a mode (associate.c's switch). */
+enum {
+    MTT_ASSOCIATE_MMR = 0, MTT_ASSOCIATE_SELECT, MTT_ASSOCIATE_IPDA, MTT_ASSOCIATE_ASSIGN_2D,
+    MTT_ASSOCIATE_JIPDA, MTT_ASSOCIATE_JPDA, MTT_ASSOCIATE_CHEAP_JPDA, MTT_ASSOCIATE_SUBOPT_JPDA,
+    MTT_ASSOCIATE_NNJPDA, MTT_ASSOCIATE_JPDA_STAR, MTT_ASSOCIATE_ADAPTIVE_JPDA
+};
+/* One association mode.  update: what the update stage does with the
+ * association's result -- ONE: the single assigned / selected pair with its
+ * beta and L (ALGORITHMS.md §7.4); PDA: every gated pair with the beta row, beta_0 and
+ * tf.ex_post (ALGORITHMS.md §6, §13.8); HARD: the assigned pair with beta 1 and
+ * tf.ex_post (ALGORITHMS.md §13.5). */
+typedef struct mtt_mode {
+    uint8_t associate;                    /* MTT_ASSOCIATE_*: the routine, after clustering */
+    uint8_t lm;                           /* LM clutter densities (ALGORITHMS.md §8) */
+    uint8_t update;                       /* MTT_UPDATE_* */
+    uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
+} mtt_mode;
+extern const mtt_mode mtt_modes[MTT_ASSOC_COUNT];
+/* Clusters, then the mode's association; PDA modes mark every gated
+ * measurement used. */
+void mtt_associate_frame(mtt_tracker *trk);
+
+/* ---- update.c: state and existence update of every track (ALGORITHMS.md §6, §7.4, §10.3) ---- */
 void mtt_update_frame(mtt_tracker *trk);
 
-/* ---- initiate.c: two-point initiation (spec 12.1, 12.2) ---- */
+/* ---- initiate.c: two-point initiation (ALGORITHMS.md §12.1, §12.2) ---- */
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I);
-/* Two-point covariance [[R, R/dt], [R/dt, 2R/dt^2]] for a full R (spec 12.1). */
-void mtt_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_real P[4][4]);
 /* Velocity/intensity gate of a pair (a at k-1, b at k); 1 = accept. */
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt);
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
 
-/* ---- merge.c: track merging (spec 12.3) ---- */
+/* ---- merge.c: track merging (ALGORITHMS.md §12.3) ---- */
 /* d^2 of two states; returns -1 when P_a + P_b is not positive definite. */
 int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
-/* ---- tracker.c ---- */
+/* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n);
+
+/* ---- predict.c: prediction, S, S^-1 and gain of every track (§2, §3, §11) ---- */
+void mtt_predict_frame(mtt_tracker *trk, mtt_real dt);
+
+/* ---- track_table.c: the track table (§12.4) ---- */
 /* Append a track; returns its index or -1 when the table is full. */
-int mtt_track_append(mtt_tracker *trk, const mtt_real x[4], mtt_real P[4][4],
-                     mtt_real existence, int confirmed, int born);
+int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real existence,
+                     int confirmed, int born);
+/* End of frame: delete, confirm, compact. */
+void mtt_track_manage(mtt_tracker *trk);
 
 #endif /* MTT_INTERNAL_H */

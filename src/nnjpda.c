@@ -1,4 +1,4 @@
-/* nnjpda.c - NNJPDA (spec 13.5; S1 section 3).
+/* nnjpda.c - NNJPDA (ALGORITHMS.md §13.5; [S1] section 3).
  *
  * The exact JPDA betas of the cluster (jpda.c, Cheap JPDA beyond its
  * bounds) resolve the conflicts by static MMR (mmr.c without
@@ -7,7 +7,7 @@
  * are not assignable.  A beta > 0.5 is the largest of its row and of its
  * column, so it is always selected.  update.c then makes a hard Kalman
  * update with the assigned measurement; only assigned measurements are
- * used (spec 15.1), the others go to initiation. */
+ * used (ALGORITHMS.md §15.1), the others go to initiation. */
 #include "mtt_internal.h"
 
 #if MTT_WITH_BASELINES

@@ -1,15 +1,12 @@
-/* params.c - parameter defaults (docs/FORMATS.md, the IR set-up of [S0]),
+/* params.c - parameter defaults (docs/FORMATS.md, [S0]'s IR set-up),
  * validation against the ranges of params_table.h that names the first bad
- * field, and the names of the modes. */
+ * field, and the status texts.  The mode names live with the mode table
+ * (associate.c). */
 #include <stddef.h>
 #include <string.h>
 
 #include "mtt_internal.h"
 #include "params_table.h"
-
-const char *const mtt_assoc_names[MTT_ASSOC_COUNT] = {
-    "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
-    "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"};
 
 mtt_status mtt_params_default(mtt_params *p)
 {
@@ -120,8 +117,8 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         return MTT_ERR_NULL;
     }
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, MTT_PARAM_NO_FLAG, CHECK_ENUM)
-    if (bad == NULL && !MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
-        bad = "association"; /* built with MTT_WITH_BASELINES 0 */
+    if (bad == NULL && !MTT_WITH_BASELINES && mtt_modes[p->association].baseline) {
+        bad = "association"; /* a baseline, built with MTT_WITH_BASELINES 0 */
         st = MTT_ERR_UNSUPPORTED;
     }
     for (k = 0; k < MTT_RULE_COUNT && bad == NULL; ++k) {
@@ -138,56 +135,14 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     return st;
 }
 
-mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
-{
-    if (name == NULL) {
-        return MTT_ERR_NULL;
-    }
-    if ((int)a < 0 || (int)a >= (int)MTT_ASSOC_COUNT) {
-        return MTT_ERR_RANGE;
-    }
-    *name = mtt_assoc_names[a];
-    return MTT_OK;
-}
-
-/* strcmp(a, b) == 0 without libc's strcmp (0.7 KiB on newlib); the names
- * are short, so at most 16 characters are compared. */
-static int same_text(const char *a, const char *b)
-{
-    int i;
-    for (i = 0; i < 16; ++i) {
-        if (a[i] != b[i]) {
-            return 0;
-        }
-        if (a[i] == '\0') {
-            return 1;
-        }
-    }
-    return 0;
-}
-
-mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
-{
-    int k;
-    if (name == NULL || a == NULL) {
-        return MTT_ERR_NULL;
-    }
-    for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
-        if (same_text(name, mtt_assoc_names[k])) {
-            *a = (mtt_assoc)k;
-            return MTT_OK;
-        }
-    }
-    return MTT_ERR_RANGE;
-}
-
 mtt_status mtt_status_text(mtt_status s, const char **text)
 {
     static const char *const texts[] = {
         "ok", "null pointer", "invalid parameter", "tracker not initialised",
         "time not finite or not increasing", "index or count out of range",
         "track table full", "state or covariance not finite or not positive definite",
-        "association mode not built into this version"};
+        "association mode not built into this version",
+        "configuration mismatch"};
     int k = -(int)s;
     if (text == NULL) {
         return MTT_ERR_NULL;

@@ -1,7 +1,8 @@
-/* sort.c - heap sort and heap sift over small fixed arrays.
+/* sort.c - heap sort and heap sift over small fixed arrays, and the
+ * stable x sort of the gating sweep (ALGORITHMS.md §4, §16).
  *
  * Heap sort because it is O(n log n) in the worst case, needs no recursion
- * and no scratch memory (DESIGN.md: bounded cost, no recursion).  It is not
+ * and no scratch memory (docs/DESIGN.md: bounded cost, no recursion).  It is not
  * stable, so every comparator breaks ties on an index: the order is total
  * and the result deterministic. */
 #include "mtt_internal.h"

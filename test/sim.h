@@ -7,6 +7,8 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "mtt/mtt.h"
+
 typedef struct { uint64_t s; } sim_rng;
 
 static inline uint64_t sim_next(sim_rng *r)
@@ -41,5 +43,43 @@ static inline int sim_poisson(sim_rng *r, double mean)
     return k - 1;
 }
 
+
+/* One detection. */
+static inline mtt_meas sim_meas(mtt_real x, mtt_real y, mtt_real a, int has)
+{
+    mtt_meas m;
+    m.x = x;
+    m.y = y;
+    m.amplitude = a;
+    m.has_amplitude = has;
+    return m;
+}
+
+/* Seven detections: five bad ones (NaN x, Inf y, negative, NaN and Inf
+ * amplitude) and good ones at input indices 4 and 5 (the second without
+ * amplitude, its negative value ignored). */
+static inline void sim_bad_mix(mtt_meas m[7])
+{
+    volatile mtt_real zero = MTT_R(0.0);
+    m[0] = sim_meas(zero / zero, MTT_R(1.0), MTT_R(1.0), 1);
+    m[1] = sim_meas(MTT_R(1.0), MTT_R(1.0) / zero, MTT_R(1.0), 1);
+    m[2] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 1);
+    m[3] = sim_meas(MTT_R(5.0), MTT_R(5.0), zero / zero, 1);
+    m[4] = sim_meas(MTT_R(10.0), MTT_R(20.0), MTT_R(2.0), 1);
+    m[5] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 0);
+    m[6] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(1.0) / zero, 1);
+}
+
+/* n detections with amplitudes i * 7 mod n, a permutation of 0..n-1 when n
+ * is not a multiple of 7: the inputs with amplitude >= n - keep are the
+ * strongest keep. */
+static inline void sim_amplitude_permutation(mtt_meas *m, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        m[i] = sim_meas((mtt_real)(i % 97u) * MTT_R(10.0), (mtt_real)(i / 97u) * MTT_R(10.0),
+                        (mtt_real)((i * 7u) % n), 1);
+    }
+}
 
 #endif

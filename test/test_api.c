@@ -1,9 +1,11 @@
-/* test_api.c - bounds, bad data and API misuse through the public API
- * (issue 2, end-to-end d and e; DESIGN.md "Errors and bad input"). */
+/* test_api.c - bounds, bad data and API misuse through the public API only
+ * (docs/DESIGN.md "Errors and bad input"); which measurements the cap
+ * keeps is checked stage-side in test_measure.c. */
 #include <math.h>
 #include <string.h>
 
-#include "mtt_internal.h"
+#include "mtt/mtt.h"
+#include "sim.h"
 #include "unity.h"
 
 static mtt_tracker trk, copy;
@@ -20,45 +22,20 @@ static void init_default(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
 }
 
-static mtt_meas mk(mtt_real x, mtt_real y, mtt_real a, int has)
-{
-    mtt_meas m;
-    m.x = x;
-    m.y = y;
-    m.amplitude = a;
-    m.has_amplitude = has;
-    return m;
-}
-
 /* (d) 3 x MTT_MAX_MEAS measurements: the strongest MTT_MAX_MEAS stay, in
  * input order, and the rest are counted. */
 void test_overflow_keeps_strongest(void)
 {
     const uint32_t n = 3u * MTT_MAX_MEAS;
     mtt_stats st;
-    uint32_t i, kept_prev = 0;
     init_default();
-    /* Amplitude is a permutation of 0..n-1 (i * 7 mod n, n not a multiple of 7),
-     * so exactly the inputs with amplitude >= 2 MTT_MAX_MEAS are the strongest. */
-    for (i = 0; i < n; ++i) {
-        uint32_t a = (i * 7u) % n;
-        big[i] = mk((mtt_real)(i % 97u) * MTT_R(10.0), (mtt_real)(i / 97u) * MTT_R(10.0), (mtt_real)a, 1);
-    }
     TEST_ASSERT_EQUAL_INT(0, (int)(n % 7u == 0u));
+    sim_amplitude_permutation(big, n);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(n, st.last.meas_in);
     TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, st.last.meas_dropped);
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_bad);
-    TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, trk.n_meas);
-    for (i = 0; i < trk.n_meas; ++i) {
-        uint32_t src = trk.meas[i].src;
-        TEST_ASSERT_TRUE((src * 7u) % n >= 2u * MTT_MAX_MEAS);
-        if (i > 0) {
-            TEST_ASSERT_TRUE(src > kept_prev); /* input order kept */
-        }
-        kept_prev = src;
-    }
 }
 
 /* Without amplitudes, the first MTT_MAX_MEAS inputs stay. */
@@ -69,12 +46,12 @@ void test_overflow_without_amplitude_keeps_first(void)
     uint32_t i;
     init_default();
     for (i = 0; i < n; ++i) {
-        big[i] = mk((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
+        big[i] = sim_meas((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_dropped);
-    TEST_ASSERT_EQUAL_UINT32(MTT_MAX_MEAS - 1u, trk.meas[trk.n_meas - 1u].src);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_bad);
 }
 
 /* (e) Bad data inside a valid call is skipped and counted. */
@@ -82,25 +59,16 @@ void test_bad_data_skipped_and_counted(void)
 {
     mtt_meas m[7];
     mtt_stats st;
-    volatile mtt_real zero = MTT_R(0.0);
     init_default();
-    m[0] = mk(zero / zero, MTT_R(1.0), MTT_R(1.0), 1);       /* NaN x */
-    m[1] = mk(MTT_R(1.0), MTT_R(1.0) / zero, MTT_R(1.0), 1); /* Inf y */
-    m[2] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 1);       /* negative amplitude */
-    m[3] = mk(MTT_R(5.0), MTT_R(5.0), zero / zero, 1);       /* NaN amplitude */
-    m[4] = mk(MTT_R(10.0), MTT_R(20.0), MTT_R(2.0), 1);      /* good */
-    m[5] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 0);       /* no amplitude: value ignored, good */
-    m[6] = mk(MTT_R(5.0), MTT_R(5.0), MTT_R(1.0) / zero, 1); /* Inf amplitude */
+    sim_bad_mix(m); /* five bad, good ones at 4 and 5 */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 7));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(7u, st.last.meas_in);
     TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_bad);
-    TEST_ASSERT_EQUAL_UINT(2u, trk.n_meas);
-    TEST_ASSERT_EQUAL_UINT32(4u, trk.meas[0].src);
-    TEST_ASSERT_EQUAL_UINT32(5u, trk.meas[1].src);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_dropped);
     /* Both good detections still pair with the next frame's one (within
      * vmax = 60 of it: 2.2 and 17.5 away): two births. */
-    m[0] = mk(MTT_R(12.0), MTT_R(21.0), MTT_R(2.0), 1);
+    m[0] = sim_meas(MTT_R(12.0), MTT_R(21.0), MTT_R(2.0), 1);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(2u, st.last.births);
@@ -110,7 +78,7 @@ void test_bad_data_skipped_and_counted(void)
 /* (e) API misuse returns an error and changes nothing. */
 void test_misuse_changes_nothing(void)
 {
-    mtt_meas m = mk(MTT_R(1.0), MTT_R(2.0), MTT_R(1.0), 1);
+    mtt_meas m = sim_meas(MTT_R(1.0), MTT_R(2.0), MTT_R(1.0), 1);
     volatile mtt_real zero = MTT_R(0.0);
     mtt_params p;
     mtt_track_view v;
@@ -191,9 +159,9 @@ void test_full_table(void)
     }
     TEST_ASSERT_EQUAL_INT(MTT_ERR_FULL, mtt_tracker_add_track(&trk, x, P, &id));
     /* two frames with a far-away detection pair: a birth is wanted, none possible */
-    m[0] = mk(MTT_R(-5000.0), MTT_R(-5000.0), MTT_R(1.0), 1);
+    m[0] = sim_meas(MTT_R(-5000.0), MTT_R(-5000.0), MTT_R(1.0), 1);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 1));
-    m[0] = mk(MTT_R(-4998.0), MTT_R(-5000.0), MTT_R(1.0), 1);
+    m[0] = sim_meas(MTT_R(-4998.0), MTT_R(-5000.0), MTT_R(1.0), 1);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.births);
@@ -214,7 +182,7 @@ void test_deterministic(void)
     for (k = 0; k < 30; ++k) {
         for (j = 0; j < 20; ++j) {
             unsigned h = (unsigned)(k * 131 + j * 71) % 997u;
-            m[j] = mk((mtt_real)h * MTT_R(0.3) + (mtt_real)k, (mtt_real)(j * 11),
+            m[j] = sim_meas((mtt_real)h * MTT_R(0.3) + (mtt_real)k, (mtt_real)(j * 11),
                       (mtt_real)(h % 13u), (int)(h % 3u != 0u));
         }
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k, m, 20));
@@ -238,7 +206,7 @@ void test_cycle_counter(void)
 {
     mtt_params p;
     mtt_stats st;
-    mtt_meas m = mk(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), 1);
+    mtt_meas m = sim_meas(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), 1);
     int s;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.cycle_counter = tick;
@@ -248,6 +216,29 @@ void test_cycle_counter(void)
     for (s = 0; s < MTT_STAGE_COUNT; ++s) {
         TEST_ASSERT_EQUAL_UINT32(10u, st.stage_cycles[s]); /* one tick per stage */
     }
+}
+
+/* mtt_tracker_init passes the caller's sizeof(mtt_tracker) and
+ * MTT_CONFIG_ID; another size or identity is refused before the tracker or
+ * the parameters are touched (the consumer tests build real mismatches). */
+static void test_init_refuses_other_configuration(void)
+{
+    static mtt_tracker t;
+    mtt_params p;
+    const unsigned char *b = (const unsigned char *)&t;
+    size_t i;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    memset(&t, 0xa5, sizeof t);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_init_checked(&t, &p, sizeof t - 4u, (uint32_t)(MTT_CONFIG_ID)));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_init_checked(&t, &p, sizeof t, (uint32_t)(MTT_CONFIG_ID) ^ 1u));
+    for (i = 0; i < sizeof t; ++i) {
+        TEST_ASSERT_EQUAL_HEX8(0xa5, b[i]);
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_init_checked(NULL, &p, sizeof t, 0u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init_checked(&t, &p, sizeof t, (uint32_t)(MTT_CONFIG_ID)));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&t, &p));
 }
 
 int main(void)
@@ -260,5 +251,6 @@ int main(void)
     RUN_TEST(test_full_table);
     RUN_TEST(test_deterministic);
     RUN_TEST(test_cycle_counter);
+    RUN_TEST(test_init_refuses_other_configuration);
     return UNITY_END();
 }

@@ -1,10 +1,11 @@
-/* test_assign2d.c - optimal 2-D assignment (spec 10.2) and the ihpda-2d
+/* test_assign2d.c - optimal 2-D assignment (ALGORITHMS.md §10.2) and the ihpda-2d
  * mode's cluster stage: TV9 (static matrix), TV8 (optimal result with the
- * final recomputation of spec 10.3), and the solver against brute force. */
+ * final recomputation of ALGORITHMS.md §10.3), and the solver against brute force. */
 #include <string.h>
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -130,9 +131,9 @@ static void test_optimal_vs_brute_force(void)
 
 static uint16_t add_track_s(double zx, double zy, double s11, double s12, double s22, double ex)
 {
-    uint16_t i = trk.n_tracks++;
+    uint16_t i = TV_N_TRACKS(&trk)++;
     mtt_track_frame *tf = &trk.tf[i];
-    mtt_track *t = &trk.tracks[i];
+    mtt_track *t = TV_TRACK(&trk, i);
     memset(tf, 0, sizeof *tf);
     memset(t, 0, sizeof *t);
     tf->xp[0] = (mtt_real)zx;
@@ -155,20 +156,20 @@ static uint16_t add_track_s(double zx, double zy, double s11, double s12, double
 
 static void add_meas(double x, double y, double amp)
 {
-    mtt_mstore *m = &trk.meas[trk.n_meas];
+    mtt_mstore *m = &trk.meas[TV_N_MEAS(&trk)];
     memset(m, 0, sizeof *m);
     m->x = (mtt_real)x;
     m->y = (mtt_real)y;
     m->amp = (mtt_real)amp;
     m->has_amp = 1;
-    m->src = trk.n_meas++;
+    m->src = TV_N_MEAS(&trk)++;
 }
 
 static int pair_of(uint16_t t, uint16_t j)
 {
     uint16_t k;
-    for (k = 0; k < trk.n_pairs; ++k) {
-        if (trk.pairs[k].track == t && trk.pairs[k].meas == j) {
+    for (k = 0; k < TV_N_PAIRS(&trk); ++k) {
+        if (TV_PAIR_TRACK(&trk, k) == t && TV_PAIR_MEAS(&trk, k) == j) {
             return (int)k;
         }
     }
@@ -192,23 +193,24 @@ static void test_tv8_optimal_and_final_recomputation(void)
     add_meas(2.4, 0.9, 120);             /* TV8 z2 */
     add_meas(6.8, 2.5, 70);              /* TV8 z3 */
     mtt_gate_frame(&trk);
-    mtt_clutter_frame(&trk, 1); /* TV8 uses the LM matrix (spec 10.2: lambda~ in LM mode) */
+    mtt_clutter_frame(&trk, 1); /* TV8 uses the LM matrix (ALGORITHMS.md §10.2: lambda~ in LM mode) */
     mtt_cluster_frame(&trk);
     mtt_assign2d_frame(&trk);
-    TEST_ASSERT_EQUAL_INT(pair_of(0, 0), trk.tf[0].assigned); /* TV8: T1 -> z1 */
-    TEST_ASSERT_EQUAL_INT(pair_of(1, 1), trk.tf[1].assigned); /* TV8: T2 -> z2 */
-    sum = (double)trk.pairs[trk.tf[0].assigned].beta + (double)trk.pairs[trk.tf[1].assigned].beta;
+    TEST_ASSERT_EQUAL_INT(pair_of(0, 0), TV_ASSIGNED(&trk, 0)); /* TV8: T1 -> z1 */
+    TEST_ASSERT_EQUAL_INT(pair_of(1, 1), TV_ASSIGNED(&trk, 1)); /* TV8: T2 -> z2 */
+    sum = (double)TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 0)) + (double)TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 1));
     TV_ASSERT_REAL(1.235805911, sum); /* TV8: sum of beta of the optimal assignment */
-    TV_ASSERT_REAL(0.4294519828, trk.pairs[pair_of(0, 0)].beta); /* TV8 initial matrix */
-    TV_ASSERT_REAL(0.8063539279, trk.pairs[pair_of(1, 1)].beta);
+    TV_ASSERT_REAL(0.4294519828, TV_PAIR_BETA(&trk, pair_of(0, 0))); /* TV8 initial matrix */
+    TV_ASSERT_REAL(0.8063539279, TV_PAIR_BETA(&trk, pair_of(1, 1)));
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
-    TV_ASSERT_REAL(0.9923727825, trk.pairs[pair_of(0, 0)].beta); /* TV8 final: T1 beta */
-    TV_ASSERT_REAL(0.9828071472, trk.tracks[0].existence);       /* TV8 final: T1 P */
-    TV_ASSERT_REAL(0.8063539279, trk.pairs[pair_of(1, 1)].beta); /* TV8 final: T2 beta */
-    TV_ASSERT_REAL(0.6605542449, trk.tracks[1].existence);       /* TV8 final: T2 P */
-    TEST_ASSERT_EQUAL_INT(0, (int)trk.tracks[0].meas);
-    TEST_ASSERT_EQUAL_INT(1, (int)trk.tracks[1].meas);
-    TEST_ASSERT_EQUAL_UINT32(0u, trk.stats.last.assign_fallbacks);
+    TV_ASSERT_REAL(0.9923727825, TV_PAIR_BETA(&trk, pair_of(0, 0))); /* TV8 final: T1 beta */
+    TV_ASSERT_REAL(0.9828071472, TV_EXISTENCE(&trk, 0));       /* TV8 final: T1 P */
+    TV_ASSERT_REAL(0.8063539279, TV_PAIR_BETA(&trk, pair_of(1, 1))); /* TV8 final: T2 beta */
+    TV_ASSERT_REAL(0.6605542449, TV_EXISTENCE(&trk, 1));       /* TV8 final: T2 P */
+    TEST_ASSERT_EQUAL_INT(0, (int)TV_TRACK_MEAS(&trk, 0));
+    TEST_ASSERT_EQUAL_INT(1, (int)TV_TRACK_MEAS(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.assign_fallbacks);
 }
 
 #if MTT_MAX_TRACKS > MTT_MAX_ASSIGN_TRACKS
@@ -228,11 +230,11 @@ static void test_large_cluster_falls_back_to_mmr(void)
     mtt_gate_frame(&trk);
     mtt_clutter_frame(&trk, 0);
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT16(1u, trk.n_clusters);
+    TEST_ASSERT_EQUAL_UINT16(1u, TV_N_CLUSTERS(&trk));
     mtt_assign2d_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.assign_fallbacks);
+    TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.assign_fallbacks);
     for (i = 0; i <= MTT_MAX_ASSIGN_TRACKS; ++i) {
-        TEST_ASSERT_TRUE(trk.tf[i].assigned >= 0); /* one measurement each */
+        TEST_ASSERT_TRUE(TV_ASSIGNED(&trk, i) >= 0); /* one measurement each */
     }
 }
 #endif

@@ -1,4 +1,4 @@
-/* test_cluster.c - clusters of the gating graph by union-find (spec 9, TV8b). */
+/* test_cluster.c - clusters of the gating graph by union-find (ALGORITHMS.md §9, TV8b). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -35,9 +35,9 @@ static unsigned cluster_meas(uint16_t c)
 {
     unsigned mask = 0;
     uint16_t k;
-    for (k = 0; k < trk.n_pairs; ++k) {
-        if (trk.tf[trk.pairs[k].track].cluster == c) {
-            mask |= 1u << trk.pairs[k].meas;
+    for (k = 0; k < TV_N_PAIRS(&trk); ++k) {
+        if (TV_CLUSTER_OF(&trk, TV_PAIR_TRACK(&trk, k)) == c) {
+            mask |= 1u << TV_PAIR_MEAS(&trk, k);
         }
     }
     return mask;
@@ -49,31 +49,31 @@ static void test_tv8b(void)
     static const uint16_t g[6][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 2}, {2, 3}, {3, 3}};
     build(5, 5, g, 6);
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(3, trk.n_clusters);
+    TEST_ASSERT_EQUAL_UINT(3, TV_N_CLUSTERS(&trk));
     /* cluster 1: tracks {T1, T2}, measurements {z1, z2, z3} */
-    TEST_ASSERT_EQUAL_UINT(0, trk.cl_first[0]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.cl_first[1]);
-    TEST_ASSERT_EQUAL_UINT(0, trk.cl_list[0]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.cl_list[1]);
+    TEST_ASSERT_EQUAL_UINT(0, TV_CL_FIRST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_CL_FIRST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(0, TV_CL_LIST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CL_LIST(&trk, 1));
     TEST_ASSERT_EQUAL_HEX(0x7u, cluster_meas(0));
     /* cluster 2: tracks {T3, T4}, measurements {z4} */
-    TEST_ASSERT_EQUAL_UINT(4, trk.cl_first[2]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.cl_list[2]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.cl_list[3]);
+    TEST_ASSERT_EQUAL_UINT(4, TV_CL_FIRST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(2, TV_CL_LIST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(3, TV_CL_LIST(&trk, 3));
     TEST_ASSERT_EQUAL_HEX(0x8u, cluster_meas(1));
     /* cluster 3: tracks {T5}, measurements {} */
-    TEST_ASSERT_EQUAL_UINT(5, trk.cl_first[3]);
-    TEST_ASSERT_EQUAL_UINT(4, trk.cl_list[4]);
+    TEST_ASSERT_EQUAL_UINT(5, TV_CL_FIRST(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(4, TV_CL_LIST(&trk, 4));
     TEST_ASSERT_EQUAL_HEX(0x0u, cluster_meas(2));
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].cluster);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[1].cluster);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tf[2].cluster);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tf[3].cluster);
-    TEST_ASSERT_EQUAL_UINT(2, trk.tf[4].cluster);
+    TEST_ASSERT_EQUAL_UINT(0, TV_CLUSTER_OF(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(0, TV_CLUSTER_OF(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CLUSTER_OF(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CLUSTER_OF(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(2, TV_CLUSTER_OF(&trk, 4));
     /* measurements in no gate: {z5} */
-    TEST_ASSERT_EQUAL_UINT(trk.mp_first[4], trk.mp_first[5]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.stats.last.clusters);
-    TEST_ASSERT_EQUAL_UINT(2, trk.stats.max_cluster_tracks);
+    TEST_ASSERT_EQUAL_UINT(TV_MP_FIRST(&trk, 4), TV_MP_FIRST(&trk, 5));
+    TEST_ASSERT_EQUAL_UINT(3, TV_STATS(&trk).last.clusters);
+    TEST_ASSERT_EQUAL_UINT(2, TV_STATS(&trk).max_cluster_tracks);
 }
 
 static void test_order_by_smallest_track(void)
@@ -84,12 +84,12 @@ static void test_order_by_smallest_track(void)
     static const uint16_t g[6][2] = {{0, 3}, {1, 0}, {1, 1}, {3, 3}, {4, 1}, {4, 2}};
     build(5, 5, g, 6);
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(3, trk.n_clusters);
-    TEST_ASSERT_EQUAL_UINT(0, trk.cl_list[0]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.cl_list[1]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.cl_list[2]);
-    TEST_ASSERT_EQUAL_UINT(4, trk.cl_list[3]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.cl_list[4]);
+    TEST_ASSERT_EQUAL_UINT(3, TV_N_CLUSTERS(&trk));
+    TEST_ASSERT_EQUAL_UINT(0, TV_CL_LIST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(3, TV_CL_LIST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CL_LIST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(4, TV_CL_LIST(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(2, TV_CL_LIST(&trk, 4));
     TEST_ASSERT_EQUAL_HEX(0x8u, cluster_meas(0));
     TEST_ASSERT_EQUAL_HEX(0x7u, cluster_meas(1));
     TEST_ASSERT_EQUAL_HEX(0x0u, cluster_meas(2));
@@ -101,21 +101,21 @@ static void test_chain_joins_transitively(void)
     static const uint16_t g[6][2] = {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {3, 2}};
     build(4, 3, g, 6);
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_clusters);
-    TEST_ASSERT_EQUAL_UINT(4, trk.cl_first[1]);
-    TEST_ASSERT_EQUAL_UINT(4, trk.stats.max_cluster_tracks);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_CLUSTERS(&trk));
+    TEST_ASSERT_EQUAL_UINT(4, TV_CL_FIRST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(4, TV_STATS(&trk).max_cluster_tracks);
 }
 
 static void test_invalid_track_has_no_cluster(void)
 {
     static const uint16_t g[2][2] = {{0, 0}, {2, 0}};
     build(3, 1, g, 2);
-    trk.tf[1].valid = 0;
+    TV_VALID(&trk, 1) = 0;
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_clusters);
-    TEST_ASSERT_EQUAL_UINT(MTT_NONE16, trk.tf[1].cluster);
-    TEST_ASSERT_EQUAL_UINT(0, trk.cl_list[0]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.cl_list[1]);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_CLUSTERS(&trk));
+    TEST_ASSERT_EQUAL_UINT(MTT_NONE16, TV_CLUSTER_OF(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(0, TV_CL_LIST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_CL_LIST(&trk, 1));
 }
 
 int main(void)

@@ -1,12 +1,12 @@
-/* test_e2e.c - whole-tracker scenarios (issue 2, end-to-end a-c):
+/* test_e2e.c - whole-tracker scenarios (end-to-end a-c):
  * deterministic simulated scenes through the public API, asserting tracking
  * outcomes.  Frame counts that the outcome depends on are computed here from
- * the parameters with the spec's existence recursion (spec 6, 7.3, 11),
+ * the parameters with the spec's existence recursion (ALGORITHMS.md §6, §7.3, §11),
  * never hard-coded. */
 #include <math.h>
 #include <string.h>
 
-#include "mtt_internal.h"
+#include "mtt/mtt.h"
 #include "sim.h"
 #include "unity.h"
 
@@ -31,8 +31,8 @@ static int find_view(uint32_t id, mtt_track_view *out)
 }
 
 /* Frames from birth (existence_init) to confirmation when the target is
- * detected every frame with likelihood ratio L per frame (spec 7.3 m = 1,
- * spec 11): P^ = p11 P, P = L P^ / (1 - P^ + L P^). */
+ * detected every frame with likelihood ratio L per frame (ALGORITHMS.md §7.3 m = 1,
+ * ALGORITHMS.md §11): P^ = p11 P, P = L P^ / (1 - P^ + L P^). */
 static int frames_to_confirm(const mtt_params *p, double L)
 {
     double P = (double)p->existence_init;
@@ -46,7 +46,7 @@ static int frames_to_confirm(const mtt_params *p, double L)
 }
 
 /* Likelihood ratio of a single gated measurement at squared distance d2
- * for innovation determinant detS (spec 7.3, m = 1): A + C with
+ * for innovation determinant detS (ALGORITHMS.md §7.3, m = 1): A + C with
  * A = PD PG p / lambda, C = 1 - PD PG. */
 static double single_L(const mtt_params *p, double d2, double detS)
 {
@@ -78,12 +78,18 @@ void test_one_target_in_clutter(void)
      * poor measurement, d2 = 6 (95 % of chi-square 2 lies below), with the
      * largest S of the first frames: the two-point P predicted once. */
     {
-        mtt_real P0[4][4], xp[4], Pp[4][4], x0[4] = {0, 0, 0, 0};
-        mtt_real S[3], Si[3], det, K[4][2];
-        mtt_two_point_cov(trk.R, MTT_R(1.0), P0);
-        mtt_kalman_predict(MTT_R(1.0), p.process_psd, x0, P0, xp, Pp);
-        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, trk.R, S, Si, &det, K));
-        detS_max = (double)det;
+        /* Two-point P (ALGORITHMS.md §12.1) with dT = 1, predicted once by
+         * the CV model (§2): the position variance R + 2R/dT + 2R/dT^2 +
+         * Sw dT^3/3 = 5R + Sw/3 per axis, no x-y term; S adds R. */
+        mtt_real P0[4][4];
+        const double sx = (double)p.meas_sigma[0], sy = (double)p.meas_sigma[1];
+        const double q = (double)p.process_psd / 3.0;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(p.meas_sigma[0], p.meas_sigma[1],
+                                                             MTT_R(1.0), P0));
+        TEST_ASSERT_TRUE(fabs((double)P0[2][2] - 2.0 * sx * sx) < 1e-6 * sx * sx); /* 2R/dT^2 */
+        detS_max = ((double)P0[0][0] + 2.0 * (double)P0[0][2] + (double)P0[2][2] + q + sx * sx) *
+                   ((double)P0[1][1] + 2.0 * (double)P0[1][3] + (double)P0[3][3] + q + sy * sy);
+        TEST_ASSERT_TRUE(fabs(detS_max - (6.0 * sx * sx + q) * (6.0 * sy * sy + q)) < 1e-9 * detS_max);
     }
     /* +1: a track is born at the second detection and first updated at the third. */
     n_confirm = frames_to_confirm(&p, single_L(&p, 6.0, detS_max)) + 1;
@@ -251,7 +257,7 @@ void test_disappearing_target_deleted(void)
             TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
             TEST_ASSERT_TRUE(v.confirmed);
             id = v.id;
-            /* Empty frames: P^ = p11 P, L = 1 - PD PG (spec 7.4 m = 0). */
+            /* Empty frames: P^ = p11 P, L = 1 - PD PG (ALGORITHMS.md §7.4 m = 0). */
             P = (double)v.existence;
             while (P >= (double)p.terminate_threshold) {
                 double Pb = (double)p.markov_p11 * P, L = 1.0 - (double)p.pd * (double)p.pg;

@@ -1,5 +1,5 @@
 /* test_existence.c - Markov chain one prediction (TV7) and the L-form
- * existence update with its clamping (spec 6, 11, 16). */
+ * existence update with its clamping (ALGORITHMS.md §6, §11, §16). */
 #include "mtt_internal.h"
 #include "tv_assert.h"
 #include "unity.h"

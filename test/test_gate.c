@@ -1,5 +1,5 @@
 /* test_gate.c - gate threshold, gate area, likelihood, gate test and the
- * gate frame stage.  Expected numbers: test_vectors.md TV3 (and TV8 for the
+ * gate frame stage.  Expected numbers: docs/TEST_VECTORS.md TV3 (and TV8 for the
  * two-track frame). */
 #include <string.h>
 
@@ -90,30 +90,30 @@ static void test_tv3_gate_frame(void)
     static const uint16_t want_meas[4] = {0, 1, 2, 4}; /* TV3: c4 not gated */
     int k;
     tv3_tracker();
-    trk.tf[0].vg = MTT_R(0.0); /* gate_frame must compute it */
+    TV_GATE_AREA(&trk, 0) = MTT_R(0.0); /* gate_frame must compute it */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_first);
-    TEST_ASSERT_EQUAL_UINT(4, trk.tf[0].pair_count);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tf[0].has_all_amp);
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_FIRST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(4, TV_PAIR_COUNT(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_ALL_AMP(&trk, 0));
     TV_ASSERT_REAL(9.210340372, trk.gamma);    /* TV3 gamma */
-    TV_ASSERT_REAL(291.4001257, trk.tf[0].vg); /* TV3 V_G */
+    TV_ASSERT_REAL(291.4001257, TV_GATE_AREA(&trk, 0)); /* TV3 V_G */
     for (k = 0; k < 4; ++k) {
         const mtt_pair *pp = &trk.pairs[k];
         TEST_ASSERT_EQUAL_UINT(0, pp->track);
         TEST_ASSERT_EQUAL_UINT(want_meas[k], pp->meas);
-        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], pp->d2, "TV3 d2");
+        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], tv_pair_d2(&trk, (uint16_t)k), "TV3 d2");
         TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]], pp->p, "TV3 p");
     }
     /* CSR: each gated measurement lists its one pair, c4 none. */
-    TEST_ASSERT_EQUAL_UINT(0, trk.mp_first[0]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.mp_first[1]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.mp_first[2]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[3]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[4]); /* c4: empty */
-    TEST_ASSERT_EQUAL_UINT(4, trk.mp_first[5]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.mp_list[3]);
-    TEST_ASSERT_EQUAL_UINT(4, trk.stats.last.pairs);
+    TEST_ASSERT_EQUAL_UINT(0, TV_MP_FIRST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_MP_FIRST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(2, TV_MP_FIRST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(3, TV_MP_FIRST(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(3, TV_MP_FIRST(&trk, 4)); /* c4: empty */
+    TEST_ASSERT_EQUAL_UINT(4, TV_MP_FIRST(&trk, 5));
+    TEST_ASSERT_EQUAL_UINT(3, TV_MP_LIST(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(4, TV_STATS(&trk).last.pairs);
 }
 
 static void test_gate_frame_has_all_amp(void)
@@ -121,21 +121,21 @@ static void test_gate_frame_has_all_amp(void)
     tv3_tracker();
     trk.meas[2].has_amp = 0;
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].has_all_amp);
+    TEST_ASSERT_EQUAL_UINT(0, TV_ALL_AMP(&trk, 0));
     /* An ungated measurement without amplitude does not matter (c4). */
     tv3_tracker();
     trk.meas[3].has_amp = 0;
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tf[0].has_all_amp);
+    TEST_ASSERT_EQUAL_UINT(1, TV_ALL_AMP(&trk, 0));
 }
 
 static void test_gate_frame_skips_invalid_track(void)
 {
     tv3_tracker();
-    trk.tf[0].valid = 0;
+    TV_VALID(&trk, 0) = 0;
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_pairs);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_COUNT(&trk, 0));
 }
 
 static void test_gate_bound_is_inclusive(void)
@@ -154,10 +154,10 @@ static void test_gate_bound_is_inclusive(void)
     (void)tv_add_meas(&trk, MTT_R(0.0), MTT_R(2.0001), MTT_R(1.0), 1); /* out */
     (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(1.5), MTT_R(1.0), 1);  /* d2 = 4.5: out */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(2, trk.n_pairs);
-    TEST_ASSERT_EQUAL_UINT(0, trk.pairs[0].meas);
-    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[1].meas);
-    TEST_ASSERT_TRUE(trk.pairs[0].d2 == MTT_R(4.0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_MEAS(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 1));
+    TEST_ASSERT_TRUE(tv_pair_d2(&trk, 0) == MTT_R(4.0));
 }
 
 static void test_tv8_two_track_gate_frame(void)
@@ -178,31 +178,31 @@ static void test_tv8_two_track_gate_frame(void)
     (void)tv_add_meas(&trk, MTT_R(2.4), MTT_R(0.9), MTT_R(120.0), 1);
     (void)tv_add_meas(&trk, MTT_R(6.8), MTT_R(2.5), MTT_R(70.0), 1);
     mtt_gate_frame(&trk);
-    TV_ASSERT_REAL(95.96699484, trk.tf[0].vg);  /* TV8 T1 V_G */
-    TV_ASSERT_REAL(111.1275048, trk.tf[1].vg);  /* TV8 T2 V_G */
-    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);     /* TV8: T1 {z1, z2}, T2 {z2, z3} */
+    TV_ASSERT_REAL(95.96699484, TV_GATE_AREA(&trk, 0));  /* TV8 T1 V_G */
+    TV_ASSERT_REAL(111.1275048, TV_GATE_AREA(&trk, 1));  /* TV8 T2 V_G */
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));     /* TV8: T1 {z1, z2}, T2 {z2, z3} */
     for (k = 0; k < 4; ++k) {
-        TEST_ASSERT_EQUAL_UINT(pt[k], trk.pairs[k].track);
-        TEST_ASSERT_EQUAL_UINT(pm[k], trk.pairs[k].meas);
-        TV_ASSERT_REAL_MSG(d2[k], trk.pairs[k].d2, "TV8 d2");
-        TV_ASSERT_REAL_MSG(pv[k], trk.pairs[k].p, "TV8 p");
+        TEST_ASSERT_EQUAL_UINT(pt[k], TV_PAIR_TRACK(&trk, k));
+        TEST_ASSERT_EQUAL_UINT(pm[k], TV_PAIR_MEAS(&trk, k));
+        TV_ASSERT_REAL_MSG(d2[k], tv_pair_d2(&trk, (uint16_t)k), "TV8 d2");
+        TV_ASSERT_REAL_MSG(pv[k], TV_PAIR_P(&trk, k), "TV8 p");
     }
     /* TV8 ungated: T1 z3 d2 = 11.79272727, T2 z1 d2 = 14.59322034 > gamma */
     TV_ASSERT_REAL(11.79272727, mtt_mahal2(trk.tf[0].Si, MTT_R(6.8), MTT_R(2.5)));
     TV_ASSERT_REAL(14.59322034, mtt_mahal2(trk.tf[1].Si, MTT_R(-6.5), MTT_R(-0.5)));
-    TEST_ASSERT_EQUAL_UINT(0, trk.tf[0].pair_first);
-    TEST_ASSERT_EQUAL_UINT(2, trk.tf[0].pair_count);
-    TEST_ASSERT_EQUAL_UINT(2, trk.tf[1].pair_first);
-    TEST_ASSERT_EQUAL_UINT(2, trk.tf[1].pair_count);
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_FIRST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_COUNT(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_FIRST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_COUNT(&trk, 1));
     /* CSR: z1 -> {pair 0}, z2 -> {pairs 1, 2} (ascending track), z3 -> {3} */
-    TEST_ASSERT_EQUAL_UINT(0, trk.mp_first[0]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.mp_first[1]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.mp_first[2]);
-    TEST_ASSERT_EQUAL_UINT(4, trk.mp_first[3]);
-    TEST_ASSERT_EQUAL_UINT(0, trk.mp_list[0]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.mp_list[1]);
-    TEST_ASSERT_EQUAL_UINT(2, trk.mp_list[2]);
-    TEST_ASSERT_EQUAL_UINT(3, trk.mp_list[3]);
+    TEST_ASSERT_EQUAL_UINT(0, TV_MP_FIRST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_MP_FIRST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(3, TV_MP_FIRST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(4, TV_MP_FIRST(&trk, 3));
+    TEST_ASSERT_EQUAL_UINT(0, TV_MP_LIST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_MP_LIST(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(2, TV_MP_LIST(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(3, TV_MP_LIST(&trk, 3));
 }
 
 static void test_gate_frame_unsorted_input(void)
@@ -219,13 +219,13 @@ static void test_gate_frame_unsorted_input(void)
     (void)tv_add_meas(&trk, MTT_R(2.4), MTT_R(0.9), MTT_R(120.0), 1); /* z2 */
     (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(0.5), MTT_R(50.0), 1); /* z1 */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
-    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[0].meas); /* T1 z2 */
-    TEST_ASSERT_EQUAL_UINT(2, trk.pairs[1].meas); /* T1 z1 */
-    TEST_ASSERT_EQUAL_UINT(0, trk.pairs[2].meas); /* T2 z3 */
-    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[3].meas); /* T2 z2 */
-    TV_ASSERT_REAL(1.472727273, trk.pairs[0].d2); /* TV8 T1 z2 */
-    TV_ASSERT_REAL(1.738983051, trk.pairs[2].d2); /* TV8 T2 z3 */
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 0)); /* T1 z2 */
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_MEAS(&trk, 1)); /* T1 z1 */
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_MEAS(&trk, 2)); /* T2 z3 */
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 3)); /* T2 z2 */
+    TV_ASSERT_REAL(1.472727273, tv_pair_d2(&trk, 0)); /* TV8 T1 z2 */
+    TV_ASSERT_REAL(1.738983051, tv_pair_d2(&trk, 2)); /* TV8 T2 z3 */
 }
 
 int main(void)

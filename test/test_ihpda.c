@@ -1,5 +1,5 @@
 /* test_ihpda.c - intensity order statistics (TV4) and the IHPDA
- * per-candidate quantities, selection and update (TV5), spec 7. */
+ * per-candidate quantities, selection and update (TV5), ALGORITHMS.md §7. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -174,7 +174,6 @@ static void tv5_setup(struct tv5 *t)
         t->c[j].lam = LAMBDA;
         t->c[j].amp = tv5_amp[j];
         t->c[j].idx = (uint16_t)j;
-        t->c[j].has_amp = 1;
     }
 }
 
@@ -198,7 +197,7 @@ static void test_tv5_candidates(void)
         TV_ASSERT_REAL_MSG(tv5_delta[j], MTT_R(1.0) - L[j], "TV5 delta");
         TV_ASSERT_REAL_MSG(A, beta[j] * L[j], "TV5 A_j");
         TV_ASSERT_REAL_MSG(C, L[j] - beta[j] * L[j], "TV5 C_j");
-        /* C_j from its definition with the library's Prank (spec 7.3). */
+        /* C_j from its definition with the library's Prank (ALGORITHMS.md §7.3). */
         TV_ASSERT_REAL_MSG(C, 1.0 - 0.9 * 0.99 + 0.9 * 0.99 * (3.0 / (0.002 * (double)t.vg)) *
                                                       (1.0 - tv5_prank[j]), "TV5 C_j formula");
     }
@@ -265,7 +264,7 @@ static void test_tv5_m1_any_rho_equals_ipda(void)
     TV_ASSERT_REAL(0.9115326816, mtt_existence_update(MTT_R(0.6), L[0]));
     mtt_ihpda_betas(PD, PG, t.vg, NULL, t.c, 1, beta, L, NULL); /* no intensity */
     TV_ASSERT_REAL(6.869072848, L[0]);
-    mtt_ipda_betas(PD, PG, p1, lam, 1, bp, &b0, &Lp);
+    tv_ipda_betas(PD, PG, p1, lam, 1, bp, &b0, &Lp);
     TV_ASSERT_REAL(6.869072848, Lp);              /* IPDA with z1 alone */
     TV_ASSERT_REAL(0.9841317741, bp[0]);
     TV_ASSERT_REAL(0.01586822595, b0);
@@ -289,7 +288,7 @@ static void test_tv5_rho0_equivalence(void)
         lam[j] = LAMBDA;
     }
     p[0] = t.c[0].p;
-    mtt_ipda_betas(PD, PG, p, lam, 3, bp, &b0, &Lp);
+    tv_ipda_betas(PD, PG, p, lam, 3, bp, &b0, &Lp);
     TV_ASSERT_REAL(9.92672424, Lp);
 }
 
@@ -358,23 +357,24 @@ static void test_tv5_row_and_ihpda_mode_update(void)
     uint16_t m;
     int k;
     tv5_tracker(MTT_ASSOC_IHPDA);
-    TEST_ASSERT_EQUAL_UINT(3, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(3, TV_N_PAIRS(&trk));
     m = mtt_ihpda_row(&trk, 0, 0, -1, 1, &best);
     TEST_ASSERT_EQUAL_UINT(3, m);
     TEST_ASSERT_EQUAL_INT(1, best); /* TV5: z2 */
     for (k = 0; k < 3; ++k) {
-        TV_ASSERT_REAL_MSG(tv5_beta[k], trk.pairs[k].beta, "TV5 beta_j");
-        TV_ASSERT_REAL_MSG(tv5_L[k], trk.pairs[k].L, "TV5 L");
+        TV_ASSERT_REAL_MSG(tv5_beta[k], TV_PAIR_BETA(&trk, k), "TV5 beta_j");
+        TV_ASSERT_REAL_MSG(tv5_L[k], TV_PAIR_L(&trk, k), "TV5 L");
     }
+    mtt_associate_frame(&trk); /* the ihpda selection */
     mtt_update_frame(&trk);
-    TEST_ASSERT_EQUAL_INT(1, trk.tf[0].assigned);
-    TEST_ASSERT_EQUAL_INT(1, trk.tracks[0].meas);
-    TV_ASSERT_VEC(tv5_xupd, trk.tracks[0].x, 4);
-    TV_ASSERT_MAT4(tv5_Pupd, trk.tracks[0].P);
-    TV_ASSERT_REAL(0.9115449069, trk.tracks[0].existence); /* TV5 */
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[0].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[1].used);
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[2].used);
+    TEST_ASSERT_EQUAL_INT(1, TV_ASSIGNED(&trk, 0));
+    TEST_ASSERT_EQUAL_INT(1, TV_TRACK_MEAS(&trk, 0));
+    TV_ASSERT_VEC(tv5_xupd, TV_X(&trk, 0), 4);
+    TV_ASSERT_MAT4(tv5_Pupd, TV_P(&trk, 0));
+    TV_ASSERT_REAL(0.9115449069, TV_EXISTENCE(&trk, 0)); /* TV5 */
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 2));
 }
 
 static void test_row_excludes_used_measurements(void)
@@ -384,17 +384,17 @@ static void test_row_excludes_used_measurements(void)
     int16_t best = -2;
     uint16_t m;
     tv5_tracker(MTT_ASSOC_LM_IHPDA);
-    trk.meas[1].used = 1;
+    TV_USED(&trk, 1) = 1;
     m = mtt_ihpda_row(&trk, 0, 1, -1, 0, &best);
     TEST_ASSERT_EQUAL_UINT(2, m);
-    TEST_ASSERT_TRUE(trk.pairs[1].beta == MTT_R(0.0));
-    TEST_ASSERT_TRUE(trk.pairs[0].beta > MTT_R(0.0));
-    TEST_ASSERT_TRUE(trk.pairs[2].beta > MTT_R(0.0));
+    TEST_ASSERT_TRUE(TV_PAIR_BETA(&trk, 1) == MTT_R(0.0));
+    TEST_ASSERT_TRUE(TV_PAIR_BETA(&trk, 0) > MTT_R(0.0));
+    TEST_ASSERT_TRUE(TV_PAIR_BETA(&trk, 2) > MTT_R(0.0));
     /* keep = pair 1 brings it back: the TV5 full row again */
     m = mtt_ihpda_row(&trk, 0, 1, 1, 0, &best);
     TEST_ASSERT_EQUAL_UINT(3, m);
-    TV_ASSERT_REAL(0.7912724307, trk.pairs[1].beta); /* TV5 z2 beta_j */
-    TV_ASSERT_REAL(0.3499423017, trk.pairs[0].beta); /* TV5 z1 beta_j */
+    TV_ASSERT_REAL(0.7912724307, TV_PAIR_BETA(&trk, 1)); /* TV5 z2 beta_j */
+    TV_ASSERT_REAL(0.3499423017, TV_PAIR_BETA(&trk, 0)); /* TV5 z1 beta_j */
 }
 
 static void test_row_missing_amplitude_uses_rho0(void)
@@ -404,9 +404,9 @@ static void test_row_missing_amplitude_uses_rho0(void)
     int16_t best;
     tv5_tracker(MTT_ASSOC_IHPDA);
     trk.meas[2].has_amp = 0;
-    trk.tf[0].has_all_amp = 0;
+    TV_ALL_AMP(&trk, 0) = 0;
     (void)mtt_ihpda_row(&trk, 0, 0, -1, 1, &best);
-    TV_ASSERT_REAL(9.92672424, trk.pairs[0].L); /* TV5 rho = 0 sub-case */
+    TV_ASSERT_REAL(9.92672424, TV_PAIR_L(&trk, 0)); /* TV5 rho = 0 sub-case */
 }
 
 static void test_tv5_m0_through_update(void)
@@ -415,27 +415,27 @@ static void test_tv5_m0_through_update(void)
     struct tv5 t;
     tv5_tracker(MTT_ASSOC_LM_IHPDA);
     tv5_setup(&t);
-    trk.n_meas = 0;
+    TV_N_MEAS(&trk) = 0;
     mtt_gate_frame(&trk);
     mtt_clutter_frame(&trk, 1);
-    trk.tf[0].assigned = -1;
+    TV_ASSIGNED(&trk, 0) = -1;
     mtt_update_frame(&trk);
-    TV_ASSERT_REAL(0.1405242802, trk.tracks[0].existence); /* TV5 m = 0 */
-    TEST_ASSERT_EQUAL_INT(-1, trk.tracks[0].meas);
+    TV_ASSERT_REAL(0.1405242802, TV_EXISTENCE(&trk, 0)); /* TV5 m = 0 */
+    TEST_ASSERT_EQUAL_INT(-1, TV_TRACK_MEAS(&trk, 0));
     {
         static const double xpred[4] = {110, 45, 10, -5}; /* TV2 x_pred */
         static const double Ppred[16] = {8.666666667, 1, 4.5, 0, 1, 8.666666667, 0, 4.5,
                                          4.5, 0, 6, 0, 0, 4.5, 0, 6}; /* TV2 P_pred */
-        TV_ASSERT_VEC(xpred, trk.tracks[0].x, 4);
-        TV_ASSERT_MAT4(Ppred, trk.tracks[0].P);
+        TV_ASSERT_VEC(xpred, TV_X(&trk, 0), 4);
+        TV_ASSERT_MAT4(Ppred, TV_P(&trk, 0));
     }
 }
 
 static void test_row_tie_rules(void)
 {
     /* Two candidates at +nu and -nu have exactly equal d2, p and (rho = 0,
-     * P_r = 1/m) equal beta.  Rule 0 (spec 10.1): the lower measurement
-     * index wins; rule 1 (spec 7.4): the smaller rank (stronger) wins. */
+     * P_r = 1/m) equal beta.  Rule 0 (ALGORITHMS.md §10.1): the lower measurement
+     * index wins; rule 1 (ALGORITHMS.md §7.4): the smaller rank (stronger) wins. */
     mtt_params p;
     int16_t best = -2;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
@@ -449,7 +449,7 @@ static void test_row_tie_rules(void)
     mtt_gate_frame(&trk);
     mtt_clutter_frame(&trk, 0);
     TEST_ASSERT_EQUAL_UINT(2, mtt_ihpda_row(&trk, 0, 0, -1, 0, &best));
-    TEST_ASSERT_TRUE(trk.pairs[0].beta == trk.pairs[1].beta);
+    TEST_ASSERT_TRUE(TV_PAIR_BETA(&trk, 0) == TV_PAIR_BETA(&trk, 1));
     TEST_ASSERT_EQUAL_INT(0, best);
     TEST_ASSERT_EQUAL_UINT(2, mtt_ihpda_row(&trk, 0, 0, -1, 1, &best));
     TEST_ASSERT_EQUAL_INT(1, best);

@@ -1,5 +1,5 @@
-/* test_initiate.c - two-point differencing initiation (spec 12.1, TV10) and
- * the intensity-based initial gate f(I) (spec 12.2, TV12). */
+/* test_initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1, TV10) and
+ * the intensity-based initial gate f(I) (ALGORITHMS.md §12.2, TV12). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -43,9 +43,9 @@ static void test_tv10_two_point_cov(void)
     const mtt_real R1[3] = {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)};
     const mtt_real R2[3] = {MTT_R(4.0), MTT_R(0.0), MTT_R(9.0)};
     mtt_real P[4][4];
-    mtt_two_point_cov(R1, MTT_R(1.0), P);
+    mtt_motion_two_point_cov(R1, MTT_R(1.0), P);
     TV_ASSERT_MAT4(tv10_P1, P); /* TV10 case 1 P_{2|2} */
-    mtt_two_point_cov(R2, MTT_R(0.5), P);
+    mtt_motion_two_point_cov(R2, MTT_R(0.5), P);
     TV_ASSERT_MAT4(tv10_P2, P); /* TV10 case 2 P_{2|2} */
     /* public wrapper, sigmas (2, 3) */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.5), P));
@@ -60,7 +60,7 @@ static void test_tv10_full_R(void)
     const mtt_real R[3] = {MTT_R(4.0), MTT_R(1.0), MTT_R(9.0)};
     static const double want[16] = {4, 1, 8, 2, 1, 9, 2, 18, 8, 2, 32, 8, 2, 18, 8, 72};
     mtt_real P[4][4];
-    mtt_two_point_cov(R, MTT_R(0.5), P);
+    mtt_motion_two_point_cov(R, MTT_R(0.5), P);
     TV_ASSERT_MAT4(want, P);
 }
 
@@ -88,7 +88,7 @@ static void run_initiate(mtt_real ax, mtt_real ay, mtt_real bx, mtt_real by, mtt
 {
     trk.n_prev = 0;
     trk.prev[trk.n_prev++] = ms(ax, ay, MTT_R(0.0), 0);
-    trk.n_meas = 0;
+    TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, bx, by, MTT_R(0.0), 0);
     mtt_initiate_frame(&trk, dt);
 }
@@ -99,25 +99,25 @@ static void test_tv10_initiate_frame(void)
     static const double x2[4] = {14, 17, 8, -6};     /* TV10 case 2 x_{2|2} */
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(130.0), MTT_R(190.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_tracks);
-    TV_ASSERT_VEC(x1, trk.tracks[0].x, 4);
-    TV_ASSERT_MAT4(tv10_P1, trk.tracks[0].P);
-    TV_ASSERT_REAL(0.1, trk.tracks[0].existence); /* existence_init default 0.1 (S0) */
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].confirmed);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].born);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[0].used);   /* started a track */
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_TRACKS(&trk));
+    TV_ASSERT_VEC(x1, TV_X(&trk, 0), 4);
+    TV_ASSERT_MAT4(tv10_P1, TV_P(&trk, 0));
+    TV_ASSERT_REAL(0.1, TV_EXISTENCE(&trk, 0)); /* existence_init default 0.1 (S0) */
+    TEST_ASSERT_EQUAL_UINT(0, TV_CONFIRMED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_TRACK(&trk, 0)->born);
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));   /* started a track */
     TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);          /* so not in U_{k-1} next frame */
-    TEST_ASSERT_EQUAL_UINT(1, trk.stats.last.births);
+    TEST_ASSERT_EQUAL_UINT(1, TV_STATS(&trk).last.births);
 
     init_with(MTT_R(2.0), MTT_R(3.0), MTT_R(12.0));
     run_initiate(MTT_R(10.0), MTT_R(20.0), MTT_R(14.0), MTT_R(17.0), MTT_R(0.5));
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_tracks);
-    TV_ASSERT_VEC(x2, trk.tracks[0].x, 4);
-    TV_ASSERT_MAT4(tv10_P2, trk.tracks[0].P);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_TRACKS(&trk));
+    TV_ASSERT_VEC(x2, TV_X(&trk, 0), 4);
+    TV_ASSERT_MAT4(tv10_P2, TV_P(&trk, 0));
 
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(150.0), MTT_R(240.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);        /* TV10 case 3: initiate = false */
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));        /* TV10 case 3: initiate = false */
     TEST_ASSERT_EQUAL_UINT(1, trk.n_prev);          /* z_k is kept for the next frame */
     TV_ASSERT_REAL(150.0, trk.prev[0].x);
 }
@@ -127,17 +127,17 @@ static void test_initiate_skips_used_and_disabled(void)
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     trk.n_prev = 0;
     trk.prev[trk.n_prev++] = ms(MTT_R(100.0), MTT_R(200.0), MTT_R(0.0), 0);
-    trk.n_meas = 0;
+    TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, MTT_R(130.0), MTT_R(190.0), MTT_R(0.0), 0);
-    trk.meas[0].used = 1; /* assigned to a track: not in U_k */
+    TV_USED(&trk, 0) = 1; /* assigned to a track: not in U_k */
     mtt_initiate_frame(&trk, MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
     TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);
 
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     trk.par.initiate = 0;
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(130.0), MTT_R(190.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_tracks);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
 }
 
 static void test_tv10_public_api(void)

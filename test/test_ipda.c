@@ -1,5 +1,5 @@
 /* test_ipda.c - IPDA on the TV5 inputs (TV6): betas, delta, existence,
- * PDA state update, and the non-parametric clutter density (spec 5.2, 6). */
+ * PDA state update, and the non-parametric clutter density (ALGORITHMS.md §5.2, §6). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -76,7 +76,7 @@ static void test_tv6_betas_and_existence(void)
     int j;
     double sum;
     tv5_setup(&t);
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     TV_ASSERT_REAL(tv6_L, L);                  /* TV6 L = 1 - delta */
     TV_ASSERT_REAL(tv6_delta, MTT_R(1.0) - L); /* TV6 delta */
     TV_ASSERT_VEC(tv6_beta, beta, 3);          /* TV6 beta_1..3 */
@@ -85,7 +85,7 @@ static void test_tv6_betas_and_existence(void)
     for (j = 0; j < 3; ++j) {
         sum += (double)beta[j];
     }
-    TV_ASSERT_REAL(1.0, sum); /* spec 6: beta_0 + sum beta_j = 1 */
+    TV_ASSERT_REAL(1.0, sum); /* ALGORITHMS.md §6: beta_0 + sum beta_j = 1 */
     TV_ASSERT_REAL(tv6_ex, mtt_existence_update(MTT_R(0.6), L)); /* TV6 P(exist|Z^k) */
 }
 
@@ -95,7 +95,7 @@ static void test_tv6_state_update(void)
     const mtt_real lam[3] = {LAMBDA, LAMBDA, LAMBDA};
     mtt_real beta[3], beta0, L, x[4], P[4][4];
     tv5_setup(&t);
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     mtt_kalman_pda(t.xp, t.Pp, t.K, t.Si, tv5_R, 3, t.nu, beta, beta0, x, P);
     TV_ASSERT_VEC(tv6_x, x, 4); /* TV6 x_upd */
     TV_ASSERT_MAT4(tv6_P, P);   /* TV6 P_upd */
@@ -106,7 +106,7 @@ static void test_tv6_m0(void)
 {
     /* m = 0: L = 1 - PD PG, beta_0 = 1 (TV5 m = 0: delta = 0.891). */
     mtt_real beta[1], beta0, L;
-    mtt_ipda_betas(PD, PG, NULL, NULL, 0, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, NULL, NULL, 0, beta, &beta0, &L);
     TV_ASSERT_REAL(0.891, MTT_R(1.0) - L);
     TV_ASSERT_REAL(1.0, beta0);
     TV_ASSERT_REAL(0.1405242802, mtt_existence_update(MTT_R(0.6), L)); /* TV5 m = 0 */
@@ -122,7 +122,7 @@ static void test_tv6_lambda_hat(void)
     lam[0] = lh;
     lam[1] = lh;
     lam[2] = lh;
-    mtt_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
+    tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     TV_ASSERT_REAL(tv6h_delta, MTT_R(1.0) - L); /* TV6 IPDA with lambda_hat: delta */
     TV_ASSERT_VEC(tv6h_beta, beta, 3);
     TV_ASSERT_REAL(tv6h_beta0, beta0);
@@ -151,32 +151,32 @@ static void tv6_tracker(mtt_real clutter_density)
     }
     (void)tv_add_meas(&trk, MTT_R(118.0), MTT_R(38.0), MTT_R(1.0), 1); /* TV3 c4: outside */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(3, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT(3, TV_PAIR_COUNT(&trk, 0));
     mtt_clutter_frame(&trk, 0);
-    mtt_cluster_frame(&trk);
+    mtt_associate_frame(&trk);
     mtt_update_frame(&trk);
 }
 
 static void test_tv6_ipda_mode_known_lambda(void)
 {
     tv6_tracker(LAMBDA);
-    TV_ASSERT_REAL(0.002, trk.tf[0].lambda);
-    TV_ASSERT_VEC(tv6_x, trk.tracks[0].x, 4);            /* TV6 x_upd */
-    TV_ASSERT_MAT4(tv6_P, trk.tracks[0].P);              /* TV6 P_upd */
-    TV_ASSERT_REAL(tv6_ex, trk.tracks[0].existence);     /* TV6 P(exist|Z^k) */
-    TEST_ASSERT_EQUAL_INT(0, trk.tracks[0].meas);        /* largest beta: z1 */
+    TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 0));
+    TV_ASSERT_VEC(tv6_x, TV_X(&trk, 0), 4);            /* TV6 x_upd */
+    TV_ASSERT_MAT4(tv6_P, TV_P(&trk, 0));              /* TV6 P_upd */
+    TV_ASSERT_REAL(tv6_ex, TV_EXISTENCE(&trk, 0));     /* TV6 P(exist|Z^k) */
+    TEST_ASSERT_EQUAL_INT(0, TV_TRACK_MEAS(&trk, 0));        /* largest beta: z1 */
     /* PDA modes: gated measurements are used, the ungated one is not. */
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[0].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[2].used);
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[3].used);
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 2));
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 3));
 }
 
 static void test_tv6_ipda_mode_estimated_lambda(void)
 {
     tv6_tracker(MTT_R(0.0));
-    TV_ASSERT_REAL(tv6_lamhat, trk.tf[0].lambda);        /* TV6 lambda_hat */
-    TV_ASSERT_REAL(tv6_lamhat, trk.pairs[1].lam);
-    TV_ASSERT_REAL(tv6h_ex, trk.tracks[0].existence);    /* TV6 with lambda_hat */
+    TV_ASSERT_REAL(tv6_lamhat, TV_LAMBDA(&trk, 0));        /* TV6 lambda_hat */
+    TV_ASSERT_REAL(tv6_lamhat, TV_PAIR_LAM(&trk, 1));
+    TV_ASSERT_REAL(tv6h_ex, TV_EXISTENCE(&trk, 0));    /* TV6 with lambda_hat */
 }
 
 int main(void)

@@ -1,4 +1,4 @@
-/* test_jpda.c - the JPDA family on TV13 (spec 13): Cheap JPDA raw and
+/* test_jpda.c - the JPDA family on TV13 (ALGORITHMS.md §13): Cheap JPDA raw and
  * normalised, Suboptimal JPDA (N, D, both B choices), exact JPDA (8 events
  * and their weights), NNJPDA, the 2x2 JPDA* case, JIPDA, the N x N claim
  * checks, the event counts, and the counted fallbacks. */
@@ -6,6 +6,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -32,13 +33,13 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
     p.pg = (mtt_real)PG_TV;
     p.jpda_bias = (B > 0.0) ? (mtt_real)B : MTT_R(1.0);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    trk.n_tracks = (uint16_t)n;
-    trk.n_meas = (uint16_t)m;
+    TV_N_TRACKS(&trk) = (uint16_t)n;
+    TV_N_MEAS(&trk) = (uint16_t)m;
     for (j = 0; j < m; ++j) {
         trk.meas[j].x = (mtt_real)j;
         trk.meas[j].src = (uint32_t)j;
     }
-    trk.n_pairs = 0;
+    TV_N_PAIRS(&trk) = 0;
     for (t = 0; t < n; ++t) {
         mtt_track_frame *tf = &trk.tf[t];
         memset(tf, 0, sizeof *tf);
@@ -47,10 +48,10 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
         tf->best = -1;
         tf->ex_pred = (pbar != NULL) ? (mtt_real)pbar[t] : MTT_R(1.0);
         tf->lambda = MTT_R(1.0);
-        tf->pair_first = trk.n_pairs;
+        tf->pair_first = TV_N_PAIRS(&trk);
         for (j = 0; j < m; ++j) {
             if (a[t * m + j] > 0.0) {
-                mtt_pair *pp = &trk.pairs[trk.n_pairs++];
+                mtt_pair *pp = &trk.pairs[TV_N_PAIRS(&trk)++];
                 memset(pp, 0, sizeof *pp);
                 pp->track = (uint16_t)t;
                 pp->meas = (uint16_t)j;
@@ -65,19 +66,19 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
     k = 0;
     for (j = 0; j < m; ++j) {
         uint16_t q;
-        trk.mp_first[j] = k;
-        for (q = 0; q < trk.n_pairs; ++q) {
-            if (trk.pairs[q].meas == j) {
-                trk.mp_list[k++] = q;
+        TV_MP_FIRST(&trk, j) = k;
+        for (q = 0; q < TV_N_PAIRS(&trk); ++q) {
+            if (TV_PAIR_MEAS(&trk, q) == j) {
+                TV_MP_LIST(&trk, k++) = q;
             }
         }
     }
-    trk.mp_first[m] = k;
+    TV_MP_FIRST(&trk, m) = k;
     mtt_cluster_frame(&trk);
     mtt_jpda_weights(&trk);
     if (!(B > 0.0) && mode != MTT_ASSOC_JIPDA) {
         for (t = 0; t < n; ++t) {
-            trk.base.jp.tb[t] = MTT_R(0.0);
+            TV_JPDA(&trk).tb[t] = MTT_R(0.0);
         }
     }
 }
@@ -85,9 +86,9 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
 static double beta(int t, int j)
 {
     uint16_t k;
-    for (k = 0; k < trk.n_pairs; ++k) {
-        if (trk.pairs[k].track == t && trk.pairs[k].meas == j) {
-            return (double)trk.pairs[k].beta;
+    for (k = 0; k < TV_N_PAIRS(&trk); ++k) {
+        if (TV_PAIR_TRACK(&trk, k) == t && TV_PAIR_MEAS(&trk, k) == j) {
+            return (double)TV_PAIR_BETA(&trk, k);
         }
     }
     return 0.0; /* not gated */
@@ -99,7 +100,7 @@ static void assert_row(int t, int m, double b0, const double *b, const char *wha
     char w[96];
     int j;
     snprintf(w, sizeof w, "%s: T%d beta_t0", what, t + 1);
-    tv_assert_real(b0, (double)trk.tf[t].beta0, w, __LINE__);
+    tv_assert_real(b0, (double)TV_BETA0(&trk, t), w, __LINE__);
     for (j = 0; j < m; ++j) {
         snprintf(w, sizeof w, "%s: T%d beta_t%d", what, t + 1, j + 1);
         tv_assert_real(b[j], beta(t, j), w, __LINE__);
@@ -113,15 +114,15 @@ static void test_tv13_cheap_raw(void)
 {
     static const double r1[3] = {0.5555555556, 0.2307692308, 0}, r2[3] = {0, 0.4, 0.2857142857};
     problem(MTT_ASSOC_CHEAP_JPDA, 2, 3, A13, 0.1, NULL);
-    TEST_ASSERT_EQUAL_UINT16(1u, trk.n_clusters);
-    TV_ASSERT_REAL(0.8, trk.base.jp.pa[0] + trk.base.jp.pa[1]); /* TV13 T_1 */
-    TV_ASSERT_REAL(0.6, trk.base.jp.pa[2] + trk.base.jp.pa[3]); /* TV13 T_2 */
-    TV_ASSERT_REAL(0.7, trk.base.jp.pa[1] + trk.base.jp.pa[2]); /* TV13 M_2 */
+    TEST_ASSERT_EQUAL_UINT16(1u, TV_N_CLUSTERS(&trk));
+    TV_ASSERT_REAL(0.8, TV_JPDA(&trk).pa[0] + TV_JPDA(&trk).pa[1]); /* TV13 T_1 */
+    TV_ASSERT_REAL(0.6, TV_JPDA(&trk).pa[2] + TV_JPDA(&trk).pa[3]); /* TV13 T_2 */
+    TV_ASSERT_REAL(0.7, TV_JPDA(&trk).pa[1] + TV_JPDA(&trk).pa[2]); /* TV13 M_2 */
     mtt_cheap_jpda(&trk, 0, 0);
     assert_row(0, 3, 0.1111111111, r1, "TV13 Cheap raw");
     assert_row(1, 3, 0.1428571429, r2, "TV13 Cheap raw");
-    TV_ASSERT_REAL(0.8974358974, (double)trk.tf[0].beta0 + beta(0, 0) + beta(0, 1)); /* TV13 row sum */
-    TV_ASSERT_REAL(0.8285714286, (double)trk.tf[1].beta0 + beta(1, 1) + beta(1, 2)); /* TV13 row sum */
+    TV_ASSERT_REAL(0.8974358974, (double)TV_BETA0(&trk, 0) + beta(0, 0) + beta(0, 1)); /* TV13 row sum */
+    TV_ASSERT_REAL(0.8285714286, (double)TV_BETA0(&trk, 1) + beta(1, 1) + beta(1, 2)); /* TV13 row sum */
 }
 
 static void test_tv13_cheap_normalised(void)
@@ -145,18 +146,18 @@ static void test_tv13_suboptimal(void)
     mtt_subopt_jpda(&trk, 0, 0); /* constant B */
     for (s = 0; s < 2; ++s) {
         for (j = 0; j < 3; ++j) {
-            double n_sj = (trk.base.jp.arg1[s] == j) ? (double)trk.base.jp.max2[s] : (double)trk.base.jp.max1[s];
+            double n_sj = (TV_JPDA(&trk).arg1[s] == j) ? (double)TV_JPDA(&trk).max2[s] : (double)TV_JPDA(&trk).max1[s];
             TV_ASSERT_REAL_MSG(N[s][j], n_sj, "TV13 N[s][j]");
             /* D = beta * B / beta_0 (constant B) */
-            TV_ASSERT_REAL_MSG(D[s][j], beta(s, j) * 0.1 / (double)trk.tf[s].beta0, "TV13 D");
+            TV_ASSERT_REAL_MSG(D[s][j], beta(s, j) * 0.1 / (double)TV_BETA0(&trk, s), "TV13 D");
         }
     }
     assert_row(0, 3, 0.2777777778, c1, "TV13 Suboptimal constant B");
     assert_row(1, 3, 0.25, c2, "TV13 Suboptimal constant B");
     problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
     mtt_subopt_jpda(&trk, 0, 1); /* library default B_1 = 0.04, B_2 = 0.05 */
-    TV_ASSERT_REAL(0.04, 0.1 * (double)trk.base.jp.max1[1]); /* TV13 B_1 */
-    TV_ASSERT_REAL(0.05, 0.1 * (double)trk.base.jp.max1[0]); /* TV13 B_2 */
+    TV_ASSERT_REAL(0.04, 0.1 * (double)TV_JPDA(&trk).max1[1]); /* TV13 B_1 */
+    TV_ASSERT_REAL(0.05, 0.1 * (double)TV_JPDA(&trk).max1[0]); /* TV13 B_2 */
     assert_row(0, 3, 0.1333333333, p1, "TV13 Suboptimal B_t");
     assert_row(1, 3, 0.1428571429, p2, "TV13 Suboptimal B_t");
 }
@@ -171,11 +172,11 @@ static void test_tv13_exact_jpda_events(void)
     int e;
     problem(MTT_ASSOC_JPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(8u, trk.base.jp.n_events); /* TV13: 8 feasible events */
-    sc = (double)trk.base.jp.scale[0] * (double)trk.base.jp.scale[1]; /* rows are scaled */
+    TEST_ASSERT_EQUAL_UINT32(8u, TV_JPDA(&trk).n_events); /* TV13: 8 feasible events */
+    sc = (double)TV_JPDA(&trk).scale[0] * (double)TV_JPDA(&trk).scale[1]; /* rows are scaled */
     for (e = 0; e < 8; ++e) {
-        TV_ASSERT_REAL_MSG(w[e], (double)trk.base.jp.ev_w[e] * sc, "TV13 event weight");
-        total += (double)trk.base.jp.ev_w[e] * sc;
+        TV_ASSERT_REAL_MSG(w[e], (double)TV_JPDA(&trk).ev_w[e] * sc, "TV13 event weight");
+        total += (double)TV_JPDA(&trk).ev_w[e] * sc;
     }
     TV_ASSERT_REAL(0.51, total); /* TV13 total weight */
     assert_row(0, 3, 0.137254902, r1, "TV13 exact JPDA");
@@ -187,7 +188,7 @@ static void test_tv13_jpda_star_equals_jpda_here(void)
     static const double r1[3] = {0.6862745098, 0.1764705882, 0};
     problem(MTT_ASSOC_JPDA_STAR, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(8u, trk.base.jp.n_kept); /* TV13: JPDA* prunes nothing here */
+    TEST_ASSERT_EQUAL_UINT32(8u, TV_JPDA(&trk).n_kept); /* TV13: JPDA* prunes nothing here */
     assert_row(0, 3, 0.137254902, r1, "TV13 JPDA*");
 }
 
@@ -196,11 +197,11 @@ static void test_tv13_nnjpda(void)
     problem(MTT_ASSOC_NNJPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
     mtt_nnjpda_cluster(&trk, 0);
-    TEST_ASSERT_TRUE(trk.tf[0].assigned >= 0 && trk.tf[1].assigned >= 0);
-    TEST_ASSERT_EQUAL_UINT16(0u, trk.pairs[trk.tf[0].assigned].meas); /* TV13: T1 -> z1 */
-    TEST_ASSERT_EQUAL_UINT16(1u, trk.pairs[trk.tf[1].assigned].meas); /* TV13: T2 -> z2 */
-    TV_ASSERT_REAL(0.6862745098, trk.pairs[trk.tf[0].assigned].beta);
-    TV_ASSERT_REAL(0.4705882353, trk.pairs[trk.tf[1].assigned].beta);
+    TEST_ASSERT_TRUE(TV_ASSIGNED(&trk, 0) >= 0 && TV_ASSIGNED(&trk, 1) >= 0);
+    TEST_ASSERT_EQUAL_UINT16(0u, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 0))); /* TV13: T1 -> z1 */
+    TEST_ASSERT_EQUAL_UINT16(1u, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 1))); /* TV13: T2 -> z2 */
+    TV_ASSERT_REAL(0.6862745098, TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 0)));
+    TV_ASSERT_REAL(0.4705882353, TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 1)));
 }
 
 static void test_nnjpda_threshold(void)
@@ -209,8 +210,8 @@ static void test_nnjpda_threshold(void)
     trk.par.nnjpda_threshold = MTT_R(0.5);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
     mtt_nnjpda_cluster(&trk, 0);
-    TEST_ASSERT_EQUAL_UINT16(0u, trk.pairs[trk.tf[0].assigned].meas); /* 0.686 >= 0.5 */
-    TEST_ASSERT_EQUAL_INT(-1, trk.tf[1].assigned);                    /* 0.471 < 0.5 */
+    TEST_ASSERT_EQUAL_UINT16(0u, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 0))); /* 0.686 >= 0.5 */
+    TEST_ASSERT_EQUAL_INT(-1, TV_ASSIGNED(&trk, 1));                    /* 0.471 < 0.5 */
 }
 
 /* TV13 JPDA* two-track / two-measurement case: A = [0.5, 0.4; 0.45, 0.3]. */
@@ -222,14 +223,14 @@ static void test_tv13_2x2_jpda_and_star(void)
     static const double s1[2] = {0.1408450704, 0.6197183099}, s2[2] = {0.6338028169, 0.08450704225};
     problem(MTT_ASSOC_JPDA, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(7u, trk.base.jp.n_events); /* TV13: JPDA 7 events */
+    TEST_ASSERT_EQUAL_UINT32(7u, TV_JPDA(&trk).n_events); /* TV13: JPDA 7 events */
     assert_row(0, 2, 0.1683168317, j1, "TV13 2x2 JPDA");
     assert_row(1, 2, 0.198019802, j2, "TV13 2x2 JPDA");
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(6u, trk.base.jp.n_kept); /* TV13: 6 kept */
+    TEST_ASSERT_EQUAL_UINT32(6u, TV_JPDA(&trk).n_kept); /* TV13: 6 kept */
     /* TV13: (T1->z1, T2->z2), the 5th event in enumeration order, is pruned. */
-    TEST_ASSERT_EQUAL_INT(0, (trk.base.jp.ev_keep[0] >> 4) & 1);
+    TEST_ASSERT_EQUAL_INT(0, (TV_JPDA(&trk).ev_keep[0] >> 4) & 1);
     assert_row(0, 2, 0.2394366197, s1, "TV13 2x2 JPDA*");
     assert_row(1, 2, 0.2816901408, s2, "TV13 2x2 JPDA*");
 }
@@ -242,7 +243,7 @@ static void test_jpda_star_pruning(void)
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
     trk.par.jpda_star_threshold = MTT_R(0.1);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(4u, trk.base.jp.n_kept);
+    TEST_ASSERT_EQUAL_UINT32(4u, TV_JPDA(&trk).n_kept);
     assert_row(0, 2, 0.045 / 0.315, s1, "JPDA* pruned");
     assert_row(1, 2, 0.09 / 0.315, s2, "JPDA* pruned");
 }
@@ -271,8 +272,8 @@ static void test_tv13_jipda(void)
     static const double r2[3] = {0, 0.4822577193, 0.3212453845};
     problem(MTT_ASSOC_JIPDA, 2, 3, A13, 0.0, pbar); /* A13 read as p_tj / lambda_j */
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_JIPDA));
-    TV_ASSERT_REAL(0.7534123731, trk.tf[0].ex_post); /* TV13 JIPDA T1 P(exist|Z^k) */
-    TV_ASSERT_REAL(0.356795769, trk.tf[1].ex_post);  /* TV13 JIPDA T2 */
+    TV_ASSERT_REAL(0.7534123731, TV_EX_POST(&trk, 0)); /* TV13 JIPDA T1 P(exist|Z^k) */
+    TV_ASSERT_REAL(0.356795769, TV_EX_POST(&trk, 1));  /* TV13 JIPDA T2 */
     assert_row(0, 3, 0.1427003447, r1, "TV13 JIPDA");
     assert_row(1, 3, 0.1964968962, r2, "TV13 JIPDA");
 }
@@ -323,7 +324,7 @@ static void test_tv13_event_counts(void)
     for (c = 0; c < 4; ++c) {
         problem(MTT_ASSOC_JPDA, nm[c][0], nm[c][1], a, 0.1, NULL);
         TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-        TEST_ASSERT_EQUAL_UINT32(count[c], trk.base.jp.n_events);
+        TEST_ASSERT_EQUAL_UINT32(count[c], TV_JPDA(&trk).n_events);
     }
 }
 
@@ -346,16 +347,16 @@ static void test_event_bound_fallback(void)
     }
     problem(MTT_ASSOC_JPDA, 5, 8, a, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(-1, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    mtt_jpda_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
+    mtt_associate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.jpda_fallbacks);
     for (t = 0; t < 5; ++t) {
         for (j = 0; j < 8; ++j) {
             TV_ASSERT_REAL_MSG(cheap[t][j], beta(t, j), "fallback = Cheap JPDA");
         }
     }
     problem(MTT_ASSOC_JIPDA, 5, 8, a, 0.0, NULL);
-    mtt_jpda_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT32(1u, trk.stats.last.jpda_fallbacks);
+    mtt_associate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.jpda_fallbacks);
 }
 
 int main(void)

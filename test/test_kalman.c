@@ -1,6 +1,6 @@
 /* test_kalman.c - CV model, Kalman predict / innovation / Joseph update,
  * PDA combination with one measurement, Cholesky quadratic form.
- * Expected numbers: test_vectors.md TV1, TV2 (and TV11 for chol4). */
+ * Expected numbers: docs/TEST_VECTORS.md TV1, TV2 (and TV11 for chol4). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -66,7 +66,7 @@ static void test_tv1_dt1(void)
     static const double Q[16] = {1.666666667, 0, 2.5, 0, 0, 1.666666667, 0, 2.5,
                                  2.5, 0, 5, 0, 0, 2.5, 0, 5};
     mtt_real Qa[4][4];
-    mtt_cv_q(MTT_R(1.0), MTT_R(5.0), Qa);
+    mtt_motion_q(MTT_R(1.0), MTT_R(5.0), Qa);
     TV_ASSERT_MAT4(Q, Qa);
     check_F(MTT_R(1.0), F);
 }
@@ -78,7 +78,7 @@ static void test_tv1_dt025(void)
     static const double Q[16] = {0.02604166667, 0, 0.15625, 0, 0, 0.02604166667, 0, 0.15625,
                                  0.15625, 0, 1.25, 0, 0, 0.15625, 0, 1.25};
     mtt_real Qa[4][4];
-    mtt_cv_q(MTT_R(0.25), MTT_R(5.0), Qa);
+    mtt_motion_q(MTT_R(0.25), MTT_R(5.0), Qa);
     TV_ASSERT_MAT4(Q, Qa);
     check_F(MTT_R(0.25), F);
 }
@@ -158,7 +158,7 @@ static void test_tv2_joseph_and_standard_form(void)
     {
         const mtt_real b[4] = {MTT_R(1.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
         mtt_real d2;
-        TEST_ASSERT_EQUAL_INT(0, mtt_chol4_quad(Pc, b, &d2));
+        TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(Pc, b, &d2));
     }
 }
 
@@ -217,7 +217,7 @@ static void test_sym4(void)
             A[i][j] = (mtt_real)(4 * i + j);
         }
     }
-    mtt_sym4(A);
+    mtt_sym(A);
     TV_ASSERT_SYM4(A);
     TV_ASSERT_REAL(2.5, A[0][1]); /* (1 + 4) / 2 */
     TV_ASSERT_REAL(2.5, A[1][0]);
@@ -237,13 +237,13 @@ static void test_chol4_full_matrix(void)
     for (i = 0; i < 4; ++i) {
         b[i] = A[i][0];
     }
-    TEST_ASSERT_EQUAL_INT(0, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(A, b, &d2));
     TV_ASSERT_REAL(8.666666667, d2); /* TV2 P_pred[1,1] */
     /* b = A e4: d2 = P_pred[4,4] = 6 (TV2). */
     for (i = 0; i < 4; ++i) {
         b[i] = A[i][3];
     }
-    TEST_ASSERT_EQUAL_INT(0, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(A, b, &d2));
     TV_ASSERT_REAL(6.0, d2); /* TV2 P_pred[4,4] */
 }
 
@@ -259,7 +259,7 @@ static void test_chol4_innovation_block(void)
     A[1][1] = MTT_R(10.66666667);
     A[2][2] = MTT_R(1.0);
     A[3][3] = MTT_R(1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(A, b, &d2));
     TV_ASSERT_REAL(0.3704028309, d2); /* TV2 d2 */
 }
 
@@ -275,23 +275,23 @@ static void test_chol4_rejects_non_pd(void)
     A[1][1] = MTT_R(1.0);
     A[2][2] = MTT_R(1.0);
     A[3][3] = MTT_R(1.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
     TEST_ASSERT_TRUE(d2 == MTT_R(42.0)); /* untouched */
     /* singular (last pivot 0) */
     A[0][1] = MTT_R(0.0);
     A[1][0] = MTT_R(0.0);
     A[3][3] = MTT_R(0.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
     /* NaN */
     A[3][3] = (mtt_real)NAN;
-    TEST_ASSERT_EQUAL_INT(-1, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
     /* negative definite */
     memset(A, 0, sizeof A);
     A[0][0] = MTT_R(-1.0);
     A[1][1] = MTT_R(1.0);
     A[2][2] = MTT_R(1.0);
     A[3][3] = MTT_R(1.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_chol4_quad(A, b, &d2));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
 }
 
 int main(void)

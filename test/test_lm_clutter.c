@@ -1,6 +1,6 @@
-/* test_lm_clutter.c - LM clutter density (spec 8) on TV8: d2 and p per pair,
+/* test_lm_clutter.c - LM clutter density (ALGORITHMS.md §8) on TV8: d2 and p per pair,
  * Ptilde, W_j, lambda_tilde, and LM-IPDA betas and existence; also the
- * per-track lambda of spec 5.1 / 5.2. */
+ * per-track lambda of ALGORITHMS.md §5.1 / 5.2. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -44,15 +44,15 @@ static void test_tv8_pairs(void)
 {
     int k;
     tv8_tracker(MTT_ASSOC_LM_IHPDA, MTT_R(0.002));
-    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
     for (k = 0; k < 4; ++k) {
-        TEST_ASSERT_EQUAL_UINT(pt[k], trk.pairs[k].track);
-        TEST_ASSERT_EQUAL_UINT(pm[k], trk.pairs[k].meas);
-        TV_ASSERT_REAL_MSG(tv8_d2[k], trk.pairs[k].d2, "TV8 d2");
-        TV_ASSERT_REAL_MSG(tv8_p[k], trk.pairs[k].p, "TV8 p");
+        TEST_ASSERT_EQUAL_UINT(pt[k], TV_PAIR_TRACK(&trk, k));
+        TEST_ASSERT_EQUAL_UINT(pm[k], TV_PAIR_MEAS(&trk, k));
+        TV_ASSERT_REAL_MSG(tv8_d2[k], tv_pair_d2(&trk, (uint16_t)k), "TV8 d2");
+        TV_ASSERT_REAL_MSG(tv8_p[k], TV_PAIR_P(&trk, k), "TV8 p");
     }
-    TV_ASSERT_REAL(95.96699484, trk.tf[0].vg); /* TV8 T1 V_G */
-    TV_ASSERT_REAL(111.1275048, trk.tf[1].vg); /* TV8 T2 V_G */
+    TV_ASSERT_REAL(95.96699484, TV_GATE_AREA(&trk, 0)); /* TV8 T1 V_G */
+    TV_ASSERT_REAL(111.1275048, TV_GATE_AREA(&trk, 1)); /* TV8 T2 V_G */
 }
 
 static void test_tv8_lm_density(void)
@@ -60,8 +60,8 @@ static void test_tv8_lm_density(void)
     int k, j;
     tv8_tracker(MTT_ASSOC_LM_IHPDA, MTT_R(0.002));
     mtt_clutter_frame(&trk, 1);
-    TV_ASSERT_REAL(0.002, trk.tf[0].lambda);
-    TV_ASSERT_REAL(0.002, trk.tf[1].lambda);
+    TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 0));
+    TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 1));
     for (k = 0; k < 4; ++k) {
         const mtt_pair *pp = &trk.pairs[k];
         /* w = p Pt / (1 - Pt), so Pt = w / (p + w) (TV8 Ptilde) */
@@ -80,7 +80,7 @@ static void test_tv8_plain_lambda_when_not_lm(void)
     tv8_tracker(MTT_ASSOC_IPDA, MTT_R(0.002));
     mtt_clutter_frame(&trk, 0);
     for (k = 0; k < 4; ++k) {
-        TV_ASSERT_REAL_MSG(0.002, trk.pairs[k].lam, "TV8 lambda"); /* TV8 lambda */
+        TV_ASSERT_REAL_MSG(0.002, TV_PAIR_LAM(&trk, k), "TV8 lambda"); /* TV8 lambda */
     }
 }
 
@@ -99,10 +99,10 @@ static void test_tv8_lm_ipda(void)
         mtt_real p[2], lam[2], b[2], b0, L;
         int j;
         for (j = 0; j < 2; ++j) {
-            p[j] = trk.pairs[tf->pair_first + j].p;
-            lam[j] = trk.pairs[tf->pair_first + j].lam;
+            p[j] = TV_PAIR_P(&trk, tf->pair_first + j);
+            lam[j] = TV_PAIR_LAM(&trk, tf->pair_first + j);
         }
-        mtt_ipda_betas(trk.par.pd, trk.par.pg, p, lam, 2, b, &b0, &L);
+        tv_ipda_betas(trk.par.pd, trk.par.pg, p, lam, 2, b, &b0, &L);
         TV_ASSERT_REAL_MSG(delta[t], MTT_R(1.0) - L, "TV8 LM-IPDA delta");
         TV_ASSERT_REAL_MSG(beta[2 * t], b[0], "TV8 LM-IPDA beta");
         TV_ASSERT_REAL_MSG(beta[2 * t + 1], b[1], "TV8 LM-IPDA beta");
@@ -110,12 +110,12 @@ static void test_tv8_lm_ipda(void)
         TV_ASSERT_REAL_MSG(ex[t], mtt_existence_update(tf->ex_pred, L), "TV8 LM-IPDA existence");
     }
     /* The same through the update stage in lm-ipda mode. */
-    mtt_cluster_frame(&trk);
+    mtt_associate_frame(&trk);
     mtt_update_frame(&trk);
-    TV_ASSERT_REAL(0.9865483275, trk.tracks[0].existence); /* TV8 LM-IPDA T1 */
-    TV_ASSERT_REAL(0.8990549324, trk.tracks[1].existence); /* TV8 LM-IPDA T2 */
-    TEST_ASSERT_EQUAL_INT(0, trk.tracks[0].meas); /* T1: largest beta on z1 */
-    TEST_ASSERT_EQUAL_INT(2, trk.tracks[1].meas); /* T2: largest beta on z3 */
+    TV_ASSERT_REAL(0.9865483275, TV_EXISTENCE(&trk, 0)); /* TV8 LM-IPDA T1 */
+    TV_ASSERT_REAL(0.8990549324, TV_EXISTENCE(&trk, 1)); /* TV8 LM-IPDA T2 */
+    TEST_ASSERT_EQUAL_INT(0, TV_TRACK_MEAS(&trk, 0)); /* T1: largest beta on z1 */
+    TEST_ASSERT_EQUAL_INT(2, TV_TRACK_MEAS(&trk, 1)); /* T2: largest beta on z3 */
 }
 
 static void test_tv8_hand_built_state(void)
@@ -136,12 +136,12 @@ static void test_tv8_hand_built_state(void)
     (void)tv_add_meas(&trk, MTT_R(6.8), MTT_R(2.5), MTT_R(70.0), 1);
     for (k = 0; k < 4; ++k) {
         tv_add_pair(&trk, pt[k], pm[k], MTT_R(0.0));
-        trk.pairs[k].p = (mtt_real)tv8_p[k]; /* TV8 p */
+        TV_PAIR_P(&trk, k) = (mtt_real)tv8_p[k]; /* TV8 p */
     }
     tv_index_pairs(&trk);
     mtt_clutter_frame(&trk, 1);
     for (k = 0; k < 4; ++k) {
-        TV_ASSERT_REAL_MSG(tv8_lamt[k], trk.pairs[k].lam, "TV8 lambda_tilde");
+        TV_ASSERT_REAL_MSG(tv8_lamt[k], TV_PAIR_LAM(&trk, k), "TV8 lambda_tilde");
     }
 }
 
@@ -163,25 +163,25 @@ static void test_lm_many_tracks_uses_sum_minus_own(void)
     }
     (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(0.5), MTT_R(50.0), 1); /* TV8 z1 for T1 */
     mtt_gate_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(5, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT(5, TV_N_PAIRS(&trk));
     mtt_clutter_frame(&trk, 1);
     pt_ = 0.9 * 0.99 * 0.8;
     w = 0.03183372832 * pt_ / (1.0 - pt_); /* TV8 T1 z1 p */
     TV_ASSERT_REAL(5.0 * w, trk.wsum[0]);
     for (t = 0; t < 5; ++t) {
-        TV_ASSERT_REAL_MSG(0.002 + 4.0 * w, trk.pairs[t].lam, "lambda_tilde");
+        TV_ASSERT_REAL_MSG(0.002 + 4.0 * w, TV_PAIR_LAM(&trk, t), "lambda_tilde");
     }
 }
 
 static void test_unknown_lambda_uses_estimate(void)
 {
-    /* clutter_density = 0: each track's lambda_hat = (m - PD PG P)/V_G (spec 5.2),
+    /* clutter_density = 0: each track's lambda_hat = (m - PD PG P)/V_G (ALGORITHMS.md §5.2),
      * with TV8's V_G and m = 2. */
     tv8_tracker(MTT_ASSOC_IPDA, MTT_R(0.0));
     mtt_clutter_frame(&trk, 0);
-    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.8) / 95.96699484, trk.tf[0].lambda);  /* TV8 T1 V_G */
-    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.5) / 111.1275048, trk.tf[1].lambda);  /* TV8 T2 V_G */
-    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.8) / 95.96699484, trk.pairs[1].lam);
+    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.8) / 95.96699484, TV_LAMBDA(&trk, 0));  /* TV8 T1 V_G */
+    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.5) / 111.1275048, TV_LAMBDA(&trk, 1));  /* TV8 T2 V_G */
+    TV_ASSERT_REAL((2.0 - 0.9 * 0.99 * 0.8) / 95.96699484, TV_PAIR_LAM(&trk, 1));
     /* TV6 lambda_hat: m = 3, P = 0.6, V_G = 291.4001257 */
     TV_ASSERT_REAL(0.008460531697, mtt_clutter_estimate(3, MTT_R(0.9), MTT_R(0.99), MTT_R(0.6),
                                                         MTT_R(291.4001257)));

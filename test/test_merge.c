@@ -1,4 +1,4 @@
-/* test_merge.c - track merge test and survivor rule (spec 12.3, TV11). */
+/* test_merge.c - track merge test and survivor rule (ALGORITHMS.md §12.3, TV11). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -75,14 +75,14 @@ static void two_track_cluster(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.merge_threshold = MTT_R(1.0); /* TV11 t_merge */
     tv_init(&trk, &p);
-    trk.n_tracks = 2;
-    trk.n_clusters = 1;
-    trk.cl_first[0] = 0;
-    trk.cl_first[1] = 2;
-    trk.cl_list[0] = 0;
-    trk.cl_list[1] = 1;
-    trk.tf[0].valid = 1; /* as after an update that kept both tracks */
-    trk.tf[1].valid = 1;
+    TV_N_TRACKS(&trk) = 2;
+    TV_N_CLUSTERS(&trk) = 1;
+    TV_CL_FIRST(&trk, 0) = 0;
+    TV_CL_FIRST(&trk, 1) = 2;
+    TV_CL_LIST(&trk, 0) = 0;
+    TV_CL_LIST(&trk, 1) = 1;
+    TV_VALID(&trk, 0) = 1; /* as after an update that kept both tracks */
+    TV_VALID(&trk, 1) = 1;
 }
 
 /* F8: a track the update found numerically invalid is deleted as such by
@@ -90,13 +90,13 @@ static void two_track_cluster(void)
 static void test_invalid_track_not_merged(void)
 {
     two_track_cluster();
-    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
-    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
-    trk.tf[1].valid = 0;
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.3), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb1, MTT_R(0.9), 1, 1);
+    TV_VALID(&trk, 1) = 0;
     mtt_merge_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
 }
 
 static void test_tv11_case1_survivor_a(void)
@@ -105,63 +105,63 @@ static void test_tv11_case1_survivor_a(void)
      * a keeps its own state. */
     static const double want_x[4] = {100, 50, 10, -5}; /* TV11 x_a */
     two_track_cluster();
-    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
-    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.3), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb1, MTT_R(0.9), 1, 1);
     mtt_merge_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(1, trk.n_merge);
     TV_ASSERT_REAL(0.2366666667, trk.merge[0].d2); /* TV11 case 1 */
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
-    TV_ASSERT_REAL(0.9, trk.tracks[0].existence);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed);
-    TV_ASSERT_VEC(want_x, trk.tracks[0].x, 4);
-    TV_ASSERT_REAL(1.0, trk.tracks[0].P[0][0]);
-    TEST_ASSERT_EQUAL_UINT(1, trk.stats.last.merges);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 1));
+    TV_ASSERT_REAL(0.9, TV_EXISTENCE(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CONFIRMED(&trk, 0));
+    TV_ASSERT_VEC(want_x, TV_X(&trk, 0), 4);
+    TV_ASSERT_REAL(1.0, TV_P(&trk, 0)[0][0]);
+    TEST_ASSERT_EQUAL_UINT(1, TV_STATS(&trk).last.merges);
 }
 
 static void test_tv11_case1_survivor_a_at_higher_index(void)
 {
     /* Same pair with b first: the survivor is still a (smaller trace). */
     two_track_cluster();
-    set_b(&trk.tracks[0], xb1, MTT_R(0.2), 0, 0);
-    set_a(&trk.tracks[1], MTT_R(0.7), 0, 1);
+    set_b(TV_TRACK(&trk, 0), xb1, MTT_R(0.2), 0, 0);
+    set_a(TV_TRACK(&trk, 1), MTT_R(0.7), 0, 1);
     mtt_merge_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
-    TV_ASSERT_REAL(0.7, trk.tracks[1].existence);       /* max(0.2, 0.7) */
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].confirmed); /* 0 OR 0 */
-    TV_ASSERT_REAL(100.0, trk.tracks[1].x[0]);          /* TV11 x_a */
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
+    TV_ASSERT_REAL(0.7, TV_EXISTENCE(&trk, 1));       /* max(0.2, 0.7) */
+    TEST_ASSERT_EQUAL_UINT(0, TV_CONFIRMED(&trk, 1)); /* 0 OR 0 */
+    TV_ASSERT_REAL(100.0, TV_X(&trk, 1)[0]);          /* TV11 x_a */
 }
 
 static void test_tv11_case2_no_merge(void)
 {
     two_track_cluster();
-    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
-    set_b(&trk.tracks[1], xb2, MTT_R(0.9), 1, 1);
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.3), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb2, MTT_R(0.9), 1, 1);
     mtt_merge_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);             /* TV11 case 2: d2 = 1.17 >= 1 */
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
-    TV_ASSERT_REAL(0.3, trk.tracks[0].existence);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
+    TV_ASSERT_REAL(0.3, TV_EXISTENCE(&trk, 0));
 }
 
 static void test_survivor_ties(void)
 {
     /* Equal traces: the higher existence survives; then the lower index. */
     two_track_cluster();
-    set_a(&trk.tracks[0], MTT_R(0.4), 0, 0);
-    set_a(&trk.tracks[1], MTT_R(0.8), 1, 1);
-    trk.tracks[1].x[0] = MTT_R(100.6); /* TV11 case 1 offset in x */
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.4), 0, 0);
+    set_a(TV_TRACK(&trk, 1), MTT_R(0.8), 1, 1);
+    TV_X(&trk, 1)[0] = MTT_R(100.6); /* TV11 case 1 offset in x */
     mtt_merge_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
     two_track_cluster();
-    set_a(&trk.tracks[0], MTT_R(0.8), 0, 0);
-    set_a(&trk.tracks[1], MTT_R(0.8), 1, 1);
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.8), 0, 0);
+    set_a(TV_TRACK(&trk, 1), MTT_R(0.8), 1, 1);
     mtt_merge_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed); /* OR */
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CONFIRMED(&trk, 0)); /* OR */
 }
 
 static void test_merge_order_by_d2(void)
@@ -170,43 +170,43 @@ static void test_merge_order_by_d2(void)
      * (smallest trace) and the pair (0, 1) then merges too; (1, 2) is
      * skipped because 2 is already dead. */
     two_track_cluster();
-    trk.n_tracks = 3;
-    trk.cl_first[1] = 3;
-    trk.cl_list[2] = 2;
-    trk.tf[2].valid = 1;
-    set_a(&trk.tracks[0], MTT_R(0.5), 0, 0);
-    set_b(&trk.tracks[1], xb1, MTT_R(0.6), 0, 1); /* d2 = 0.2366666667 to track 0 */
-    set_b(&trk.tracks[2], xa, MTT_R(0.95), 1, 2); /* d2 = 0 to track 0 */
+    TV_N_TRACKS(&trk) = 3;
+    TV_CL_FIRST(&trk, 1) = 3;
+    TV_CL_LIST(&trk, 2) = 2;
+    TV_VALID(&trk, 2) = 1;
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.5), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb1, MTT_R(0.6), 0, 1); /* d2 = 0.2366666667 to track 0 */
+    set_b(TV_TRACK(&trk, 2), xa, MTT_R(0.95), 1, 2); /* d2 = 0 to track 0 */
     mtt_merge_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(3, trk.n_merge);
     TEST_ASSERT_TRUE(trk.merge[0].d2 == MTT_R(0.0));
     TEST_ASSERT_EQUAL_UINT(2, trk.merge[0].b);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[0].dead);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[1].dead);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[2].dead);
-    TV_ASSERT_REAL(0.95, trk.tracks[0].existence);
-    TEST_ASSERT_EQUAL_UINT(1, trk.tracks[0].confirmed);
-    TEST_ASSERT_EQUAL_UINT(2, trk.stats.last.merges);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(1, TV_DEAD(&trk, 2));
+    TV_ASSERT_REAL(0.95, TV_EXISTENCE(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_CONFIRMED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(2, TV_STATS(&trk).last.merges);
 }
 
 static void test_merge_disabled_and_other_clusters(void)
 {
     two_track_cluster();
     trk.par.merge_threshold = MTT_R(0.0); /* 0 never merges */
-    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
-    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.3), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb1, MTT_R(0.9), 1, 1);
     mtt_merge_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
     /* different clusters are never candidates */
     two_track_cluster();
-    trk.n_clusters = 2;
-    trk.cl_first[1] = 1;
-    trk.cl_first[2] = 2;
-    set_a(&trk.tracks[0], MTT_R(0.3), 0, 0);
-    set_b(&trk.tracks[1], xb1, MTT_R(0.9), 1, 1);
+    TV_N_CLUSTERS(&trk) = 2;
+    TV_CL_FIRST(&trk, 1) = 1;
+    TV_CL_FIRST(&trk, 2) = 2;
+    set_a(TV_TRACK(&trk, 0), MTT_R(0.3), 0, 0);
+    set_b(TV_TRACK(&trk, 1), xb1, MTT_R(0.9), 1, 1);
     mtt_merge_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(0, trk.n_merge);
-    TEST_ASSERT_EQUAL_UINT(0, trk.tracks[1].dead);
+    TEST_ASSERT_EQUAL_UINT(0, TV_DEAD(&trk, 1));
 }
 
 int main(void)

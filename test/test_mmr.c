@@ -1,4 +1,4 @@
-/* test_mmr.c - MMR assignment (spec 10.1): the static greedy of TV9 and
+/* test_mmr.c - MMR assignment (ALGORITHMS.md §10.1): the static greedy of TV9 and
  * LM-IHPDA with recomputation and the final recomputation of TV8 (10.3). */
 #include <string.h>
 
@@ -39,8 +39,8 @@ static void static_matrix(uint16_t n, uint16_t m, const double *B)
 
 static int assigned_meas(uint16_t t)
 {
-    int16_t k = trk.tf[t].assigned;
-    return (k < 0) ? -1 : (int)trk.pairs[k].meas;
+    int16_t k = TV_ASSIGNED(&trk, t);
+    return (k < 0) ? -1 : (int)TV_PAIR_MEAS(&trk, k);
 }
 
 static void test_tv9_static_greedy(void)
@@ -50,22 +50,22 @@ static void test_tv9_static_greedy(void)
     double total = 0.0;
     uint16_t t;
     static_matrix(3, 4, B);
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_clusters);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_CLUSTERS(&trk));
     mtt_mmr_cluster(&trk, 0, 0);
     TEST_ASSERT_EQUAL_INT(0, assigned_meas(0)); /* TV9 step 1: T1 -> z1 (0.7) */
     TEST_ASSERT_EQUAL_INT(1, assigned_meas(2)); /* TV9 step 2: T3 -> z2 (0.55) */
     TEST_ASSERT_EQUAL_INT(3, assigned_meas(1)); /* TV9 step 3: T2 -> z4 (0.2) */
     for (t = 0; t < 3; ++t) {
-        total += (double)trk.pairs[trk.tf[t].assigned].beta;
+        total += (double)TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, t));
     }
     TV_ASSERT_REAL(1.45, total); /* TV9 total */
-    TV_ASSERT_REAL(0.7, trk.pairs[trk.tf[0].assigned].beta);
-    TV_ASSERT_REAL(0.55, trk.pairs[trk.tf[2].assigned].beta);
-    TV_ASSERT_REAL(0.2, trk.pairs[trk.tf[1].assigned].beta);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[0].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[1].used);
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[2].used); /* z3 stays free */
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[3].used);
+    TV_ASSERT_REAL(0.7, TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 0)));
+    TV_ASSERT_REAL(0.55, TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 2)));
+    TV_ASSERT_REAL(0.2, TV_PAIR_BETA(&trk, TV_ASSIGNED(&trk, 1)));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 2)); /* z3 stays free */
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 3));
 }
 
 static void test_tv9_tie_break(void)
@@ -109,8 +109,8 @@ static void tv8_tracker(void)
     mtt_gate_frame(&trk);
     mtt_clutter_frame(&trk, 1);
     mtt_cluster_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(4, trk.n_pairs);
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_clusters);
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_CLUSTERS(&trk));
 }
 
 static void test_tv8_initial_beta_matrix(void)
@@ -127,9 +127,9 @@ static void test_tv8_initial_beta_matrix(void)
     TEST_ASSERT_EQUAL_UINT(2, mtt_ihpda_row(&trk, 1, 0, -1, 0, &best));
     TEST_ASSERT_EQUAL_INT(2, best); /* T2's row max on z2 */
     for (k = 0; k < 4; ++k) {
-        TV_ASSERT_REAL_MSG(beta[k], trk.pairs[k].beta, "TV8 initial beta");
-        TV_ASSERT_REAL_MSG(beta0[k], MTT_R(1.0) - trk.pairs[k].beta, "TV8 initial beta_0");
-        TV_ASSERT_REAL_MSG(delta[k], MTT_R(1.0) - trk.pairs[k].L, "TV8 initial delta");
+        TV_ASSERT_REAL_MSG(beta[k], TV_PAIR_BETA(&trk, k), "TV8 initial beta");
+        TV_ASSERT_REAL_MSG(beta0[k], MTT_R(1.0) - TV_PAIR_BETA(&trk, k), "TV8 initial beta_0");
+        TV_ASSERT_REAL_MSG(delta[k], MTT_R(1.0) - TV_PAIR_L(&trk, k), "TV8 initial delta");
     }
     /* TV8: m = 2 for both rows, Prank = 0.8 (rank 1) and 0.2 (rank 2) */
     TV_ASSERT_REAL(0.8, trk.prank[MTT_PRANK_ROW(2)]);
@@ -141,51 +141,52 @@ static void test_tv8_mmr_with_recomputation(void)
     tv8_tracker();
     mtt_mmr_cluster(&trk, 0, 1);
     /* iteration 1: global max 0.8856765228 at (T1, z2) with m = 2 */
-    TEST_ASSERT_EQUAL_INT(1, trk.tf[0].assigned);
-    TEST_ASSERT_EQUAL_UINT(1, trk.pairs[trk.tf[0].assigned].meas);
-    TV_ASSERT_REAL(0.8856765228, trk.pairs[1].beta); /* TV8 iteration 1 */
+    TEST_ASSERT_EQUAL_INT(1, TV_ASSIGNED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 0)));
+    TV_ASSERT_REAL(0.8856765228, TV_PAIR_BETA(&trk, 1)); /* TV8 iteration 1 */
     /* iteration 2: T2's row without z2 (m = 1): 0.9862472034 at (T2, z3) */
-    TEST_ASSERT_EQUAL_INT(3, trk.tf[1].assigned);
-    TEST_ASSERT_EQUAL_UINT(2, trk.pairs[trk.tf[1].assigned].meas);
-    TV_ASSERT_REAL(0.9862472034, trk.pairs[3].beta); /* TV8 iteration 2 */
-    TEST_ASSERT_TRUE(trk.pairs[2].beta == MTT_R(0.0)); /* z2 taken by T1 */
-    TEST_ASSERT_EQUAL_UINT(0, trk.meas[0].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[1].used);
-    TEST_ASSERT_EQUAL_UINT(1, trk.meas[2].used);
+    TEST_ASSERT_EQUAL_INT(3, TV_ASSIGNED(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 1)));
+    TV_ASSERT_REAL(0.9862472034, TV_PAIR_BETA(&trk, 3)); /* TV8 iteration 2 */
+    TEST_ASSERT_TRUE(TV_PAIR_BETA(&trk, 2) == MTT_R(0.0)); /* z2 taken by T1 */
+    TEST_ASSERT_EQUAL_UINT(0, TV_USED(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 2));
 }
 
 static void test_tv8_final_recomputation(void)
 {
     tv8_tracker();
     mtt_mmr_cluster(&trk, 0, 1);
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
     /* TV8 final: T1 assigned z2, m = 2, beta 0.8856765228, delta -6.305824947 */
-    TV_ASSERT_REAL(0.8856765228, trk.pairs[1].beta);
-    TV_ASSERT_REAL(0.1143234772, MTT_R(1.0) - trk.pairs[1].beta);
-    TV_ASSERT_REAL(-6.305824947, MTT_R(1.0) - trk.pairs[1].L);
-    TV_ASSERT_REAL(0.9669129444, trk.tracks[0].existence);
-    TEST_ASSERT_EQUAL_INT(1, trk.tracks[0].meas);
+    TV_ASSERT_REAL(0.8856765228, TV_PAIR_BETA(&trk, 1));
+    TV_ASSERT_REAL(0.1143234772, MTT_R(1.0) - TV_PAIR_BETA(&trk, 1));
+    TV_ASSERT_REAL(-6.305824947, MTT_R(1.0) - TV_PAIR_L(&trk, 1));
+    TV_ASSERT_REAL(0.9669129444, TV_EXISTENCE(&trk, 0));
+    TEST_ASSERT_EQUAL_INT(1, TV_TRACK_MEAS(&trk, 0));
     /* T2 assigned z3, m = 1, beta 0.9862472034, delta -6.925660752 */
-    TV_ASSERT_REAL(0.9862472034, trk.pairs[3].beta);
-    TV_ASSERT_REAL(0.01375279657, MTT_R(1.0) - trk.pairs[3].beta);
-    TV_ASSERT_REAL(-6.925660752, MTT_R(1.0) - trk.pairs[3].L);
-    TV_ASSERT_REAL(0.8879634766, trk.tracks[1].existence);
-    TEST_ASSERT_EQUAL_INT(2, trk.tracks[1].meas);
+    TV_ASSERT_REAL(0.9862472034, TV_PAIR_BETA(&trk, 3));
+    TV_ASSERT_REAL(0.01375279657, MTT_R(1.0) - TV_PAIR_BETA(&trk, 3));
+    TV_ASSERT_REAL(-6.925660752, MTT_R(1.0) - TV_PAIR_L(&trk, 3));
+    TV_ASSERT_REAL(0.8879634766, TV_EXISTENCE(&trk, 1));
+    TEST_ASSERT_EQUAL_INT(2, TV_TRACK_MEAS(&trk, 1));
 }
 
 static void test_tv8_final_recomputation_by_row(void)
 {
-    /* The spec 10.3 recomputation called directly: T2's set is G minus z2
+    /* The ALGORITHMS.md §10.3 recomputation called directly: T2's set is G minus z2
      * (assigned to T1), keeping its own z3; T1 keeps z1 (unassigned). */
     int16_t best;
     tv8_tracker();
     mtt_mmr_cluster(&trk, 0, 1);
     TEST_ASSERT_EQUAL_UINT(1, mtt_ihpda_row(&trk, 1, 1, 3, 0, &best));
-    TV_ASSERT_REAL(0.9862472034, trk.pairs[3].beta);  /* TV8 final T2 */
-    TV_ASSERT_REAL(-6.925660752, MTT_R(1.0) - trk.pairs[3].L);
+    TV_ASSERT_REAL(0.9862472034, TV_PAIR_BETA(&trk, 3));  /* TV8 final T2 */
+    TV_ASSERT_REAL(-6.925660752, MTT_R(1.0) - TV_PAIR_L(&trk, 3));
     TEST_ASSERT_EQUAL_UINT(2, mtt_ihpda_row(&trk, 0, 1, 1, 0, &best));
-    TV_ASSERT_REAL(0.8856765228, trk.pairs[1].beta);  /* TV8 final T1 */
-    TV_ASSERT_REAL(-6.305824947, MTT_R(1.0) - trk.pairs[1].L);
+    TV_ASSERT_REAL(0.8856765228, TV_PAIR_BETA(&trk, 1));  /* TV8 final T1 */
+    TV_ASSERT_REAL(-6.305824947, MTT_R(1.0) - TV_PAIR_L(&trk, 1));
 }
 
 static void test_tv8_optimal_result_recomputation(void)
@@ -193,17 +194,18 @@ static void test_tv8_optimal_result_recomputation(void)
     /* TV8 final recomputation for the optimal 2-D result (T1 -> z1, T2 -> z2),
      * through the update stage with those assignments given by hand. */
     tv8_tracker();
-    trk.tf[0].assigned = 0; /* (T1, z1) */
-    trk.tf[1].assigned = 2; /* (T2, z2) */
-    trk.meas[0].used = 1;
-    trk.meas[1].used = 1;
+    TV_ASSIGNED(&trk, 0) = 0; /* (T1, z1) */
+    TV_ASSIGNED(&trk, 1) = 2; /* (T2, z2) */
+    TV_USED(&trk, 0) = 1;
+    TV_USED(&trk, 1) = 1;
+    mtt_ihpda_final_frame(&trk);
     mtt_update_frame(&trk);
-    TV_ASSERT_REAL(0.9923727825, trk.pairs[0].beta);              /* TV8 optimal T1 beta */
-    TV_ASSERT_REAL(-13.29092596, MTT_R(1.0) - trk.pairs[0].L);    /* T1 delta */
-    TV_ASSERT_REAL(0.9828071472, trk.tracks[0].existence);        /* T1 P(exist|Z^k) */
-    TV_ASSERT_REAL(0.8063539279, trk.pairs[2].beta);              /* TV8 optimal T2 beta */
-    TV_ASSERT_REAL(-0.9459788052, MTT_R(1.0) - trk.pairs[2].L);   /* T2 delta */
-    TV_ASSERT_REAL(0.6605542449, trk.tracks[1].existence);        /* T2 P(exist|Z^k) */
+    TV_ASSERT_REAL(0.9923727825, TV_PAIR_BETA(&trk, 0));              /* TV8 optimal T1 beta */
+    TV_ASSERT_REAL(-13.29092596, MTT_R(1.0) - TV_PAIR_L(&trk, 0));    /* T1 delta */
+    TV_ASSERT_REAL(0.9828071472, TV_EXISTENCE(&trk, 0));        /* T1 P(exist|Z^k) */
+    TV_ASSERT_REAL(0.8063539279, TV_PAIR_BETA(&trk, 2));              /* TV8 optimal T2 beta */
+    TV_ASSERT_REAL(-0.9459788052, MTT_R(1.0) - TV_PAIR_L(&trk, 2));   /* T2 delta */
+    TV_ASSERT_REAL(0.6605542449, TV_EXISTENCE(&trk, 1));        /* T2 P(exist|Z^k) */
 }
 
 int main(void)

@@ -1,4 +1,4 @@
-/* test_params.c - defaults (FORMATS.md table), validation naming the first
+/* test_params.c - defaults (docs/FORMATS.md table), validation naming the first
  * bad field, association names, unsupported modes. */
 #include <string.h>
 
@@ -34,7 +34,7 @@ static void test_defaults_match_formats_table(void)
     TEST_ASSERT_TRUE(p.initiate != 0);
     TV_ASSERT_REAL(60.0, p.vmax);
     TEST_ASSERT_EQUAL_INT(MTT_INIT_GATE_VMAX, p.init_gate);
-    /* seed 002 coefficients (spec 12.2) */
+    /* [S2] coefficients (ALGORITHMS.md §12.2) */
     TV_ASSERT_REAL(-0.0007, p.intensity_f1[0]);
     TV_ASSERT_REAL(0.5072, p.intensity_f1[1]);
     TV_ASSERT_REAL(39.70, p.intensity_f1[2]);
@@ -275,7 +275,7 @@ static void test_assoc_names_round_trip(void)
 {
     static const char *const names[MTT_ASSOC_COUNT] = {
         "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
-        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"}; /* FORMATS.md */
+        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"}; /* docs/FORMATS.md */
     int a;
     for (a = 0; a < (int)MTT_ASSOC_COUNT; ++a) {
         const char *name = NULL;
@@ -306,7 +306,7 @@ static void test_status_text(void)
 {
     const char *t = NULL;
     int s;
-    for (s = 0; s >= (int)MTT_ERR_UNSUPPORTED; --s) {
+    for (s = 0; s >= (int)MTT_ERR_CONFIG; --s) {
         t = NULL;
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_status_text((mtt_status)s, &t));
         TEST_ASSERT_NOT_NULL(t);
@@ -314,8 +314,10 @@ static void test_status_text(void)
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_status_text(MTT_OK, &t));
     TEST_ASSERT_EQUAL_STRING("ok", t);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_status_text(MTT_ERR_CONFIG, &t));
+    TEST_ASSERT_EQUAL_STRING("configuration mismatch", t);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_status_text((mtt_status)1, &t));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_status_text((mtt_status)-9, &t));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_status_text((mtt_status)-10, &t));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_status_text(MTT_OK, NULL));
 }
 

@@ -1,5 +1,5 @@
-/* test_regress.c - regressions found by the fuzzers and the soak (issue 6,
- * docs/ROBUSTNESS.md).  The raw inputs are replayed by the ctests
+/* test_regress.c - regressions found by the fuzzers and the soak
+ * (docs/ROBUSTNESS.md).  The raw inputs are replayed by the ctests
  * fuzz.replay.*; these are the same findings as plain API calls. */
 #include <string.h>
 
@@ -215,7 +215,7 @@ void test_vanishing_existence_stays_finite(void)
 }
 
 /* F6: two detections 1e-6 apart in time with sigma 32 gave a newborn
- * track a velocity variance of 2e15 (2R/dT^2, spec 12.1); at the next
+ * track a velocity variance of 2e15 (2R/dT^2, ALGORITHMS.md §12.1); at the next
  * frame (dT = 1) its float covariance turned singular.  The two-point
  * velocity variance is now capped at vmax^2 (the velocity gate's own
  * bound), with the correlations kept. */

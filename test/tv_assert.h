@@ -1,5 +1,5 @@
-/* tv_assert.h - the one tolerance rule of the unit tests (spec 16,
- * test_vectors.md header): double builds 1e-6 relative with a 1e-9 absolute
+/* tv_assert.h - the one tolerance rule of the unit tests (ALGORITHMS.md §16,
+ * docs/TEST_VECTORS.md header): double builds 1e-6 relative with a 1e-9 absolute
  * floor; float builds 1e-4 relative with a 1e-6 absolute floor.
  *
  *   TV_ASSERT_REAL(expected, actual)          expected: a test-vector number

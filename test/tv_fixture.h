@@ -12,6 +12,95 @@
 #include "mtt_internal.h"
 #include "unity.h"
 
+/* ---- the test-only accessor layer ----
+ * Stage tests name the state they set up and check through these (lvalues:
+ * read and write), not through the layout of mtt/state.h; when the layout
+ * changes, this block changes, not the tests. */
+/* counts of this frame */
+#define TV_N_TRACKS(t) ((t)->n_tracks)
+#define TV_N_MEAS(t) ((t)->n_meas)
+#define TV_N_PAIRS(t) ((t)->n_pairs)
+#define TV_N_CLUSTERS(t) ((t)->n_clusters)
+/* gated pair k: track, measurement, p = N/PG, clutter density, LM weight,
+ * beta and L of the row last computed */
+#define TV_PAIR_TRACK(t, k) ((t)->pairs[k].track)
+#define TV_PAIR_MEAS(t, k) ((t)->pairs[k].meas)
+#define TV_PAIR_P(t, k) ((t)->pairs[k].p)
+#define TV_PAIR_LAM(t, k) ((t)->pairs[k].lam)
+#define TV_PAIR_W(t, k) ((t)->pairs[k].w)
+#define TV_PAIR_BETA(t, k) ((t)->pairs[k].beta)
+#define TV_PAIR_L(t, k) ((t)->pairs[k].L)
+/* track i this frame: valid (S positive definite), its pairs, gate area,
+ * clutter density, cluster, assigned pair, beta_0, updated existence */
+#define TV_VALID(t, i) ((t)->tf[i].valid)
+#define TV_PAIR_FIRST(t, i) ((t)->tf[i].pair_first)
+#define TV_PAIR_COUNT(t, i) ((t)->tf[i].pair_count)
+#define TV_ALL_AMP(t, i) ((t)->tf[i].has_all_amp)
+#define TV_GATE_AREA(t, i) ((t)->tf[i].vg)
+#define TV_LAMBDA(t, i) ((t)->tf[i].lambda)
+#define TV_CLUSTER_OF(t, i) ((t)->tf[i].cluster)
+#define TV_ASSIGNED(t, i) ((t)->tf[i].assigned)
+#define TV_BETA0(t, i) ((t)->tf[i].beta0)
+#define TV_EX_POST(t, i) ((t)->tf[i].ex_post)
+/* track i of the table */
+#define TV_TRACK(t, i) (&(t)->tracks[i])
+#define TV_X(t, i) ((t)->tracks[i].x)
+#define TV_P(t, i) ((t)->tracks[i].P)
+#define TV_EXISTENCE(t, i) ((t)->tracks[i].existence)
+#define TV_CONFIRMED(t, i) ((t)->tracks[i].confirmed)
+#define TV_DEAD(t, i) ((t)->tracks[i].dead)
+#define TV_TRACK_MEAS(t, i) ((t)->tracks[i].meas)
+/* measurement j: used (assigned, selected or gated) this frame */
+#define TV_USED(t, j) ((t)->meas[j].used)
+/* the frame's counters, and the JPDA family's scratch (weights, events) */
+#define TV_STATS(t) ((t)->stats)
+#define TV_JPDA(t) ((t)->base.jp)
+/* clusters (CSR): tracks cl_list[cl_first[c] .. cl_first[c + 1]) */
+#define TV_CL_FIRST(t, c) ((t)->cl_first[c])
+#define TV_CL_LIST(t, q) ((t)->cl_list[q])
+/* pairs of measurement j (CSR): mp_list[mp_first[j] .. mp_first[j + 1]) */
+#define TV_MP_FIRST(t, j) ((t)->mp_first[j])
+#define TV_MP_LIST(t, x) ((t)->mp_list[x])
+
+
+/* d^2 of gated pair k, as the gate computed it (the pair keeps only p). */
+static inline mtt_real tv_pair_d2(const mtt_tracker *trk, uint16_t k)
+{
+    const mtt_pair *pp = &trk->pairs[k];
+    const mtt_track_frame *tf = &trk->tf[pp->track];
+    return mtt_mahal2(tf->Si, trk->meas[pp->meas].x - tf->xp[0], trk->meas[pp->meas].y - tf->xp[1]);
+}
+
+/* Input index of kept measurement i of this frame, and how many are kept. */
+static inline uint32_t tv_meas_src(const mtt_tracker *trk, uint16_t i)
+{
+    return trk->meas[i].src;
+}
+static inline uint16_t tv_meas_count(const mtt_tracker *trk)
+{
+    return trk->n_meas;
+}
+
+/* IPDA betas of m candidates given as arrays (p, lambda), through the
+ * library's pair-based mtt_ipda_betas. */
+static inline void tv_ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam,
+                                 uint16_t m, mtt_real *beta, mtt_real *beta0, mtt_real *L)
+{
+    mtt_pair pp[MTT_MAX_GATED];
+    uint16_t j;
+    memset(pp, 0, sizeof pp);
+    for (j = 0; j < m; ++j) {
+        pp[j].p = p[j];
+        pp[j].lam = lam[j];
+    }
+    mtt_ipda_betas(pd, pg, pp, m, beta0, L);
+    for (j = 0; j < m; ++j) {
+        beta[j] = pp[j].beta;
+    }
+}
+
+/* ---- writers ---- */
+
 /* Initialise trk with p (must succeed); no tracks, no measurements. */
 static inline void tv_init(mtt_tracker *trk, const mtt_params *p)
 {

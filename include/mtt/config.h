@@ -39,13 +39,13 @@
 #endif
 
 /* Tracks of one cluster solved by the optimal 2-D assignment (ihpda-2d,
- * spec 10.2); larger clusters fall back to MMR (counted in the stats). */
+ * ALGORITHMS.md §10.2); larger clusters fall back to MMR (counted in the stats). */
 #ifndef MTT_MAX_ASSIGN_TRACKS
 #define MTT_MAX_ASSIGN_TRACKS 16
 #endif
 
 /* Exact JPDA enumeration (jpda, jipda, nnjpda, jpda-star, adaptive-jpda,
- * spec 13.1, 16): tracks and measurements of one cluster, and feasible
+ * ALGORITHMS.md §13.1, §16): tracks and measurements of one cluster, and feasible
  * joint events.  Beyond any of them the cluster falls back (counted in the
  * stats): to Cheap JPDA, or to per-track IPDA in jipda. */
 #ifndef MTT_MAX_JPDA_TRACKS
@@ -56,6 +56,12 @@
 #endif
 #ifndef MTT_MAX_JPDA_EVENTS
 #define MTT_MAX_JPDA_EVENTS 2048
+#endif
+
+/* Largest state of a motion model (the track table's x and P); the
+ * constant-velocity model needs 4 (x, y, vx, vy). */
+#ifndef MTT_MAX_STATE
+#define MTT_MAX_STATE 4
 #endif
 
 /* 1: build the comparison baselines (ihpda-2d, jipda, the JPDA family).
@@ -76,10 +82,17 @@
 #error "MTT_MAX_PAIRS must be in [1, 65535]"
 #endif
 #if MTT_MAX_GATED < 1 || MTT_MAX_GATED > 64
-#error "MTT_MAX_GATED must be in [1, 64] (rank probabilities are verified to 64, spec 7.2)"
+#error "MTT_MAX_GATED must be in [1, 64] (rank probabilities are verified to 64, ALGORITHMS.md §7.2)"
 #endif
 #if MTT_MAX_MERGE_PAIRS < 1 || MTT_MAX_MERGE_PAIRS > 65535
 #error "MTT_MAX_MERGE_PAIRS must be in [1, 65535]"
+#endif
+
+#if MTT_MAX_STATE < 4 || MTT_MAX_STATE > 9
+#error "MTT_MAX_STATE must be in [4, 9] (the CV model needs 4)"
+#endif
+#if MTT_WITH_BASELINES != 0 && MTT_WITH_BASELINES != 1
+#error "MTT_WITH_BASELINES must be 0 or 1"
 #endif
 
 #if MTT_MAX_ASSIGN_TRACKS < 1 || MTT_MAX_ASSIGN_TRACKS > 255
@@ -89,7 +102,7 @@
 #error "MTT_MAX_JPDA_TRACKS must be in [1, 16] (detected-track bit mask)"
 #endif
 #if MTT_MAX_JPDA_MEAS < 1 || MTT_MAX_JPDA_MEAS > 32
-#error "MTT_MAX_JPDA_MEAS must be in [1, 32] (used-measurement bit mask, spec 13.1)"
+#error "MTT_MAX_JPDA_MEAS must be in [1, 32] (used-measurement bit mask, ALGORITHMS.md §13.1)"
 #endif
 #if MTT_MAX_JPDA_EVENTS < 1 || MTT_MAX_JPDA_EVENTS > 65535
 #error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"

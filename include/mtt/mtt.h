@@ -4,7 +4,7 @@
  * LM-IHPDA association (or IPDA, LM-IPDA, IHPDA, IHPDA with optimal 2-D
  * assignment, JIPDA and the JPDA family), MMR assignment, Markov
  * existence, two-point initiation, merging, confirm/delete.  The algorithm
- * reference is ALGORITHMS.md ("spec"); section numbers below point into it.
+ * reference is docs/ALGORITHMS.md; "§N" below is its section N.
  *
  * Memory: all state is one caller-allocated mtt_tracker whose size is fixed
  * by mtt/config.h.  No allocation, no I/O, no clocks, no hidden statics: the
@@ -32,6 +32,20 @@ extern "C" {
 #define MTT_VERSION_PATCH 0
 #define MTT_VERSION_STRING "0.1.0"
 
+/* The configuration identity: a hash (FNV-1a steps, a constant expression)
+ * of everything that fixes the layout or meaning of the tracker state --
+ * the version major, every bound of mtt/config.h, the size and kind of
+ * mtt_real and the feature switches.  mtt_tracker_init passes the caller's
+ * value, and the library refuses one that differs from its own. */
+#define MTT_CONFIG_MIX_(h, v) ((((uint32_t)(h)) ^ (uint32_t)(v)) * 16777619u)
+#define MTT_CONFIG_ID                                                                              \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                   \
+        MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
+        MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
+        MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real))
+
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
 #else
@@ -48,42 +62,45 @@ typedef enum mtt_status {
     MTT_ERR_RANGE = -5,       /**< an index or count is out of range */
     MTT_ERR_FULL = -6,        /**< the track table is full */
     MTT_ERR_VALUE = -7,       /**< a state or covariance argument is not finite / not positive definite */
-    MTT_ERR_UNSUPPORTED = -8  /**< the association mode is not built into this version */
+    MTT_ERR_UNSUPPORTED = -8, /**< the association mode is not built into this version */
+    MTT_ERR_CONFIG = -9       /**< the caller was compiled with another configuration than the
+                                   library (MTT_CONFIG_ID, sizeof(mtt_tracker)): see mtt_tracker_init */
 } mtt_status;
 
-/** Association mode (FORMATS.md `association`, spec 15.1). */
+/** Association mode (docs/FORMATS.md `association`, ALGORITHMS.md §15.1). */
 typedef enum mtt_assoc {
-    MTT_ASSOC_LM_IHPDA = 0, /**< LM-IHPDA with MMR (default, spec 7, 8, 10.1, 10.3) */
-    MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (spec 7.4) */
-    MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (spec 6, 8) */
-    MTT_ASSOC_IPDA,         /**< IPDA per track (spec 6) */
-    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment per cluster, plain lambda (spec 10.2, 10.3);
+    MTT_ASSOC_LM_IHPDA = 0, /**< LM-IHPDA with MMR (default, ALGORITHMS.md §7, §8, §10.1, §10.3) */
+    MTT_ASSOC_IHPDA,        /**< single-target IHPDA per track, no assignment (ALGORITHMS.md §7.4) */
+    MTT_ASSOC_LM_IPDA,      /**< IPDA with the LM clutter density (ALGORITHMS.md §6, §8) */
+    MTT_ASSOC_IPDA,         /**< IPDA per track (ALGORITHMS.md §6) */
+    MTT_ASSOC_IHPDA_2D,     /**< IHPDA, optimal 2-D assignment per cluster, plain lambda (ALGORITHMS.md §10.2, §10.3);
                                  clusters over MTT_MAX_ASSIGN_TRACKS use MMR (counts.assign_fallbacks) */
-    MTT_ASSOC_JIPDA,        /**< JIPDA: exact enumeration, beta and existence (spec 13.2); clusters over
+    MTT_ASSOC_JIPDA,        /**< JIPDA: exact enumeration, beta and existence (ALGORITHMS.md §13.2); clusters over
                                  the MTT_MAX_JPDA_* bounds use per-track IPDA (counts.jpda_fallbacks) */
-    MTT_ASSOC_JPDA,         /**< exact JPDA (spec 13.1); over the bounds Cheap JPDA (counts.jpda_fallbacks) */
-    MTT_ASSOC_CHEAP_JPDA,   /**< Cheap JPDA, rows normalised (spec 13.3) */
-    MTT_ASSOC_SUBOPT_JPDA,  /**< Suboptimal JPDA with the per-track B_t (spec 13.4) */
-    MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (spec 13.5) */
-    MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (spec 13.6) */
-    MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (spec 13.7) */
+    MTT_ASSOC_JPDA,         /**< exact JPDA (ALGORITHMS.md §13.1); over the bounds Cheap JPDA (counts.jpda_fallbacks) */
+    MTT_ASSOC_CHEAP_JPDA,   /**< Cheap JPDA, rows normalised (ALGORITHMS.md §13.3) */
+    MTT_ASSOC_SUBOPT_JPDA,  /**< Suboptimal JPDA with the per-track B_t (ALGORITHMS.md §13.4) */
+    MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (ALGORITHMS.md §13.5) */
+    MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (ALGORITHMS.md §13.6) */
+    MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (ALGORITHMS.md §13.7) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
 
-/** Initial (two-point) velocity gate (spec 12.1, 12.2). */
+/** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
 typedef enum mtt_init_gate {
     MTT_INIT_GATE_VMAX = 0,     /**< |z_k - z_{k-1}| <= vmax * dT */
-    MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) (seed 002) */
+    MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) ([S2]) */
 } mtt_init_gate;
 
-/** Stages whose cost the optional cycle counter measures (DESIGN.md). */
+/** Stages whose cost the optional cycle counter measures (docs/DESIGN.md). */
 typedef enum mtt_stage {
     MTT_STAGE_VALIDATE = 0,
     MTT_STAGE_PREDICT,
     MTT_STAGE_GATE,
     MTT_STAGE_LM_CLUTTER,
-    MTT_STAGE_ASSOCIATE,   /* clusters, beta rows and assignment */
-    MTT_STAGE_UPDATE,
+    MTT_STAGE_ASSOCIATE,   /* clusters and the mode's whole association: every beta row,
+                              selection / assignment, the final recomputation */
+    MTT_STAGE_UPDATE,      /* state and existence update only */
     MTT_STAGE_INITIATE,
     MTT_STAGE_MERGE,
     MTT_STAGE_MANAGE,
@@ -178,13 +195,13 @@ typedef struct mtt_counts {
     uint32_t pairs;           /**< gated pairs kept */
     uint32_t pairs_dropped;   /**< gated, but beyond MTT_MAX_PAIRS (least likely dropped) */
     uint32_t gated_dropped;   /**< gated, but beyond MTT_MAX_GATED in one gate (largest d^2 dropped) */
-    uint32_t clusters;        /**< clusters formed (spec 9) */
+    uint32_t clusters;        /**< clusters formed (ALGORITHMS.md §9) */
     uint32_t births;          /**< tentative tracks started */
     uint32_t births_dropped;  /**< pairs that passed the velocity gate with the table full */
     uint32_t merges;          /**< tracks removed by merging */
     uint32_t merge_dropped;   /**< merge candidates beyond MTT_MAX_MERGE_PAIRS */
     uint32_t deletions;       /**< tracks deleted on existence */
-    uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (spec 3) */
+    uint32_t numeric_deletions; /**< tracks deleted for a non-positive-definite S (ALGORITHMS.md §3) */
     uint32_t confirmations;   /**< tracks confirmed */
     uint32_t assign_fallbacks;/**< ihpda-2d clusters over MTT_MAX_ASSIGN_TRACKS, resolved by MMR */
     uint32_t jpda_fallbacks;  /**< clusters over the exact-JPDA bounds (tracks, measurements, events):
@@ -199,197 +216,15 @@ typedef struct mtt_stats {
     uint32_t max_cluster_tracks;  /**< largest cluster of the last frame (tracks) */
 } mtt_stats;
 
-/* ------------------------------------------------------------------------
- * Tracker state.  Its members are not part of the API (use the functions);
- * they are here so the caller can allocate it, statically in firmware.
- * ---------------------------------------------------------------------- */
-
-/** A live track. */
-typedef struct mtt_track {
-    mtt_real x[4];
-    mtt_real P[4][4];
-    mtt_real existence;
-    uint32_t id;
-    uint32_t age;
-    int32_t meas;        /* input index used this frame, -1 */
-    uint8_t confirmed;
-    uint8_t born;        /* born in the current frame: no gate yet */
-    uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
-} mtt_track;
-
-/** Per-frame, per-track scratch (prediction, innovation, gate). */
-typedef struct mtt_track_frame {
-    mtt_real xp[4];
-    mtt_real Pp[4][4];
-    mtt_real ex_pred;    /* predicted existence (spec 11) */
-    mtt_real S[3];       /* innovation covariance s11, s12, s22 */
-    mtt_real Si[3];      /* its inverse */
-    mtt_real det_s;
-    mtt_real vg;         /* gate area (spec 4) */
-    mtt_real K[4][2];    /* Kalman gain */
-    mtt_real lambda;     /* clutter density of this track: known, or estimate (spec 5.2) */
-    uint16_t pair_first, pair_count;
-    int16_t assigned;    /* pair index chosen, -1 */
-    uint16_t cluster;
-    int16_t best;        /* MMR: pair index of the row's best beta, -1 */
-    uint8_t row_m;       /* candidates of the last IHPDA row computed (its m) */
-    mtt_real best_beta;  /* MMR: that beta */
-    mtt_real beta0;      /* JPDA family: beta of "no measurement" (spec 13) */
-    mtt_real ex_post;    /* JPDA family: updated existence (spec 13.2) */
-    uint8_t has_all_amp; /* every gated measurement has an amplitude */
-    uint8_t valid;       /* S positive definite */
-    uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (spec 13.7) */
-} mtt_track_frame;
-
-/** A gated (track, measurement) pair. */
-typedef struct mtt_pair {
-    uint16_t track;      /* index into the track table */
-    uint16_t meas;       /* index into the frame's measurement store */
-    mtt_real d2;         /* squared Mahalanobis distance */
-    mtt_real p;          /* gate-normalised likelihood N/PG (spec 4) */
-    mtt_real w;          /* LM weight p * Pt / (1 - Pt) (spec 8.2) */
-    mtt_real lam;        /* clutter density this track sees for this measurement */
-    mtt_real beta;       /* association probability of the current row */
-    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (spec 7.3) */
-} mtt_pair;
-
-/** A measurement kept for this frame (or the previous one, for initiation). */
-typedef struct mtt_mstore {
-    mtt_real x, y, amp;
-    uint32_t src;        /* input index */
-    uint8_t has_amp;
-    uint8_t used;        /* assigned / selected / gated: not available for initiation */
-} mtt_mstore;
-
-/** One IHPDA candidate: p_j, lambda_j, amplitude, measurement index. */
-typedef struct mtt_cand {
-    mtt_real p, lam, amp;
-    uint16_t idx;         /* measurement index (for the tie rules) */
-    uint8_t has_amp;
-} mtt_cand;
-
-/** Per-row scratch of the association stages: a member of the tracker,
- *  not the stack, so mtt_tracker_step's stack stays small and bounded. */
-typedef struct mtt_row_scratch {
-    mtt_cand cand[MTT_MAX_GATED];
-    uint16_t pair[MTT_MAX_GATED];
-    mtt_real beta[MTT_MAX_GATED];
-    mtt_real L[MTT_MAX_GATED];
-    mtt_real p[MTT_MAX_GATED];
-    mtt_real lam[MTT_MAX_GATED];
-    mtt_real nu[MTT_MAX_GATED][2];
-    uint8_t rank[MTT_MAX_GATED];
-} mtt_row_scratch;
-
-/** Columns of the optimal 2-D assignment: the measurements one cluster can
- *  gate, plus one dummy ("unassigned") column per track. */
-#define MTT_ASSIGN_COLS                                                             \
-    (((MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) < MTT_MAX_MEAS ? (MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) \
-                                                             : MTT_MAX_MEAS) + MTT_MAX_ASSIGN_TRACKS)
-
-/** Scratch of the optimal 2-D assignment (spec 10.2), one cluster at a time. */
-typedef struct mtt_assign_scratch {
-    mtt_real u[MTT_MAX_ASSIGN_TRACKS + 1];  /* row potentials */
-    mtt_real v[MTT_ASSIGN_COLS + 1];        /* column potentials */
-    mtt_real minv[MTT_ASSIGN_COLS + 1];
-    mtt_real row[MTT_ASSIGN_COLS];          /* weights of one row */
-    uint16_t p[MTT_ASSIGN_COLS + 1];        /* row matched to each column (1-based), 0 none */
-    uint16_t way[MTT_ASSIGN_COLS + 1];
-    uint8_t done[MTT_ASSIGN_COLS + 1];
-    uint16_t col_meas[MTT_ASSIGN_COLS];     /* measurement of each column */
-    uint16_t col_of[MTT_MAX_MEAS];          /* column of each measurement, or none */
-    int16_t col_row[MTT_MAX_ASSIGN_TRACKS]; /* result: column of each row, -1 */
-} mtt_assign_scratch;
-
-/** Scratch of the JPDA family (spec 13): per-frame weights, one dense
- *  cluster, the explicit depth-first stack and the events of the last
- *  enumeration (JPDA* grouping). */
-typedef struct mtt_jpda_scratch {
-    mtt_real pa[MTT_MAX_PAIRS];      /* A of each gated pair */
-    mtt_real tb[MTT_MAX_TRACKS];     /* B of each track */
-    mtt_real max1[MTT_MAX_TRACKS];   /* Suboptimal JPDA: largest A of each row ... */
-    mtt_real max2[MTT_MAX_TRACKS];   /* ... and the second largest (0 if none) */
-    uint16_t arg1[MTT_MAX_TRACKS];   /* measurement of max1 */
-    uint16_t mark[MTT_MAX_TRACKS];   /* neighbour set L_t: mark = t + 1 */
-    uint16_t nb[MTT_MAX_TRACKS];     /* neighbour list of one track */
-    uint16_t n, m;                   /* dense cluster: tracks, measurements */
-    uint16_t trk_of[MTT_MAX_JPDA_TRACKS];
-    uint16_t meas_of[MTT_MAX_JPDA_MEAS];
-    mtt_real A[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* rows scaled by 1/scale */
-    mtt_real B[MTT_MAX_JPDA_TRACKS];
-    mtt_real scale[MTT_MAX_JPDA_TRACKS];
-    uint32_t gmask[MTT_MAX_JPDA_TRACKS];
-    mtt_real S[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* sum of w over events with t -> j */
-    mtt_real S0[MTT_MAX_JPDA_TRACKS];                   /* sum of w over events with t missed */
-    mtt_real W;                                         /* sum of w */
-    int8_t choice[MTT_MAX_JPDA_TRACKS];                 /* depth-first stack */
-    mtt_real prod[MTT_MAX_JPDA_TRACKS + 1];
-    uint32_t used[MTT_MAX_JPDA_TRACKS + 1];
-    uint16_t det[MTT_MAX_JPDA_TRACKS + 1];
-    uint32_t n_events, n_kept;
-    uint32_t ev_used[MTT_MAX_JPDA_EVENTS];   /* measurements used by each event */
-    uint16_t ev_det[MTT_MAX_JPDA_EVENTS];    /* tracks detected in each event */
-    mtt_real ev_w[MTT_MAX_JPDA_EVENTS];      /* scaled weight */
-    uint16_t ev_idx[MTT_MAX_JPDA_EVENTS];    /* sort order */
-    uint8_t ev_keep[(MTT_MAX_JPDA_EVENTS + 7) / 8];
-} mtt_jpda_scratch;
-
-/** A track pair that passed the merge test (spec 12.3). */
-typedef struct mtt_merge_cand {
-    mtt_real d2;
-    uint16_t a, b;       /* track indices, a < b */
-} mtt_merge_cand;
-
-/** The tracker: all state.  Allocate it, then call mtt_tracker_init. */
-typedef struct mtt_tracker {
-    uint32_t magic;                 /* init marker */
-    mtt_params par;
-    mtt_real gamma;                 /* gate threshold from pg */
-    mtt_real R[3];                  /* measurement covariance (sym) */
-    mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), spec 7.2 */
-    mtt_real time;
-    uint8_t have_time;
-    uint32_t next_id;
-    uint16_t n_tracks;
-    mtt_track tracks[MTT_MAX_TRACKS];
-    mtt_track_frame tf[MTT_MAX_TRACKS];
-    /* frame scratch */
-    uint16_t n_meas;
-    mtt_mstore meas[MTT_MAX_MEAS];
-    uint16_t order[MTT_MAX_MEAS];   /* measurements sorted by x (gating sweep) */
-    uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
-    uint16_t n_pairs;
-    mtt_pair pairs[MTT_MAX_PAIRS];
-    uint16_t mp_first[MTT_MAX_MEAS + 1]; /* pairs of each measurement (CSR) */
-    uint16_t mp_list[MTT_MAX_PAIRS];
-    mtt_real wsum[MTT_MAX_MEAS];    /* LM sum W_j */
-    uint16_t uf[MTT_MAX_TRACKS];    /* union-find parents, then cluster ids */
-    uint16_t cl_first[MTT_MAX_TRACKS + 1]; /* tracks of each cluster (CSR) */
-    uint16_t cl_list[MTT_MAX_TRACKS];
-    uint16_t n_clusters;
-    uint16_t n_merge;
-    mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
-    mtt_row_scratch row;
-#if MTT_WITH_BASELINES
-    /* One mode runs per tracker, so the baselines share their scratch. */
-    union {
-        mtt_assign_scratch asg;     /* ihpda-2d */
-        mtt_jpda_scratch jp;        /* JIPDA and the JPDA family */
-    } base;
-#endif
-    /* previous frame's unused measurements (U_{k-1}, spec 12.1) */
-    uint16_t n_prev;
-    mtt_mstore prev[MTT_MAX_MEAS];
-    uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
-    uint16_t init_cand[MTT_MAX_MEAS];  /* U_{k-1} within reach of one z_k */
-    mtt_stats stats;
-} mtt_tracker;
+/* The tracker state (mtt_tracker), so that callers can allocate it.  Its
+ * layout is not API: use the functions. */
+#include "mtt/state.h"
 
 /* ------------------------------------------------------------------------
  * Functions
  * ---------------------------------------------------------------------- */
 
-/** Fill p with FORMATS.md's defaults (seed 000's IR set-up).
+/** Fill p with docs/FORMATS.md's defaults ([S0]'s IR set-up).
  *  @return MTT_OK; MTT_ERR_NULL if p is NULL. */
 MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
 
@@ -431,9 +266,22 @@ MTT_MUST_CHECK mtt_status mtt_params_get(const mtt_params *p, const char *key, d
                                          size_t n);
 
 /** Initialise (or reset) a tracker.  Cost: O(MTT_MAX_GATED^2) for the rank table.
- *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
- *          mtt_params_check (the tracker is then left uninitialised). */
-MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p);
+ *  A macro, as zlib's deflateInit: it passes the caller's sizeof(mtt_tracker)
+ *  and MTT_CONFIG_ID, so a program compiled with other bounds, another
+ *  mtt_real or other feature switches than the library it links is refused
+ *  instead of corrupting memory.  Compile the caller with the library's
+ *  definitions (the CMake target mtt::mtt and pkg-config mtt carry them).
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG on a configuration mismatch
+ *          (nothing is written, p is not read); MTT_ERR_PARAM /
+ *          MTT_ERR_UNSUPPORTED as mtt_params_check (the tracker is then left
+ *          uninitialised). */
+#define mtt_tracker_init(trk, p) \
+    mtt_tracker_init_checked((trk), (p), sizeof(mtt_tracker), (uint32_t)(MTT_CONFIG_ID))
+
+/** mtt_tracker_init with the caller's size of mtt_tracker and configuration
+ *  identity given explicitly; call it through the macro. */
+MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p,
+                                                   size_t tracker_size, uint32_t config_id);
 
 /** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).
  *  Bad detections are skipped and counted; beyond MTT_MAX_MEAS the strongest
@@ -446,6 +294,13 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p
  *  O(pairs), Cheap / Suboptimal JPDA O(pairs * neighbouring tracks),
  *  ihpda-2d O(t^3) up to MTT_MAX_ASSIGN_TRACKS, the exact JPDA family and
  *  JIPDA O(events) up to MTT_MAX_JPDA_EVENTS (then the counted fallback).
+ *  Overflow (counted in the stats): beyond MTT_MAX_MEAS a heap keeps the
+ *  strongest, O(n log MTT_MAX_MEAS); but the other caps let the worst entry
+ *  give way by a linear scan, so each entry over a cap costs a scan of it:
+ *  O(MTT_MAX_PAIRS) per pair beyond MTT_MAX_PAIRS, O(MTT_MAX_GATED) per
+ *  measurement beyond a full gate, O(MTT_MAX_MERGE_PAIRS) per merge
+ *  candidate beyond it.  A frame that overflows MTT_MAX_PAIRS by e pairs
+ *  thus costs up to e * MTT_MAX_PAIRS more: size the bounds for the scene.
  *  Every loop is bounded by config.h; nothing allocates or recurses.
  *  @return MTT_OK; MTT_ERR_NULL (trk NULL, or meas NULL with n > 0);
  *          MTT_ERR_NOT_INIT; MTT_ERR_TIME if time is not finite or not greater
@@ -453,7 +308,7 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init(mtt_tracker *trk, const mtt_params *p
 MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
                                            const mtt_meas *meas, size_t n);
 
-/** Add a known (seeded) track: confirmed, existence 1 (FORMATS.md initial_tracks).
+/** Add a known (seeded) track: confirmed, existence 1 (docs/FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16
  *         values; pass &P[0][0] for a mtt_real[4][4]), symmetric (to 1e-6
  *         relative) and positive definite with room for rounding: every
@@ -480,17 +335,17 @@ MTT_MUST_CHECK mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i,
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_NOT_INIT. */
 MTT_MUST_CHECK mtt_status mtt_tracker_stats(const mtt_tracker *trk, mtt_stats *stats);
 
-/** The two-point initial covariance of spec 12.1 for measurement sigmas
+/** The two-point initial covariance of ALGORITHMS.md §12.1 for measurement sigmas
  *  (sx, sy) and frame interval dt > 0: [[R, R/dt], [R/dt, 2R/dt^2]].
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if an argument is not finite
  *          or not positive. */
 MTT_MUST_CHECK mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt,
                                                  mtt_real P[4][4]);
 
-/** Name of an association mode as FORMATS.md spells it ("lm-ihpda", ...). */
+/** Name of an association mode as docs/FORMATS.md spells it ("lm-ihpda", ...). */
 MTT_MUST_CHECK mtt_status mtt_assoc_name(mtt_assoc a, const char **name);
 
-/** Parse a FORMATS.md association name.
+/** Parse a docs/FORMATS.md association name.
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the name is unknown. */
 MTT_MUST_CHECK mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a);
 

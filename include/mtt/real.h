@@ -10,8 +10,10 @@
 
 #include <math.h>
 
+/* MTT_REAL_KIND: 1 float, 2 double (part of the configuration identity). */
 #ifdef MTT_REAL_DOUBLE
 typedef double mtt_real;
+#define MTT_REAL_KIND 2
 #define MTT_R(x) (x)
 #define mtt_sqrt(x) sqrt(x)
 #define mtt_exp(x) exp(x)
@@ -21,6 +23,7 @@ typedef double mtt_real;
 #define MTT_REAL_MAX 1.7976931348623157e308
 #else
 typedef float mtt_real;
+#define MTT_REAL_KIND 1
 #define MTT_R(x) ((float)(x)) /* a constant expression: folded at compile time */
 #define mtt_sqrt(x) sqrtf(x)
 #define mtt_exp(x) expf(x)

@@ -1,0 +1,198 @@
+/* mtt/state.h - the layout of the tracker state, mtt_tracker.
+ *
+ * NOT API.  It is public only so that a caller can allocate the tracker
+ * (statically in firmware): its size follows from mtt/config.h alone.
+ * Members change between versions without notice; read a tracker through
+ * the functions of mtt/mtt.h (mtt_tracker_track, mtt_tracker_stats, ...).
+ * Included by mtt/mtt.h; include that instead. */
+#ifndef MTT_STATE_H
+#define MTT_STATE_H
+
+#include "mtt/mtt.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A live track. */
+typedef struct mtt_track {
+    mtt_real x[MTT_MAX_STATE];    /* the motion model's state (x, y, vx, vy for CV) */
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real existence;
+    uint32_t id;
+    uint32_t age;
+    int32_t meas;        /* input index used this frame, -1 */
+    uint8_t confirmed;
+    uint8_t born;        /* born in the current frame: no gate yet */
+    uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
+} mtt_track;
+
+/** Per-frame, per-track scratch (prediction, innovation, gate). */
+typedef struct mtt_track_frame {
+    mtt_real xp[MTT_MAX_STATE];
+    mtt_real Pp[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real ex_pred;    /* predicted existence (ALGORITHMS.md §11) */
+    mtt_real S[3];       /* innovation covariance s11, s12, s22 */
+    mtt_real Si[3];      /* its inverse */
+    mtt_real det_s;
+    mtt_real vg;         /* gate area (ALGORITHMS.md §4) */
+    mtt_real K[MTT_MAX_STATE][2]; /* Kalman gain */
+    mtt_real lambda;     /* clutter density of this track: known, or estimate (ALGORITHMS.md §5.2) */
+    uint16_t pair_first, pair_count;
+    int16_t assigned;    /* pair index chosen, -1 */
+    uint16_t cluster;
+    int16_t best;        /* MMR: pair index of the row's best beta, -1 */
+    uint8_t row_m;       /* candidates of the last IHPDA row computed (its m) */
+    mtt_real best_beta;  /* MMR: that beta */
+    mtt_real beta0;      /* JPDA family: beta of "no measurement" (ALGORITHMS.md §13) */
+    mtt_real ex_post;    /* JPDA family: updated existence (ALGORITHMS.md §13.2) */
+    uint8_t has_all_amp; /* every gated measurement has an amplitude */
+    uint8_t valid;       /* S positive definite */
+    uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (ALGORITHMS.md §13.7) */
+} mtt_track_frame;
+
+/** A gated (track, measurement) pair. */
+typedef struct mtt_pair {
+    uint16_t track;      /* index into the track table */
+    uint16_t meas;       /* index into the frame's measurement store */
+    mtt_real p;          /* gate-normalised likelihood N/PG (ALGORITHMS.md §4) */
+    mtt_real w;          /* LM weight p * Pt / (1 - Pt) (ALGORITHMS.md §8.2) */
+    mtt_real lam;        /* clutter density this track sees for this measurement */
+    mtt_real beta;       /* association probability of the current row */
+    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (ALGORITHMS.md §7.3) */
+} mtt_pair;
+
+/** A measurement kept for this frame (or the previous one, for initiation). */
+typedef struct mtt_mstore {
+    mtt_real x, y, amp;
+    uint32_t src;        /* input index */
+    uint8_t has_amp;
+    uint8_t used;        /* assigned / selected / gated: not available for initiation */
+} mtt_mstore;
+
+/** One IHPDA candidate: p_j, lambda_j, amplitude, measurement index. */
+typedef struct mtt_cand {
+    mtt_real p, lam, amp;
+    uint16_t idx;         /* measurement index (for the tie rules) */
+} mtt_cand;
+
+/** Per-row scratch of the association stages: a member of the tracker,
+ *  not the stack, so mtt_tracker_step's stack stays small and bounded. */
+typedef struct mtt_row_scratch {
+    mtt_cand cand[MTT_MAX_GATED];
+    uint16_t pair[MTT_MAX_GATED];
+    mtt_real beta[MTT_MAX_GATED];
+    mtt_real L[MTT_MAX_GATED];
+    mtt_real nu[MTT_MAX_GATED][2];
+    uint8_t rank[MTT_MAX_GATED];
+} mtt_row_scratch;
+
+/** Columns of the optimal 2-D assignment: the measurements one cluster can
+ *  gate, plus one dummy ("unassigned") column per track. */
+#define MTT_ASSIGN_COLS                                                             \
+    (((MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) < MTT_MAX_MEAS ? (MTT_MAX_ASSIGN_TRACKS * MTT_MAX_GATED) \
+                                                             : MTT_MAX_MEAS) + MTT_MAX_ASSIGN_TRACKS)
+
+/** Scratch of the optimal 2-D assignment (ALGORITHMS.md §10.2), one cluster at a time. */
+typedef struct mtt_assign_scratch {
+    mtt_real u[MTT_MAX_ASSIGN_TRACKS + 1];  /* row potentials */
+    mtt_real v[MTT_ASSIGN_COLS + 1];        /* column potentials */
+    mtt_real minv[MTT_ASSIGN_COLS + 1];
+    mtt_real row[MTT_ASSIGN_COLS];          /* weights of one row */
+    uint16_t p[MTT_ASSIGN_COLS + 1];        /* row matched to each column (1-based), 0 none */
+    uint16_t way[MTT_ASSIGN_COLS + 1];
+    uint8_t done[MTT_ASSIGN_COLS + 1];
+    uint16_t col_meas[MTT_ASSIGN_COLS];     /* measurement of each column */
+    uint16_t col_of[MTT_MAX_MEAS];          /* column of each measurement, or none */
+    int16_t col_row[MTT_MAX_ASSIGN_TRACKS]; /* result: column of each row, -1 */
+} mtt_assign_scratch;
+
+/** Scratch of the JPDA family (ALGORITHMS.md §13): per-frame weights, one dense
+ *  cluster, the explicit depth-first stack and the events of the last
+ *  enumeration (JPDA* grouping). */
+typedef struct mtt_jpda_scratch {
+    mtt_real pa[MTT_MAX_PAIRS];      /* A of each gated pair */
+    mtt_real tb[MTT_MAX_TRACKS];     /* B of each track */
+    mtt_real max1[MTT_MAX_TRACKS];   /* Suboptimal JPDA: largest A of each row ... */
+    mtt_real max2[MTT_MAX_TRACKS];   /* ... and the second largest (0 if none) */
+    uint16_t arg1[MTT_MAX_TRACKS];   /* measurement of max1 */
+    uint16_t mark[MTT_MAX_TRACKS];   /* neighbour set L_t: mark = t + 1 */
+    uint16_t nb[MTT_MAX_TRACKS];     /* neighbour list of one track */
+    uint16_t n, m;                   /* dense cluster: tracks, measurements */
+    uint16_t trk_of[MTT_MAX_JPDA_TRACKS];
+    uint16_t meas_of[MTT_MAX_JPDA_MEAS];
+    mtt_real A[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* rows scaled by 1/scale */
+    mtt_real B[MTT_MAX_JPDA_TRACKS];
+    mtt_real scale[MTT_MAX_JPDA_TRACKS];
+    uint32_t gmask[MTT_MAX_JPDA_TRACKS];
+    mtt_real S[MTT_MAX_JPDA_TRACKS][MTT_MAX_JPDA_MEAS]; /* sum of w over events with t -> j */
+    mtt_real S0[MTT_MAX_JPDA_TRACKS];                   /* sum of w over events with t missed */
+    mtt_real W;                                         /* sum of w */
+    int8_t choice[MTT_MAX_JPDA_TRACKS];                 /* depth-first stack */
+    mtt_real prod[MTT_MAX_JPDA_TRACKS + 1];
+    uint32_t used[MTT_MAX_JPDA_TRACKS + 1];
+    uint16_t det[MTT_MAX_JPDA_TRACKS + 1];
+    uint32_t n_events, n_kept;
+    uint32_t ev_used[MTT_MAX_JPDA_EVENTS];   /* measurements used by each event */
+    uint16_t ev_det[MTT_MAX_JPDA_EVENTS];    /* tracks detected in each event */
+    mtt_real ev_w[MTT_MAX_JPDA_EVENTS];      /* scaled weight */
+    uint16_t ev_idx[MTT_MAX_JPDA_EVENTS];    /* sort order */
+    uint8_t ev_keep[(MTT_MAX_JPDA_EVENTS + 7) / 8];
+} mtt_jpda_scratch;
+
+/** A track pair that passed the merge test (ALGORITHMS.md §12.3). */
+typedef struct mtt_merge_cand {
+    mtt_real d2;
+    uint16_t a, b;       /* track indices, a < b */
+} mtt_merge_cand;
+
+/** The tracker: all state.  Allocate it, then call mtt_tracker_init. */
+typedef struct mtt_tracker {
+    uint32_t magic;                 /* init marker */
+    mtt_params par;
+    mtt_real gamma;                 /* gate threshold from pg */
+    mtt_real R[3];                  /* measurement covariance (sym) */
+    mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */
+    mtt_real time;
+    uint8_t have_time;
+    uint32_t next_id;
+    uint16_t n_tracks;
+    mtt_track tracks[MTT_MAX_TRACKS];
+    mtt_track_frame tf[MTT_MAX_TRACKS];
+    /* frame scratch */
+    uint16_t n_meas;
+    mtt_mstore meas[MTT_MAX_MEAS];
+    uint16_t order[MTT_MAX_MEAS];   /* measurements sorted by x (gating sweep) */
+    uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
+    uint16_t n_pairs;
+    mtt_pair pairs[MTT_MAX_PAIRS];
+    uint16_t mp_first[MTT_MAX_MEAS + 1]; /* pairs of each measurement (CSR) */
+    uint16_t mp_list[MTT_MAX_PAIRS];
+    mtt_real wsum[MTT_MAX_MEAS];    /* LM sum W_j */
+    uint16_t uf[MTT_MAX_TRACKS];    /* union-find parents, then cluster ids */
+    uint16_t cl_first[MTT_MAX_TRACKS + 1]; /* tracks of each cluster (CSR) */
+    uint16_t cl_list[MTT_MAX_TRACKS];
+    uint16_t n_clusters;
+    uint16_t n_merge;
+    mtt_merge_cand merge[MTT_MAX_MERGE_PAIRS];
+    mtt_row_scratch row;
+#if MTT_WITH_BASELINES
+    /* One mode runs per tracker, so the baselines share their scratch. */
+    union {
+        mtt_assign_scratch asg;     /* ihpda-2d */
+        mtt_jpda_scratch jp;        /* JIPDA and the JPDA family */
+    } base;
+#endif
+    /* previous frame's unused measurements (U_{k-1}, ALGORITHMS.md §12.1) */
+    uint16_t n_prev;
+    mtt_mstore prev[MTT_MAX_MEAS];
+    uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
+    uint16_t init_cand[MTT_MAX_MEAS];  /* U_{k-1} within reach of one z_k */
+    mtt_stats stats;
+} mtt_tracker;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MTT_STATE_H */

@@ -1,0 +1,86 @@
+/* measure.c - measurement validation and selection, pipeline stage 1
+ * (ALGORITHMS.md §15, §16).
+ *
+ * A detection with a NaN/Inf coordinate, or a negative/NaN/Inf amplitude,
+ * is skipped and counted.  Beyond MTT_MAX_MEAS the strongest stay: an
+ * amplitude beats none, a larger amplitude a smaller, then the earlier
+ * input wins.  A heap of the kept input indices holds the weakest at its
+ * root, so the cap costs O(n log MTT_MAX_MEAS); the kept ones are then
+ * stored in input order. */
+#include "mtt_internal.h"
+
+/* Strength order for the MTT_MAX_MEAS cap. */
+static int stronger(const mtt_meas *m, uint32_t i, uint32_t j)
+{
+    if (m[i].has_amplitude != m[j].has_amplitude) {
+        return m[i].has_amplitude != 0;
+    }
+    if (m[i].has_amplitude && m[i].amplitude != m[j].amplitude) {
+        return m[i].amplitude > m[j].amplitude;
+    }
+    return i < j;
+}
+
+/* Heap order with the weakest kept measurement at the root. */
+static int sel_less(const void *a, const void *b, const void *ctx)
+{
+    return stronger((const mtt_meas *)ctx, *(const uint32_t *)a, *(const uint32_t *)b);
+}
+
+static int idx_less(const void *a, const void *b, const void *ctx)
+{
+    (void)ctx;
+    return *(const uint32_t *)a < *(const uint32_t *)b;
+}
+
+static int meas_ok(const mtt_meas *m)
+{
+    if (!mtt_isfinite(m->x) || !mtt_isfinite(m->y)) {
+        return 0;
+    }
+    return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_R(0.0));
+}
+
+static void store_meas(mtt_tracker *trk, const mtt_meas *m, uint32_t src)
+{
+    mtt_mstore *s = &trk->meas[trk->n_meas++];
+    s->x = m->x;
+    s->y = m->y;
+    s->has_amp = (uint8_t)(m->has_amplitude != 0);
+    s->amp = s->has_amp ? m->amplitude : MTT_R(0.0);
+    s->src = src;
+    s->used = 0;
+}
+
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
+{
+    size_t i;
+    uint32_t kept = 0, valid = 0;
+    trk->n_meas = 0;
+    for (i = 0; i < n; ++i) {
+        if (!meas_ok(&meas[i])) {
+            trk->stats.last.meas_bad++;
+            continue;
+        }
+        ++valid;
+        if (kept < MTT_MAX_MEAS) {
+            trk->sel[kept++] = (uint32_t)i;
+            if (kept == MTT_MAX_MEAS) {
+                uint32_t h;
+                for (h = MTT_MAX_MEAS / 2u; h > 0u; --h) {
+                    mtt_heap_sift(trk->sel, MTT_MAX_MEAS, sizeof trk->sel[0], h - 1u, sel_less, meas);
+                }
+            }
+        } else if (stronger(meas, (uint32_t)i, trk->sel[0])) {
+            trk->sel[0] = (uint32_t)i; /* the weakest kept one gives way */
+            mtt_heap_sift(trk->sel, MTT_MAX_MEAS, sizeof trk->sel[0], 0u, sel_less, meas);
+        }
+    }
+    trk->stats.last.meas_dropped = valid - kept;
+    if (valid > kept) {
+        mtt_sort(trk->sel, kept, sizeof trk->sel[0], idx_less, NULL); /* back to input order */
+    }
+    for (i = 0; i < kept; ++i) {
+        store_meas(trk, &meas[trk->sel[i]], trk->sel[i]);
+    }
+}

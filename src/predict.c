@@ -1,0 +1,38 @@
+/* predict.c - prediction of every track, pipeline stage 2 (ALGORITHMS.md
+ * §2, §3, §11): the motion model's x^ = F x, P^ = F P F' + Q, the Markov
+ * existence prediction, and the innovation covariance S = H P^ H' + R
+ * with its inverse and the gain, from which gating and every update work.
+ * A track whose S is not positive definite is marked invalid (§3): it is
+ * not gated and the manager deletes it. */
+#include <string.h>
+
+#include "mtt_internal.h"
+
+void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
+{
+    uint16_t i;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track *t = &trk->tracks[i];
+        mtt_track_frame *tf = &trk->tf[i];
+        t->born = 0;
+        t->dead = 0;
+        t->meas = -1;
+        if (dt > MTT_R(0.0)) {
+            mtt_kalman_predict(dt, trk->par.process_psd, t->x, t->P, tf->xp, tf->Pp);
+            tf->ex_pred = mtt_existence_predict(t->existence, trk->par.markov_p11, trk->par.markov_p21);
+            t->age++;
+        } else {
+            /* First frame: the state is already at this time (seeded tracks). */
+            memcpy(tf->xp, t->x, sizeof tf->xp);
+            memcpy(tf->Pp, t->P, sizeof tf->Pp);
+            tf->ex_pred = t->existence;
+        }
+        tf->assigned = -1;
+        tf->best = -1;
+        tf->shrink = 0;
+        tf->pair_first = 0;
+        tf->pair_count = 0;
+        tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&
+                              mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K) == 0);
+    }
+}

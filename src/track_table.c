@@ -1,0 +1,146 @@
+/* track_table.c - the track table: append a track, seed a known one with
+ * its checks, delete / confirm / compact at the end of a frame
+ * (ALGORITHMS.md §12.4, §3), and the read-only views of the live tracks. */
+#include <string.h>
+
+#include "mtt_internal.h"
+
+int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real existence,
+                     int confirmed, int born)
+{
+    mtt_track *t;
+    if (trk->n_tracks >= MTT_MAX_TRACKS) {
+        return -1;
+    }
+    t = &trk->tracks[trk->n_tracks];
+    memcpy(t->x, x, sizeof t->x);
+    memcpy(t->P, P, sizeof t->P);
+    t->existence = existence;
+    t->id = trk->next_id++;
+    t->age = 0;
+    t->meas = -1;
+    t->confirmed = (uint8_t)(confirmed != 0);
+    t->born = (uint8_t)(born != 0);
+    t->dead = 0;
+    return (int)trk->n_tracks++;
+}
+
+/* Delete (numerically invalid, merged away, existence below the terminate
+ * threshold), then confirm, then compact in place, keeping the order. */
+void mtt_track_manage(mtt_tracker *trk)
+{
+    uint16_t i, n = 0;
+    for (i = 0; i < trk->n_tracks; ++i) {
+        mtt_track *t = &trk->tracks[i];
+        if (!t->born && !trk->tf[i].valid) {
+            trk->stats.last.numeric_deletions++;
+            continue;
+        }
+        if (t->dead) {
+            continue; /* merged away, counted in merges */
+        }
+        if (t->existence < trk->par.terminate_threshold) {
+            trk->stats.last.deletions++;
+            continue;
+        }
+        if (!t->confirmed && t->existence >= trk->par.confirm_threshold) {
+            t->confirmed = 1;
+            trk->stats.last.confirmations++;
+        }
+        if (n != i) {
+            trk->tracks[n] = *t;
+        }
+        ++n;
+    }
+    trk->n_tracks = n;
+}
+
+mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mtt_real P16[16],
+                                 uint32_t *id)
+{
+    mtt_cov P;
+    mtt_state xs;
+    int i, j, idx;
+    if (trk == NULL || x == NULL || P16 == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (trk->magic != MTT_MAGIC) {
+        return MTT_ERR_NOT_INIT;
+    }
+    /* The public seed is a CV state [x, y, vx, vy] with its 4x4 P. */
+    memset(xs, 0, sizeof xs);
+    memset(P, 0, sizeof P);
+    for (i = 0; i < 4; ++i) {
+        xs[i] = x[i];
+        for (j = 0; j < 4; ++j) {
+            P[i][j] = P16[4 * i + j];
+        }
+    }
+    if (!mtt_state_finite(xs)) {
+        return MTT_ERR_VALUE;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        if (!mtt_state_finite(P[i])) {
+            return MTT_ERR_VALUE;
+        }
+        for (j = 0; j < i; ++j) {
+            mtt_real tol = MTT_R(1e-6) * (mtt_fabs(P[i][j]) + mtt_fabs(P[j][i])) + MTT_REAL_EPS;
+            if (mtt_fabs(P[i][j] - P[j][i]) > tol) {
+                return MTT_ERR_VALUE;
+            }
+        }
+    }
+    /* Positive definite, and not nearly singular for mtt_real: every
+     * scale-free pivot above 1000 eps (correlations up to about 0.99994 in
+     * float); a seed past that cannot survive a predict and update. */
+    if (!mtt_cov_ok(P, MTT_SEED_COV_MARGIN)) {
+        return MTT_ERR_VALUE;
+    }
+    idx = mtt_track_append(trk, xs, P, MTT_R(1.0), 1, 0);
+    if (idx < 0) {
+        return MTT_ERR_FULL;
+    }
+    mtt_sym(trk->tracks[idx].P);
+    if (id != NULL) {
+        *id = trk->tracks[idx].id;
+    }
+    return MTT_OK;
+}
+
+mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count)
+{
+    if (trk == NULL || count == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (trk->magic != MTT_MAGIC) {
+        return MTT_ERR_NOT_INIT;
+    }
+    *count = trk->n_tracks;
+    return MTT_OK;
+}
+
+mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *view)
+{
+    const mtt_track *t;
+    int k;
+    if (trk == NULL || view == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (trk->magic != MTT_MAGIC) {
+        return MTT_ERR_NOT_INIT;
+    }
+    if (i >= trk->n_tracks) {
+        return MTT_ERR_RANGE;
+    }
+    t = &trk->tracks[i];
+    view->id = t->id;
+    view->confirmed = t->confirmed;
+    for (k = 0; k < 4; ++k) { /* the CV part: x, y, vx, vy */
+        view->x[k] = t->x[k];
+        memcpy(view->P[k], t->P[k], sizeof view->P[k]);
+    }
+    view->existence = t->existence;
+    view->age = t->age;
+    view->meas = t->meas;
+    return MTT_OK;
+}

@@ -1,0 +1,78 @@
+/* test_measure.c - measurement validation and the MTT_MAX_MEAS cap, the
+ * stage of measure.c (ALGORITHMS.md §15, §16): which detections are kept,
+ * and in which order. */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
+#include "sim.h"
+#include "unity.h"
+
+static mtt_tracker trk;
+static mtt_meas many[3 * MTT_MAX_MEAS];
+
+void setUp(void)
+{
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    tv_init(&trk, &p);
+}
+void tearDown(void) {}
+
+/* 3 x MTT_MAX_MEAS detections: exactly the strongest MTT_MAX_MEAS stay,
+ * in input order. */
+static void test_cap_keeps_strongest_in_input_order(void)
+{
+    const uint32_t n = 3u * MTT_MAX_MEAS;
+    uint32_t i, prev = 0;
+    TEST_ASSERT_TRUE(n % 7u != 0u);
+    sim_amplitude_permutation(many, n);
+    mtt_measure_select(&trk, many, n);
+    TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
+    TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, TV_STATS(&trk).last.meas_dropped);
+    for (i = 0; i < MTT_MAX_MEAS; ++i) {
+        const uint32_t src = tv_meas_src(&trk, (uint16_t)i);
+        TEST_ASSERT_TRUE((src * 7u) % n >= 2u * MTT_MAX_MEAS);
+        if (i > 0u) {
+            TEST_ASSERT_TRUE(src > prev); /* input order kept */
+        }
+        prev = src;
+    }
+}
+
+/* Without amplitudes the first MTT_MAX_MEAS inputs stay. */
+static void test_cap_without_amplitude_keeps_first(void)
+{
+    const uint32_t n = MTT_MAX_MEAS + 5u;
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        many[i] = sim_meas((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
+    }
+    mtt_measure_select(&trk, many, n);
+    TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
+    for (i = 0; i < MTT_MAX_MEAS; ++i) {
+        TEST_ASSERT_EQUAL_UINT32(i, tv_meas_src(&trk, (uint16_t)i));
+    }
+}
+
+/* Bad detections are skipped and counted; the good ones keep their input index. */
+static void test_bad_detections_skipped(void)
+{
+    mtt_meas m[7];
+    sim_bad_mix(m);
+    mtt_measure_select(&trk, m, 7);
+    TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT(2u, tv_meas_count(&trk));
+    TEST_ASSERT_EQUAL_UINT32(4u, tv_meas_src(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT32(5u, tv_meas_src(&trk, 1));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_cap_keeps_strongest_in_input_order);
+    RUN_TEST(test_cap_without_amplitude_keeps_first);
+    RUN_TEST(test_bad_detections_skipped);
+    return UNITY_END();
+}
