@@ -53,7 +53,8 @@ class Scene:
             out.append([(tr.id, int(tr.confirmed), tr.x.copy(), tr.P.copy(), tr.existence,
                          tr.age, tr.meas) for tr in trk.tracks])
         self.events = trk.events
-        return out, trk.near_ties
+        self.exact_ties = trk.exact_ties
+        return out, trk.near_ties + trk.exact_ties
 
 
 def _num(v):

@@ -25,6 +25,8 @@ MODES = ("lm-ihpda", "ihpda", "lm-ipda", "ipda")
 MAX_TRACKS = 128
 MAX_MEAS = 256
 MAX_GATED = 32
+MAX_PAIRS = 1024
+MAX_MERGE_PAIRS = 2 * MAX_TRACKS
 
 TIE_REL = 1e-9
 
@@ -117,6 +119,7 @@ class Tracker:
         self.tracks = []          # ascending id
         self.prev_unused = None   # U_{k-1}: list of (x, y, amp, input index), or None before frame 1
         self.near_ties = []       # decisions closer than TIE_REL (see module doc)
+        self.exact_ties = []      # decisions on two equal numbers (tie rules)
         self.events = Counter()   # which paths ran (the test prints the totals)
         self.frame = -1
 
@@ -130,7 +133,10 @@ class Tracker:
         return t.id
 
     def _tie(self, what, a, b):
-        if abs(a - b) <= TIE_REL * max(abs(a), abs(b)):
+        if a == b:
+            # an exact tie: the spec's tie rule decides, if both sides compute it exactly
+            self.exact_ties.append(f"frame {self.frame}: {what}: {a!r}")
+        elif abs(a - b) <= TIE_REL * max(abs(a), abs(b)):
             self.near_ties.append(f"frame {self.frame}: {what}: {a!r} vs {b!r}")
 
     def step(self, t, meas):
@@ -147,11 +153,14 @@ class Tracker:
         ms = []
         for i, (mx, my, ma) in enumerate(meas):
             if not (math.isfinite(mx) and math.isfinite(my)):
+                self.events["bad detection skipped"] += 1
                 continue
             if ma is not None and not (math.isfinite(ma) and ma >= 0.0):
+                self.events["bad detection skipped"] += 1
                 continue
             ms.append((mx, my, ma, i))
         if len(ms) > MAX_MEAS:
+            self.events["measurement cap"] += 1
             # strongest amplitudes stay; no amplitude ranks below any; earlier input wins ties
             order = sorted(range(len(ms)), key=lambda k: (ms[k][2] is None,
                                                           -(ms[k][2] or 0.0), k))
@@ -197,9 +206,11 @@ class Tracker:
             f["VG"] = math.pi * self.gamma * math.sqrt(det)
             f["K"] = f["Pp"] @ self.H.T @ Si
             gated = []
-            for j in range(nm):
-                nu = Z[j] - f["xp"][:2]
-                d2 = float(nu @ Si @ nu)
+            NU = Z - f["xp"][:2]
+            D2 = np.einsum("ji,ik,jk->j", NU, Si, NU)
+            for j in np.flatnonzero(D2 <= self.gamma * (1.0 + 2.0 * TIE_REL)):
+                j = int(j)
+                d2 = float(NU[j] @ Si @ NU[j])
                 self._tie(f"gate d2 track {tr.id} meas {j}", d2, self.gamma)
                 if d2 <= self.gamma:
                     gated.append((d2, j))
@@ -215,10 +226,23 @@ class Tracker:
             norm = 2.0 * math.pi * math.sqrt(det) * p.pg
             f["p"] = {j: math.exp(-0.5 * f["d2"][j]) / norm for j in f["G"]}
             # §7.1: any gated measurement without amplitude -> rho = 0 for this track
+        live = [tr for tr in self.tracks if not tr.dead]
+        # MTT_MAX_PAIRS (README "Limits"; not in the spec): the least likely pairs of
+        # the frame (lowest p) are dropped.  SPEC GAP: equal p; the later track and
+        # measurement go first.
+        pairs = [(tr.fr["p"][j], tr.id, j, tr) for tr in live for j in tr.fr["G"]]
+        if len(pairs) > MAX_PAIRS:
+            self.events["pairs cap"] += 1
+            pairs.sort(key=lambda q: (q[0], -q[1], -q[2]))
+            n_drop = len(pairs) - MAX_PAIRS
+            self._tie("pairs cap", pairs[n_drop - 1][0], pairs[n_drop][0])
+            for _, _, j, tr in pairs[:n_drop]:
+                tr.fr["G"].remove(j)
+        for tr in live:
+            f = tr.fr
             f["all_amp"] = all(ms[j][2] is not None for j in f["G"])
             if not f["all_amp"] and p.snr_rho > 0.0:
                 self.events["rho off (missing amplitude)"] += 1
-        live = [tr for tr in self.tracks if not tr.dead]
 
         # --- clutter density (§5): known, or the per-track estimate (§5.2) --
         for tr in live:
@@ -335,7 +359,8 @@ class Tracker:
                     if not self._init_gate(zp, zk, dt):
                         continue
                     if n_live >= MAX_TRACKS:
-                        continue                # births_dropped
+                        self.events["birth dropped (table full)"] += 1
+                        continue
                     x = np.array([zk[0], zk[1], (zk[0] - zp[0]) / dt, (zk[1] - zp[1]) / dt])
                     P = two_point_cov(p.meas_sigma[0], p.meas_sigma[1], dt)
                     # SPEC GAP (docs/ROBUSTNESS.md F6, not in §12.1): the two-point velocity
@@ -367,6 +392,11 @@ class Tracker:
                     if d2 < p.merge_threshold:
                         cand.append((d2, a.id, b.id, a, b))
             cand.sort(key=lambda c: (c[0], c[1], c[2]))
+            if len(cand) > MAX_MERGE_PAIRS:
+                # README "Limits": candidates with the largest d^2 are dropped
+                self.events["merge candidates cap"] += 1
+                self._tie("merge cap", cand[MAX_MERGE_PAIRS - 1][0], cand[MAX_MERGE_PAIRS][0])
+                cand = cand[:MAX_MERGE_PAIRS]
             for k in range(len(cand) - 1):
                 if set(cand[k][1:3]) & set(cand[k + 1][1:3]):
                     self._tie("merge order", cand[k][0], cand[k + 1][0])
@@ -444,15 +474,15 @@ class Tracker:
         free = [True] * nm
         U = [tr for tr in live if tr.fr["G"]]
         assigned = {}
+        rows = {}                              # track id -> candidates of its current row
         while True:
             cands = []
             for tr in U:
-                A = [j for j in tr.fr["G"] if free[j]]
-                if not A:
-                    continue
-                row = self._ihpda_row(tr, A, ms)
-                for j in A:
-                    cands.append((row["beta"][j], tr, j))
+                if tr.id not in rows:
+                    A = [j for j in tr.fr["G"] if free[j]]
+                    row = self._ihpda_row(tr, A, ms) if A else None
+                    rows[tr.id] = [(row["beta"][j], tr, j) for j in A]
+                cands.extend(rows[tr.id])
             if not cands:
                 break
             # global maximum; ties: lowest track index (= ascending id, §15), then lowest measurement
@@ -467,6 +497,10 @@ class Tracker:
             assigned[tr.id] = j
             free[j] = False
             U = [u for u in U if u is not tr]
+            # only the rows that had j in their gate change (§10.1): recompute those
+            for u in U:
+                if j in u.fr["G"]:
+                    rows.pop(u.id, None)
         return assigned
 
     def _update(self, tr, L, betas, beta0):
@@ -491,6 +525,8 @@ class Tracker:
         p = self.par
         dx, dy = zk[0] - zp[0], zk[1] - zp[1]
         if p.init_gate == "intensity" and zp[2] is not None:
+            if zp[2] > 1048.5:
+                self.events["intensity gate clamp"] += 1
             I = min(max(zp[2], 0.0), 1048.5)
             lo, hi = p.intensity_blend
 
@@ -508,7 +544,10 @@ class Tracker:
             d = np.array([dx, dy])
             d2 = float(d @ np.linalg.solve(S0, d))
             self._tie("intensity init gate", d2, self.gamma)
+            self.events["intensity gate " + ("pass" if d2 <= self.gamma else "reject")] += 1
             return d2 <= self.gamma
+        if p.init_gate == "intensity":
+            self.events["intensity gate without amplitude: vmax"] += 1
         r = math.hypot(dx, dy)
         self._tie("vmax gate", r, p.vmax * dt)
         return r <= p.vmax * dt

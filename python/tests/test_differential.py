@@ -98,8 +98,14 @@ def random_scene(seed):
     side = 100.0
     sig = (loguniform(rng, 0.3, 3.0), loguniform(rng, 0.3, 3.0))
     n_frames = int(rng.integers(3, 31))
+    stress = rng.random() < 0.03      # over the bounds: MTT_MAX_MEAS, _GATED, _PAIRS, _TRACKS
+    bad_data = rng.random() < 0.05    # NaN / infinite coordinates, negative amplitudes
     const_dt = rng.random() < 0.5
     clutter_rate = loguniform(rng, 0.2, 25.0) if rng.random() < 0.9 else 0.0   # per frame
+    if stress:
+        n_frames = int(rng.integers(3, 6))
+        clutter_rate = float(rng.uniform(150.0, 330.0))
+        sig = (loguniform(rng, 2.0, 4.0), loguniform(rng, 2.0, 4.0))
     lam_true = clutter_rate / (side * side)
     par = {
         "association": str(mode),
@@ -118,6 +124,18 @@ def random_scene(seed):
         "initiate": bool(rng.random() < 0.85),
         "vmax": float(rng.uniform(2.0, 15.0)),
     }
+    if rng.random() < 0.15:
+        # the intensity initial gate (§12.2): f(I) is tens of length units per frame,
+        # so these scenes are wider and their amplitudes are on S2's scale (0-2000)
+        par["init_gate"] = "intensity"
+        side = 1000.0
+        if rng.random() < 0.5:
+            k = loguniform(rng, 0.02, 1.0)
+            par["intensity_f1"] = [k * c for c in (-0.0007, 0.5072, 39.70)]
+            par["intensity_f2"] = [k * c for c in (-0.0001, 0.2097, 57.25)]
+            lo = float(rng.uniform(50.0, 300.0))
+            par["intensity_blend"] = [lo, lo + float(rng.uniform(1.0, 200.0))]
+    amp_scale = loguniform(rng, 30.0, 600.0) if par.get("init_gate") == "intensity" else 1.0
     if par["existence_init"] >= par["confirm_threshold"]:
         par["existence_init"] = 0.5 * par["confirm_threshold"]
     rho_true = loguniform(rng, 0.5, 20.0)
@@ -157,13 +175,20 @@ def random_scene(seed):
             z = rng.uniform(0.0, side, 2)
             dets.append((float(z[0]), float(z[1]), float(rng.exponential(1.0))))
         order = rng.permutation(len(dets))
-        dets = [dets[i] for i in order]
+        dets = [(x, y, a * amp_scale) for x, y, a in (dets[i] for i in order)]
         if amp_mode == "rounded":
             dets = [(x, y, round(a, 1)) for x, y, a in dets]
         elif amp_mode == "missing":
             dets = [(x, y, None if rng.random() < 0.15 else a) for x, y, a in dets]
         elif amp_mode == "none":
             dets = [(x, y, None) for x, y, a in dets]
+        if bad_data and dets:
+            for _ in range(int(rng.integers(1, 4))):
+                i = int(rng.integers(0, len(dets)))
+                x, y, a = dets[i]
+                kind = int(rng.integers(0, 4))
+                dets[i] = [(float("nan"), y, a), (x, float("inf"), a), (x, y, -1.0),
+                           (x, y, float("nan"))][kind]
         frames.append((t, dets))
     return Scene(params=par, tracks=seeded, frames=frames)
 
@@ -342,12 +367,18 @@ class Differential(unittest.TestCase):
             "random", ((f"random-{s}", random_scene(s)) for s in range(N_RANDOM)), events)
         self.assertGreaterEqual(n, N_RANDOM)
         # the scenes must exercise every stage, or agreement means little
-        for path in ("birth", "birth velocity cap", "merge", "delete", "confirm", "LM pair shared",
-                     "MMR contested measurement", "final recomputation, smaller G_f",
-                     "gate taken by others (m = 0)", "rho off (missing amplitude)",
-                     "equal amplitudes ranked by index", "scene lm-ihpda", "scene lm-ipda",
-                     "scene ihpda", "scene ipda"):
-            self.assertGreaterEqual(events[path], min(10, N_RANDOM // 20), path)
+        if N_RANDOM >= 1000:
+            for path in ("birth", "birth velocity cap", "merge", "delete", "confirm", "LM pair shared",
+                         "MMR contested measurement", "final recomputation, smaller G_f",
+                         "gate taken by others (m = 0)", "rho off (missing amplitude)",
+                         "equal amplitudes ranked by index", "scene lm-ihpda", "scene lm-ipda",
+                         "scene ihpda", "scene ipda", "intensity gate pass", "intensity gate reject",
+                         "intensity gate clamp", "intensity gate without amplitude: vmax",
+                         "bad detection skipped"):
+                self.assertGreaterEqual(events[path], 10, path)
+            for path in ("gate cap", "pairs cap", "measurement cap", "birth dropped (table full)",
+                         "merge candidates cap"):
+                self.assertGreaterEqual(events[path], 1, path)
         self.assertLessEqual(len(tie_fail), max(1, n // 100), "too many tie-sensitive disagreements")
         self.assertEqual(failures, [])
 
@@ -362,7 +393,9 @@ class Differential(unittest.TestCase):
                 if name in EXPECTED_FAILURES:
                     self.assertIsNotNone(diff, f"{name} agrees now: remove it from EXPECTED_FAILURES")
                 else:
-                    self.assertEqual(ties, [], f"{name} is tie-sensitive")
+                    # deliberate exact ties test the tie rules; a near tie cannot be decided
+                    near = [t for t in ties if t not in scene.exact_ties]
+                    self.assertEqual(near, [], f"{name} is tie-sensitive")
                     self.assertIsNone(diff, name)
         for name in EXPECTED_FAILURES:
             self.assertTrue(os.path.exists(os.path.join(CASES_DIR, name)), name)
