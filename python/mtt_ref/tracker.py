@@ -348,6 +348,13 @@ class Tracker:
                 betas = [(j, p.pd * p.pg * lam_ratio[j] / L) for j in f["G"]]
                 beta0 = (1.0 - p.pd * p.pg) / L
                 self._update(tr, L, betas, beta0)
+                # SPEC GAP: the view's "measurement used" in IPDA is the largest beta
+                # (equal beta: the lower index)
+                jb = max(betas, key=lambda q: (q[1], -q[0]))
+                for j, b in betas:
+                    if j != jb[0]:
+                        self._tie(f"ipda meas track {tr.id}", b, jb[1])
+                tr.meas = ms[jb[0]][3]
 
         # --- 8.1 initiation (§12.1, §12.2) --------------------------------------
         unused = [ms[j] for j in range(nm) if not used[j]]
