@@ -141,6 +141,29 @@ def random_scene(seed):
     amp_scale = loguniform(rng, 30.0, 600.0) if par.get("init_gate") == "intensity" else 1.0
     if par["existence_init"] >= par["confirm_threshold"]:
         par["existence_init"] = 0.5 * par["confirm_threshold"]
+    # edge values of the parameter ranges (own stream, so the other scenes stay as they were)
+    rx = np.random.default_rng([17, seed, 1])
+    dt_scale = 1.0
+    if rx.random() < 0.1:
+        extremes = {
+            "pg": [0.5, 0.999999, 0.99999999],
+            "pd": [1.0, 0.05],
+            "snr_rho": [1e6, 1e-6],
+            "markov_p11": [1.0, 0.0, 0.5],
+            "markov_p21": [1.0, 0.3],
+            "existence_init": [0.999, 1e-6],
+            "confirm_threshold": [1.0, 1e-3],
+            "terminate_threshold": [0.0, 0.5],
+            "merge_threshold": [1e6, 1e-9],
+            "process_psd": [1e-9, 1e4],
+            "clutter_density": [1e-12, 10.0],
+        }
+        for k in rx.choice(sorted(extremes), size=int(rx.integers(1, 5)), replace=False):
+            par[str(k)] = float(rx.choice(extremes[str(k)]))
+        if par["terminate_threshold"] >= par["confirm_threshold"]:
+            par["terminate_threshold"] = 0.5 * par["confirm_threshold"]
+        dt_scale = float(rx.choice([1.0, 1e-4, 1e-2, 30.0]))
+        par["vmax"] /= min(dt_scale, 1.0)
     rho_true = loguniform(rng, 0.5, 20.0)
     amp_mode = rng.choice(["full", "full", "rounded", "missing", "none"])
     # targets: constant velocity with a little acceleration noise
@@ -165,7 +188,7 @@ def random_scene(seed):
     t = float(rng.uniform(-5.0, 5.0))
     for f in range(n_frames):
         if f > 0:
-            dt = 1.0 if const_dt else float(rng.uniform(0.3, 2.5))
+            dt = (1.0 if const_dt else float(rng.uniform(0.3, 2.5))) * dt_scale
             t += dt
             vel = vel + rng.normal(0.0, 0.2, size=vel.shape) * math.sqrt(dt)
             pos = pos + vel * dt
