@@ -2,7 +2,7 @@
 
 A scene is plain text, one item per line ('#' starts a comment line):
 
-    param <name> <value> [<value>]     a FORMATS.md setting (meas_sigma takes two values,
+    param <name> <value> [<value>]     a docs/FORMATS.md setting (meas_sigma takes two values,
                                        intensity_f1/f2 three, intensity_blend two;
                                        association / init_gate take a name;
                                        initiate takes 0 or 1)
@@ -30,7 +30,7 @@ _NAMES = {"association", "init_gate"}
 
 @dataclass
 class Scene:
-    params: dict = field(default_factory=dict)   # FORMATS.md name -> value
+    params: dict = field(default_factory=dict)   # docs/FORMATS.md name -> value
     tracks: list = field(default_factory=list)   # (x[4], P[16])
     frames: list = field(default_factory=list)   # (time, [(x, y, amp or None)])
 

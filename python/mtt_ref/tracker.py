@@ -33,7 +33,7 @@ TIE_REL = 1e-9
 
 @dataclass
 class Params:
-    """The FORMATS.md settings that the reference models (same names, same defaults)."""
+    """The docs/FORMATS.md settings that the reference models (same names, same defaults)."""
     association: str = "lm-ihpda"
     process_psd: float = 5.0
     meas_sigma: tuple = (1.0, 1.0)
@@ -125,7 +125,7 @@ class Tracker:
 
     # ------------------------------------------------------------------ API
     def add_track(self, x, P):
-        """A seeded track: confirmed, existence 1 (FORMATS.md initial_tracks)."""
+        """A seeded track: confirmed, existence 1 (docs/FORMATS.md initial_tracks)."""
         t = Track(self.next_id, np.array(x, float), _sym(np.array(P, float).reshape(4, 4)), 1.0,
                   confirmed=True)
         self.next_id += 1

@@ -129,7 +129,7 @@ def random_scene(seed):
     }
     if rng.random() < 0.15:
         # the intensity initial gate (§12.2): f(I) is tens of length units per frame,
-        # so these scenes are wider and their amplitudes are on S2's scale (0-2000)
+        # so these scenes are wider and their amplitudes are on the scale of [S2] (0-2000)
         par["init_gate"] = "intensity"
         side = 1000.0
         if rng.random() < 0.5:

@@ -49,7 +49,7 @@ static int num(const char *s, double *v)
     return end != s && *end == '\0';
 }
 
-/* One FORMATS.md setting onto mtt_params; 0 on success. */
+/* One docs/FORMATS.md setting onto mtt_params; 0 on success. */
 static int set_param(mtt_params *p, char **w, int n)
 {
     static const struct { const char *name; size_t off; int count; } reals[] = {
