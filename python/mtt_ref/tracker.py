@@ -532,9 +532,15 @@ class Tracker:
         p = self.par
         dx, dy = zk[0] - zp[0], zk[1] - zp[1]
         if p.init_gate == "intensity" and zp[2] is not None:
-            if zp[2] > 1048.5:
+            # §12.2 clamps I at 1048.5, the peak of the default f2, so that f does not
+            # decrease (and turn negative) above it.  SPEC GAP: with configured
+            # coefficients the bound is read as the peak of the configured f2,
+            # -a1 / (2 a2), and there is none when a2 >= 0 (f2 does not peak).
+            a2, a1 = p.intensity_f2[0], p.intensity_f2[1]
+            i_max = -a1 / (2.0 * a2) if a2 < 0.0 else math.inf
+            if zp[2] > i_max:
                 self.events["intensity gate clamp"] += 1
-            I = min(max(zp[2], 0.0), 1048.5)
+            I = min(max(zp[2], 0.0), i_max)
             lo, hi = p.intensity_blend
 
             def poly(c):

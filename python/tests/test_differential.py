@@ -127,6 +127,7 @@ def random_scene(seed):
         "initiate": bool(rng.random() < 0.85),
         "vmax": float(rng.uniform(2.0, 15.0)),
     }
+    rx_gate = np.random.default_rng([17, seed, 2])
     if rng.random() < 0.15:
         # the intensity initial gate (§12.2): f(I) is tens of length units per frame,
         # so these scenes are wider and their amplitudes are on the scale of [S2] (0-2000)
@@ -136,6 +137,9 @@ def random_scene(seed):
             k = loguniform(rng, 0.02, 1.0)
             par["intensity_f1"] = [k * c for c in (-0.0007, 0.5072, 39.70)]
             par["intensity_f2"] = [k * c for c in (-0.0001, 0.2097, 57.25)]
+            if rx_gate.random() < 0.5:      # an f2 of its own: its peak moves, or it has none
+                par["intensity_f2"] = [k * float(rx_gate.choice([0.0, -loguniform(rx_gate, 1e-5, 2e-3)])),
+                                       k * float(rx_gate.uniform(0.05, 1.0)), k * float(rx_gate.uniform(0.0, 60.0))]
             lo = float(rng.uniform(50.0, 300.0))
             par["intensity_blend"] = [lo, lo + float(rng.uniform(1.0, 200.0))]
     amp_scale = loguniform(rng, 30.0, 600.0) if par.get("init_gate") == "intensity" else 1.0
