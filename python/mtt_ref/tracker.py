@@ -174,7 +174,8 @@ class Tracker:
             tr.meas = -1
             tr.fr = {}
 
-        # --- 1. predict (§2, §3, §11); the first frame predicts nothing (README) ---
+        # --- 1. predict (§2, §3, §11).  SPEC GAP: the first frame predicts nothing
+        # (README "Other limits"), not even the existence
         for tr in self.tracks:
             if first:
                 xp, Pp, ep = tr.x.copy(), tr.P.copy(), tr.existence
