@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""fwcheck.py - checks and figures of the firmware proof (issue 5).
+"""fwcheck.py - checks and figures of the firmware proof (docs/FIRMWARE.md).
 
   fwcheck.py doubles --nm NM ELF...          no double-precision helpers in the images
   fwcheck.py qemu --qemu Q --out F --elf E -- <machine args>
@@ -12,7 +12,7 @@
                                              worst-case stack depth of F's call graph
   fwcheck.py insns --out F                   instructions per frame from the icount run
 
-Python 3 standard library only.  Methods: README, section "Firmware".
+Python 3 standard library only.  Methods: docs/FIRMWARE.md.
 """
 import argparse
 import os

@@ -5,7 +5,7 @@
  * SysTick runs from the processor clock (25 MHz on the mps2 boards) over
  * its full 24-bit range; its interrupt extends the count to 32 bits.
  * Under qemu with -icount shift=0 the virtual clock advances 1 ns per
- * instruction, so one tick is 40 instructions (README "Firmware"). */
+ * instruction, so one tick is 40 instructions (docs/FIRMWARE.md). */
 #include <stdint.h>
 
 #include "fw.h"

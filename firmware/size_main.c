@@ -1,5 +1,5 @@
 /* size_main.c - the two images whose difference is the library's cost in
- * a firmware (README "Firmware", tools/ci-firmware.sh):
+ * a firmware (docs/FIRMWARE.md, scripts/ci-firmware.sh):
  *
  *   fw-size-lib   references every public function of mtt;
  *   fw-size-base  the same program with the calls left out.

@@ -1,8 +1,8 @@
 /* fuzz/fuzz_detections.c - libFuzzer harness: the detections CSV reader of
- * mtt-track, mtt_io_read_detections (tools/mtt_io.c), on arbitrary bytes.
+ * mtt-track, mtt_io_read_detections (io/detections.c), on arbitrary bytes.
  *
  * Beyond "no crash, no leak, no undefined behaviour" (ASan+UBSan), what the
- * reader accepts must be what FORMATS.md promises and what the tracker
+ * reader accepts must be what docs/FORMATS.md promises and what the tracker
  * takes: scans in file order partition the detections, scan numbers never
  * decrease, times and tracker times strictly increase, every coordinate is
  * finite, every amplitude finite and >= 0; and stepping a default tracker

@@ -1,5 +1,5 @@
 /* fuzz/fuzz_io_common.h - shared by the reader harnesses: the input bytes
- * become a file that the reader opens by path (the readers of tools/mtt_io.c
+ * become a file that the reader opens by path (the readers of libmtt_io, io/
  * take a path), and the readers' one-line messages are silenced.
  *
  * The file is a memfd (no disk traffic, nothing left behind), opened by the

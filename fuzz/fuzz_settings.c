@@ -1,5 +1,5 @@
 /* fuzz/fuzz_settings.c - libFuzzer harness: the settings JSON reader of
- * mtt-track, mtt_io_read_settings (tools/mtt_io.c), on arbitrary bytes.
+ * mtt-track, mtt_io_read_settings (io/settings.c), on arbitrary bytes.
  *
  * Beyond "no crash, no leak, no undefined behaviour" (ASan+UBSan), a
  * settings set the reader accepts must be usable as mtt-track uses it:

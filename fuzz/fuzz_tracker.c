@@ -1,6 +1,6 @@
 /* fuzz/fuzz_tracker.c - libFuzzer harness: mtt_tracker_step on arbitrary
  * frames with arbitrary (valid) parameters, in every association mode that
- * mtt_params_check accepts (issue 6).
+ * mtt_params_check accepts.
  *
  * The input bytes decode into
  *   1. a parameter set: each field is its default, a special value (0, 1,

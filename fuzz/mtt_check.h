@@ -1,6 +1,6 @@
 /* fuzz/mtt_check.h - invariants of a tracker after every frame, shared by
  * the libFuzzer harness fuzz/fuzz_tracker.c and the soak program
- * tools/soak.c (issue 6).  Host only (stdio); header-only so each program
+ * fuzz/soak.c.  Host only (stdio); header-only so each program
  * compiles it with its own flags.
  *
  * After each successful mtt_tracker_step the caller runs mtt_check_frame,

@@ -1,11 +1,13 @@
-/* params.c - parameter defaults (FORMATS.md, seed 000's IR set-up),
- * validation that names the first bad field, and the names of the modes. */
+/* params.c - parameter defaults (docs/FORMATS.md, the IR set-up of [S0]),
+ * validation against the ranges of params_table.h that names the first bad
+ * field, and the names of the modes. */
 #include <stddef.h>
 #include <string.h>
 
 #include "mtt_internal.h"
+#include "params_table.h"
 
-static const char *const assoc_names[MTT_ASSOC_COUNT] = {
+const char *const mtt_assoc_names[MTT_ASSOC_COUNT] = {
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
     "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"};
 
@@ -32,7 +34,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->initiate = 1;
     p->vmax = MTT_R(60.0);
     p->init_gate = MTT_INIT_GATE_VMAX;
-    /* seed 002, spec 12.2 */
+    /* [S2], ALGORITHMS.md §12.2 */
     p->intensity_f1[0] = MTT_R(-0.0007);
     p->intensity_f1[1] = MTT_R(0.5072);
     p->intensity_f1[2] = MTT_R(39.70);
@@ -51,89 +53,60 @@ mtt_status mtt_params_default(mtt_params *p)
     return MTT_OK;
 }
 
-/* Range rules of mtt_params_check, in the order the first bad field is
- * reported.  A table rather than a chain of calls: smaller code (the
- * library's .text is a firmware budget) and one place to read the ranges. */
-enum {
-    B_0, B_1, B_1EM9, B_1E9, B_1E6, B_MAX, B_MINUS_MAX, /* bounds, see bound() */
-    OPEN_LO = 1, OPEN_HI = 2, HI_CONFIRM = 4, LO_BLEND = 8, INIT_GATE = 16
-};
-
+/* Range rules of mtt_params_check: the REAL rows of params_table.h,
+ * without their texts (the library's .text is a firmware budget).  The
+ * first bad field in table order is reported. */
 typedef struct range_rule {
     const char *name;
-    uint16_t off;          /* offsetof the mtt_real in mtt_params */
-    uint8_t lo, hi, flags; /* B_* bound indices and the flags above */
+    uint16_t off;          /* offsetof the first mtt_real in mtt_params */
+    uint8_t count, flags;  /* elements, PF_* flags */
+    mtt_real lo, hi;
 } range_rule;
 
-#define RULE(name, member, lo, hi, flags) {name, (uint16_t)offsetof(mtt_params, member), lo, hi, flags}
+#define RULE(key, member, count, lo, hi, flags, cross, text)                                      \
+    {key, (uint16_t)offsetof(mtt_params, member), count, flags, MTT_R(lo), MTT_R(hi)},
 
-static const range_rule rules[] = {
-    RULE("process_psd", process_psd, B_0, B_MAX, OPEN_LO),
-    /* sigma^2 must stay a normal number, with room for R / dT^2 */
-    RULE("meas_sigma", meas_sigma[0], B_1EM9, B_1E9, 0),
-    RULE("meas_sigma", meas_sigma[1], B_1EM9, B_1E9, 0),
-    RULE("pd", pd, B_0, B_1, OPEN_LO),
-    RULE("pg", pg, B_0, B_1, OPEN_LO | OPEN_HI),
-    RULE("clutter_density", clutter_density, B_0, B_MAX, 0),
-    RULE("snr_rho", snr_rho, B_0, B_1E6, 0),
-    RULE("markov_p11", markov_p11, B_0, B_1, 0),
-    RULE("markov_p21", markov_p21, B_0, B_1, 0),
-    RULE("existence_init", existence_init, B_0, B_1, OPEN_LO | OPEN_HI),
-    RULE("confirm_threshold", confirm_threshold, B_0, B_1, OPEN_LO),
-    RULE("terminate_threshold", terminate_threshold, B_0, B_1, OPEN_HI | HI_CONFIRM),
-    RULE("merge_threshold", merge_threshold, B_0, B_MAX, 0),
-    RULE("vmax", vmax, B_0, B_MAX, OPEN_LO),
-    RULE("init_gate", vmax, B_0, B_MAX, INIT_GATE),
-    RULE("jpda_bias", jpda_bias, B_0, B_MAX, 0),
-    RULE("jpda_star_threshold", jpda_star_threshold, B_0, B_1, OPEN_HI),
-    RULE("nnjpda_threshold", nnjpda_threshold, B_0, B_1, OPEN_HI),
-    RULE("adaptive_jpda_distance", adaptive_jpda_distance, B_0, B_MAX, OPEN_LO),
-    RULE("adaptive_jpda_shrink", adaptive_jpda_shrink, B_1, B_MAX, 0),
-    RULE("intensity_gate.blend", intensity_blend[0], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.blend", intensity_blend[1], B_MINUS_MAX, B_MAX, OPEN_LO | LO_BLEND),
-    RULE("intensity_gate.f1", intensity_f1[0], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.f2", intensity_f2[0], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.f1", intensity_f1[1], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.f2", intensity_f2[1], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.f1", intensity_f1[2], B_MINUS_MAX, B_MAX, 0),
-    RULE("intensity_gate.f2", intensity_f2[2], B_MINUS_MAX, B_MAX, 0),
-};
+static const range_rule rules[MTT_RULE_COUNT] = {
+    MTT_PARAM_ROWS(RULE, MTT_PARAM_NO_FLAG, MTT_PARAM_NO_ENUM)};
 
-static mtt_real bound(uint8_t b)
+const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
+
+mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
 {
-    switch (b) {
-    case B_0: return MTT_R(0.0);
-    case B_1: return MTT_R(1.0);
-    case B_1EM9: return MTT_R(1e-9);
-    case B_1E9: return MTT_R(1e9);
-    case B_1E6: return MTT_R(1e6);
-    case B_MINUS_MAX: return -MTT_REAL_MAX;
-    default: return MTT_REAL_MAX;
-    }
+    return (mtt_real *)(void *)((char *)p + rules[rule].off);
 }
 
-/* lo <(=) v <(=) hi with finite v; open ends as the flags say. */
-static int rule_ok(const mtt_params *p, const range_rule *r)
+int mtt_params_rule_ok(const mtt_params *p, size_t rule, int cross)
 {
-    const mtt_real v = *(const mtt_real *)(const void *)((const char *)p + r->off);
-    mtt_real lo = bound(r->lo), hi = bound(r->hi);
-    if (r->flags & INIT_GATE) {
-        return p->init_gate == MTT_INIT_GATE_VMAX || p->init_gate == MTT_INIT_GATE_INTENSITY;
+    const range_rule *r = &rules[rule];
+    const mtt_real *v = (const mtt_real *)(const void *)((const char *)p + r->off);
+    mtt_real lo = r->lo, hi = r->hi;
+    uint8_t k;
+    if (cross && (r->flags & PF_BELOW_CONFIRM)) {
+        hi = p->confirm_threshold; /* open, as the flags say: terminate < confirm */
     }
-    if (r->flags & HI_CONFIRM) {
-        hi = p->confirm_threshold;
+    for (k = 0; k < r->count; ++k) {
+        if (!mtt_isfinite(v[k])) {
+            return 0;
+        }
+        if ((r->flags & PF_OPEN_LO) ? !(v[k] > lo) : !(v[k] >= lo)) {
+            return 0;
+        }
+        if ((r->flags & PF_OPEN_HI) ? !(v[k] < hi) : !(v[k] <= hi)) {
+            return 0;
+        }
+        if (cross && (r->flags & PF_ASCENDING) && k > 0 && !(v[k] > v[k - 1])) {
+            return 0;
+        }
     }
-    if (r->flags & LO_BLEND) {
-        lo = p->intensity_blend[0];
-    }
-    if (!mtt_isfinite(v)) {
-        return 0;
-    }
-    if ((r->flags & OPEN_LO) ? !(v > lo) : !(v >= lo)) {
-        return 0;
-    }
-    return (r->flags & OPEN_HI) ? (v < hi) : (v <= hi);
+    return 1;
 }
+
+/* An enum row is bad when its value is not one of its n_names. */
+#define CHECK_ENUM(key, member, type, n_names, names, text)                                        \
+    if (bad == NULL && !((int)p->member >= 0 && (int)p->member < (int)(n_names))) {                 \
+        bad = key;                                                                                 \
+    }
 
 mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
 {
@@ -146,16 +119,14 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
     if (p == NULL) {
         return MTT_ERR_NULL;
     }
-    if ((int)p->association < 0 || (int)p->association >= (int)MTT_ASSOC_COUNT) {
-        bad = "association";
-    } else if (!MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
+    MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, MTT_PARAM_NO_FLAG, CHECK_ENUM)
+    if (bad == NULL && !MTT_WITH_BASELINES && p->association > MTT_ASSOC_IPDA) {
         bad = "association"; /* built with MTT_WITH_BASELINES 0 */
         st = MTT_ERR_UNSUPPORTED;
-    } else {
-        for (k = 0; k < sizeof rules / sizeof rules[0] && bad == NULL; ++k) {
-            if (!rule_ok(p, &rules[k])) {
-                bad = rules[k].name;
-            }
+    }
+    for (k = 0; k < MTT_RULE_COUNT && bad == NULL; ++k) {
+        if (!mtt_params_rule_ok(p, k, 1)) {
+            bad = rules[k].name;
         }
     }
     if (bad == NULL) {
@@ -175,7 +146,7 @@ mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
     if ((int)a < 0 || (int)a >= (int)MTT_ASSOC_COUNT) {
         return MTT_ERR_RANGE;
     }
-    *name = assoc_names[a];
+    *name = mtt_assoc_names[a];
     return MTT_OK;
 }
 
@@ -202,7 +173,7 @@ mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
         return MTT_ERR_NULL;
     }
     for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
-        if (same_text(name, assoc_names[k])) {
+        if (same_text(name, mtt_assoc_names[k])) {
             *a = (mtt_assoc)k;
             return MTT_OK;
         }

@@ -3,7 +3,7 @@
 #
 # Not used directly: cortex-m4f.cmake and cortex-m0plus.cmake set
 # MTT_CPU_FLAGS and include this file.  The flags that matter for the
-# firmware figures (README "Firmware"):
+# firmware figures (docs/FIRMWARE.md):
 #   -ffunction-sections -fdata-sections + --gc-sections: only what is
 #        referenced is linked, so image sizes measure what a caller pays;
 #   -fstack-usage -fcallgraph-info=su: per-function frames (.su) and the

@@ -93,35 +93,63 @@ typedef enum mtt_stage {
 /** A user cycle counter: returns a free-running count (wraps modulo 2^32). */
 typedef uint32_t (*mtt_cycle_fn)(void *ctx);
 
-/** Tracker parameters; mtt_params_default gives FORMATS.md's defaults. */
+/** Tracker parameters; mtt_params_default gives docs/FORMATS.md's defaults.
+ *  Each field's settings key, range and meaning: see mtt_params_info (the
+ *  key is the field's name, intensity_f1 is "intensity_gate.f1", ...). */
 typedef struct mtt_params {
-    mtt_assoc association;      /**< default MTT_ASSOC_LM_IHPDA */
-    mtt_real process_psd;       /**< Sw of the CV model, > 0 (default 5) */
-    mtt_real meas_sigma[2];     /**< sx, sy in [1e-9, 1e9] (default 1, 1): sigma^2 stays a normal float */
-    mtt_real pd;                /**< detection probability in (0, 1] (default 0.9); PD PG < 1 holds as pg < 1 */
-    mtt_real pg;                /**< gate probability in (0, 1) (default 0.999) */
-    mtt_real clutter_density;   /**< per unit area, >= 0; 0 estimates it per track (spec 5.2) (default 0) */
-    mtt_real snr_rho;           /**< rho in [0, 1e6]; 0 ignores amplitude (default 0) */
-    mtt_real markov_p11;        /**< in [0, 1] (default 0.98) */
-    mtt_real markov_p21;        /**< in [0, 1] (default 0) */
-    mtt_real existence_init;    /**< in (0, 1) (default 0.1) */
-    mtt_real confirm_threshold; /**< in (0, 1] (default 0.995) */
-    mtt_real terminate_threshold; /**< in [0, confirm_threshold) ; 0 never deletes (default 0.01) */
-    mtt_real merge_threshold;   /**< >= 0; 0 never merges (default 1) */
-    int initiate;               /**< nonzero: start tracks from unused measurements (default 1) */
-    mtt_real vmax;              /**< > 0, length per time (default 60) */
-    mtt_init_gate init_gate;    /**< default MTT_INIT_GATE_VMAX */
-    mtt_real intensity_f1[3];   /**< f1(I) = a2 I^2 + a1 I + a0 (default seed 002) */
-    mtt_real intensity_f2[3];   /**< f2(I) (default seed 002) */
-    mtt_real intensity_blend[2];/**< I_lo < I_hi of the f1/f2 blend (default 150, 250) */
-    mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (spec 13) */
-    mtt_real jpda_star_threshold;   /**< JPDA* pruning probability in [0, 1) (default 0) */
-    mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta in [0, 1) (default 0) */
-    mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas, > 0 (default 9) */
-    mtt_real adaptive_jpda_shrink;  /**< gate shrink factor >= 1 (default 3) */
+    mtt_assoc association;      /**< association mode */
+    mtt_real process_psd;       /**< Sw of the CV model */
+    mtt_real meas_sigma[2];     /**< sx, sy (sigma^2 stays a normal float) */
+    mtt_real pd;                /**< detection probability; PD PG < 1 holds as pg < 1 */
+    mtt_real pg;                /**< gate probability */
+    mtt_real clutter_density;   /**< per unit area; 0 estimates it per track (ALGORITHMS.md §5.2) */
+    mtt_real snr_rho;           /**< amplitude model rho; 0 ignores amplitude */
+    mtt_real markov_p11;        /**< existence Markov chain: stays */
+    mtt_real markov_p21;        /**< existence Markov chain: appears */
+    mtt_real existence_init;    /**< existence of a new track */
+    mtt_real confirm_threshold; /**< existence that confirms */
+    mtt_real terminate_threshold; /**< existence below which a track goes; 0 never deletes */
+    mtt_real merge_threshold;   /**< merging test threshold; 0 never merges */
+    int initiate;               /**< nonzero: start tracks from unused measurements */
+    mtt_real vmax;              /**< length per time */
+    mtt_init_gate init_gate;    /**< two-point velocity gate */
+    mtt_real intensity_f1[3];   /**< f1(I) = a2 I^2 + a1 I + a0 (default [S2]) */
+    mtt_real intensity_f2[3];   /**< f2(I) (default [S2]) */
+    mtt_real intensity_blend[2];/**< I_lo < I_hi of the f1/f2 blend */
+    mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (ALGORITHMS.md §13) */
+    mtt_real jpda_star_threshold;   /**< JPDA* pruning probability */
+    mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta */
+    mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas */
+    mtt_real adaptive_jpda_shrink;  /**< gate shrink factor */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
+
+/** Type of a settings key (mtt_param_info). */
+typedef enum mtt_param_type {
+    MTT_PARAM_REAL = 0, /**< count mtt_real values */
+    MTT_PARAM_BOOL,     /**< one value, 0 or 1 (a JSON boolean) */
+    MTT_PARAM_ENUM      /**< one value, the index of one of names[] */
+} mtt_param_type;
+
+/** One settings key of mtt_params: the table behind mtt_params_check,
+ *  mtt-track's settings reader and docs/FORMATS.md's settings table. */
+typedef struct mtt_param_info {
+    const char *key;          /**< settings key as docs/FORMATS.md spells it; nested keys
+                                   dotted ("intensity_gate.f1") */
+    mtt_param_type type;
+    uint8_t count;            /**< number of values (2 for meas_sigma, 3 for intensity_gate.f1) */
+    double lo, hi;            /**< MTT_PARAM_REAL: every value finite and within [lo, hi];
+                                   +-MTT_REAL_MAX (as double) is no bound: any value
+                                   mtt_real holds.  BOOL: 0, 1.  ENUM: 0, n_names - 1 */
+    uint8_t lo_open, hi_open; /**< 1 = bound excluded */
+    const char *const *names; /**< MTT_PARAM_ENUM: the spellings, index = value; else NULL */
+    uint8_t n_names;
+    const char *cross;        /**< rule against other values that only mtt_params_check
+                                   applies ("below confirm_threshold"); NULL if none */
+    const char *text;         /**< one-line meaning */
+} mtt_param_info;
+
 
 /** One detection.  Coordinates in the user's length unit. */
 typedef struct mtt_meas {
@@ -366,12 +394,41 @@ typedef struct mtt_tracker {
 MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
 
 /** Validate a parameter set.
- *  @param bad_field if not NULL, receives the name of the first invalid field
- *         (a static string such as "pd"), or NULL when valid.
+ *  @param bad_field if not NULL, receives the settings key of the first invalid
+ *         field (a static string such as "pd", "intensity_gate.blend"), or NULL
+ *         when valid.
  *  @return MTT_OK; MTT_ERR_NULL if p is NULL; MTT_ERR_PARAM if a field is out
- *          of range or not finite; MTT_ERR_UNSUPPORTED if the association mode
- *          is not built into this version (bad_field = "association"). */
+ *          of its range or not finite, or breaks a rule between fields (the
+ *          ranges and rules: see mtt_params_info); MTT_ERR_UNSUPPORTED if the
+ *          association mode is not built into this version (bad_field =
+ *          "association"). */
 MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
+
+/** The i-th settings key, 0 <= i < number of keys, in docs/FORMATS.md order.
+ *  Host use (tools, bindings): a firmware that never calls the mtt_params_info /
+ *  find / set / get functions does not link their table or double arithmetic.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE past the last key. */
+MTT_MUST_CHECK mtt_status mtt_params_info(size_t i, const mtt_param_info **info);
+
+/** Index of a settings key ("pd", "intensity_gate.blend").
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the key is unknown. */
+MTT_MUST_CHECK mtt_status mtt_params_find(const char *key, size_t *i);
+
+/** Set the n values of a key (REAL: the values; BOOL: v[0] 0 or 1; ENUM:
+ *  v[0] the index into names).  Each value must lie in the key's range and
+ *  fit mtt_real; rules between keys (terminate_threshold below
+ *  confirm_threshold, blend increasing) are left to mtt_params_check.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the key is unknown or n is
+ *          not its count; MTT_ERR_PARAM if a value is out of range.  On
+ *          error p is unchanged. */
+MTT_MUST_CHECK mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v,
+                                         size_t n);
+
+/** Get the n values of a key, as mtt_params_set takes them.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the key is unknown or n is
+ *          not its count. */
+MTT_MUST_CHECK mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v,
+                                         size_t n);
 
 /** Initialise (or reset) a tracker.  Cost: O(MTT_MAX_GATED^2) for the rank table.
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as

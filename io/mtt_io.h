@@ -1,0 +1,198 @@
+/* io/mtt_io.h - libmtt_io, the host I/O library of mtt-track, mtt-bench
+ * and the fuzz harnesses: the settings JSON, the detections CSV and the
+ * tracks CSV of docs/FORMATS.md, one job per file:
+ *
+ *   error.c       the one-line messages        number.c   numbers in text
+ *   file.c        opening and reading files    csv.c      the CSV line reader
+ *   detections.c  *.det.csv                    settings.c settings JSON (the
+ *   tracks.c      *.tracks.csv                            parameter table)
+ *
+ * Not part of the library: this module uses stdio, malloc and cJSON.  Every
+ * reader validates the whole file and reports the first problem as one line
+ * on stderr:
+ *
+ *     PROG: FILE:LINE: field 'NAME': message      (CSV)
+ *     PROG: FILE: key 'PATH': message             (JSON)
+ *
+ * and returns MTT_IO_EINPUT (bad input: exit code 2) or MTT_IO_ESYS (out of
+ * memory, read error: exit code 1).
+ */
+#ifndef MTT_IO_MTT_IO_H
+#define MTT_IO_MTT_IO_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "mtt/mtt.h"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define MTT_IO_PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define MTT_IO_PRINTF(f, a)
+#endif
+
+/** "float" or "double": mtt_real, for messages. */
+#ifdef MTT_REAL_DOUBLE
+#define MTT_IO_REAL_NAME "double"
+#else
+#define MTT_IO_REAL_NAME "float"
+#endif
+
+/** Result of a reader; the values are the process exit codes. */
+enum {
+    MTT_IO_OK = 0,
+    MTT_IO_ESYS = 1,   /**< a system failure: memory, I/O */
+    MTT_IO_EINPUT = 2  /**< malformed input, already reported */
+};
+
+/** Prefix of every message ("mtt-track"); set once by main. */
+extern const char *mtt_io_progname;
+
+/* ---- messages --------------------------------------------------------- */
+
+/** "PROG: FILE:LINE: field 'FIELD': message"; line <= 0 or field NULL omit
+ *  those parts. */
+void mtt_io_error_at(const char *file, long line, const char *field, const char *fmt, ...)
+    MTT_IO_PRINTF(4, 5);
+
+/** "PROG: FILE: key 'KEY': message" (KEY is a JSON path such as
+ *  "meas_sigma[1]"); key NULL omits it. */
+void mtt_io_error_key(const char *file, const char *key, const char *fmt, ...)
+    MTT_IO_PRINTF(3, 4);
+
+/** "PROG: message". */
+void mtt_io_error(const char *fmt, ...) MTT_IO_PRINTF(1, 2);
+
+/* ---- numbers ---------------------------------------------------------- */
+
+/** Outcome of parsing one field. */
+typedef enum mtt_io_num {
+    MTT_IO_NUM_OK = 0,
+    MTT_IO_NUM_EMPTY,     /**< empty field */
+    MTT_IO_NUM_SYNTAX,    /**< not a number, or trailing characters */
+    MTT_IO_NUM_NONFINITE, /**< nan or inf (an error in files) */
+    MTT_IO_NUM_RANGE      /**< overflows double, or the integer type */
+} mtt_io_num;
+
+/** Parse a whole field as a finite double with strtod (all of it consumed). */
+mtt_io_num mtt_io_parse_double(const char *s, double *out);
+
+/** Parse a whole field as a non-negative decimal integer (digits only). */
+mtt_io_num mtt_io_parse_count(const char *s, unsigned long *out);
+
+/** Convert to mtt_real; 0 if the value does not fit (overflows a float). */
+int mtt_io_to_real(double v, mtt_real *out);
+
+/** Write v with the fewest significant digits (at most 17) that read back
+ *  as the same double.  buf needs 32 bytes. */
+void mtt_io_format_double(double v, char *buf, size_t size);
+
+/* ---- files ------------------------------------------------------------ */
+
+/** fopen for reading; reports (and returns NULL) when it cannot, or when
+ *  path is a directory. */
+FILE *mtt_io_open(const char *path, const char *mode);
+
+/** The whole file as a NUL-terminated string (*text, to free; *size bytes
+ *  before the NUL).  Reports and returns MTT_IO_EINPUT / MTT_IO_ESYS. */
+int mtt_io_read_text(const char *path, char **text, size_t *size);
+
+/* ---- CSV -------------------------------------------------------------- */
+
+/** A line reader over one file: comments ('#' first) and blank lines are
+ *  skipped, "\r\n" and a UTF-8 byte order mark are accepted. */
+typedef struct mtt_io_csv {
+    const char *path;  /**< as given by the user: used in messages */
+    FILE *fp;
+    char *buf;         /**< current line (owned) */
+    size_t cap;
+    long line;         /**< 1-based number of the current line */
+    char **fields;     /**< the current line's fields (into buf) */
+    size_t n_fields, cap_fields;
+} mtt_io_csv;
+
+/** Open path for reading.  Reports and returns MTT_IO_EINPUT if it cannot. */
+int mtt_io_csv_open(mtt_io_csv *c, const char *path);
+
+/** Read the next data line and split it at commas; leading and trailing
+ *  blanks of each field are removed.  *got is 1 with c->fields set, or 0 at
+ *  the end of the file.  Returns MTT_IO_OK, or MTT_IO_ESYS (reported). */
+int mtt_io_csv_next(mtt_io_csv *c, int *got);
+
+/** Check the current line against the expected header (every column,
+ *  in order, nothing more).  Reports and returns MTT_IO_EINPUT if not. */
+int mtt_io_csv_expect_header(mtt_io_csv *c, const char *const *names, size_t n);
+
+void mtt_io_csv_close(mtt_io_csv *c);
+
+/* ---- detections (*.det.csv) ------------------------------------------- */
+
+/** One scan of the detections file. */
+typedef struct mtt_io_scan {
+    unsigned long scan;  /**< scan number as written */
+    double time;         /**< time as written (double) */
+    mtt_real rtime;      /**< time as the tracker sees it: time - time0 (the
+                              tracker only uses differences, and a float keeps
+                              them where it could not keep an epoch time) */
+    size_t first;        /**< index of its first detection in meas */
+    size_t count;        /**< 0 for an empty scan */
+    long line;           /**< line of its first row */
+} mtt_io_scan;
+
+/** A whole detections file, validated. */
+typedef struct mtt_io_detections {
+    mtt_meas *meas;      /**< all detections, file order */
+    size_t n_meas, cap_meas;
+    mtt_io_scan *scans;  /**< scans, file order */
+    size_t n_scans, cap_scans;
+    double time0;        /**< time of the first scan */
+} mtt_io_detections;
+
+/** Read and validate a detections file (docs/FORMATS.md).  On failure nothing
+ *  needs freeing. */
+int mtt_io_read_detections(const char *path, mtt_io_detections *d);
+void mtt_io_free_detections(mtt_io_detections *d);
+
+/* ---- settings (*.json) ------------------------------------------------ */
+
+/** One entry of `initial_tracks`. */
+typedef struct mtt_io_seed {
+    mtt_real x[4];       /**< x, y, vx, vy */
+    mtt_real P[16];      /**< covariance, row-major (mtt_tracker_add_track) */
+    int has_P;           /**< 0: use the two-point covariance */
+} mtt_io_seed;
+
+/** Tracker settings: the parameters and the seeded tracks. */
+typedef struct mtt_io_settings {
+    mtt_params params;
+    mtt_io_seed *seeds;
+    size_t n_seeds;
+} mtt_io_settings;
+
+/** Read a settings file: defaults from mtt_params_default, every key
+ *  type-checked, then mtt_params_check (its bad field is reported as the
+ *  settings key, with the allowed range).  On failure nothing needs freeing. */
+int mtt_io_read_settings(const char *path, mtt_io_settings *s);
+void mtt_io_free_settings(mtt_io_settings *s);
+
+/** Print the settings keys as a Markdown table (key, type, range, default,
+ *  meaning): mtt_params_info's rows, then initial_tracks.  docs/FORMATS.md
+ *  shows this table. */
+void mtt_io_list_settings(FILE *out);
+
+/** The settings key of a seeded track's element, for messages
+ *  ("initial_tracks[2].P"); buf needs 64 bytes. */
+void mtt_io_seed_key(size_t i, const char *member, char *buf, size_t size);
+
+/* ---- tracks (*.tracks.csv) ------------------------------------------- */
+
+/** The header line of a tracks file. */
+#define MTT_IO_TRACKS_HEADER "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy"
+
+/** Write the rows of trk's live tracks after scan sc (confirmed ones only
+ *  if confirmed_only), the time as the detections file gave it; adds the
+ *  rows written to *rows.  Returns the first failing mtt_status. */
+mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_scan *sc,
+                               int confirmed_only, unsigned long *rows);
+
+#endif /* MTT_IO_MTT_IO_H */

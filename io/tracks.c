@@ -1,0 +1,41 @@
+/* io/tracks.c - the tracks file (*.tracks.csv) of docs/FORMATS.md: one row
+ * per live track after each scan, with enough digits to read back the same
+ * mtt_real.
+ */
+#include "mtt_io.h"
+
+#include <inttypes.h>
+#include <stdio.h>
+
+#ifdef MTT_REAL_DOUBLE
+#define REAL_FMT "%.17g" /* enough digits to read back the same double */
+#else
+#define REAL_FMT "%.9g" /* enough digits to read back the same float */
+#endif
+
+mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_scan *sc,
+                               int confirmed_only, unsigned long *rows)
+{
+    char time_str[32];
+    size_t n, i;
+    mtt_status st;
+
+    if ((st = mtt_tracker_count(trk, &n)) != MTT_OK)
+        return st;
+    mtt_io_format_double(sc->time, time_str, sizeof time_str); /* as the file gave it */
+    for (i = 0; i < n; ++i) {
+        mtt_track_view v;
+        if ((st = mtt_tracker_track(trk, i, &v)) != MTT_OK)
+            return st;
+        if (confirmed_only && !v.confirmed)
+            continue;
+        fprintf(out,
+                "%lu,%s,%" PRIu32 ",%s," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT
+                "," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT "\n",
+                sc->scan, time_str, v.id, v.confirmed ? "confirmed" : "tentative", (double)v.x[0],
+                (double)v.x[1], (double)v.x[2], (double)v.x[3], (double)v.existence,
+                (double)v.P[0][0], (double)v.P[0][1], (double)v.P[1][1]);
+        ++*rows;
+    }
+    return MTT_OK;
+}

@@ -1,0 +1,15 @@
+"""mtt_sim: scenario generation, scoring and Monte Carlo harness for mtt.
+
+Host-side only (Python 3.11, numpy, matplotlib).  Modules:
+
+- ``scenario``  load and validate scenario JSON files (schema: scenarios/README.md)
+- ``generate``  draw one run (truth, detections) from a scenario and a seed
+- ``csvio``     read and write the CSV / JSON files of docs/FORMATS.md
+- ``assign``    exact linear assignment (Hungarian) and a brute-force reference
+- ``metrics``   pure scoring functions (matching, GOSPA, CLEAR-MOT, RMSE, ...)
+- ``runner``    Monte Carlo runner around the ``mtt-track`` binary
+- ``report``    text tables in the papers' formats
+- ``plots``     matplotlib (Agg) figures
+"""
+
+__all__ = ["scenario", "generate", "csvio", "assign", "metrics", "runner", "report", "plots"]

@@ -1,0 +1,303 @@
+"""Monte Carlo runner: generate, run mtt-track, score, aggregate.
+
+Run r of mode m uses seed ``seed0 + r`` for every mode, so the modes are
+compared on identical detections (common random numbers), as S4 compares
+its two methods.  Work items (mode, run) are spread over J worker processes;
+each one generates its run in a private temporary directory, calls
+
+    mtt-track --config S --detections D --tracks T
+
+timing the call with a monotonic clock, reads T and scores it with
+``metrics.score_run``.  The files of run 0 are kept under ``OUT/run0/`` for
+the scene plot and for replotting.
+"""
+
+from __future__ import annotations
+
+import math
+import multiprocessing
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+from . import csvio, generate, metrics
+from . import scenario as scnmod
+
+__all__ = ["find_mtt_track", "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate"]
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "cli", "mtt-track")
+
+
+class TrackerError(RuntimeError):
+    """mtt-track failed (non-zero exit, time-out or unreadable output)."""
+
+
+def find_mtt_track(explicit: str | None = None) -> str | None:
+    """The mtt-track binary: ``explicit``, else $MTT_TRACK, else build/host-float/cli/mtt-track."""
+    for cand in (explicit, os.environ.get("MTT_TRACK"), DEFAULT_BINARY):
+        if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
+            return os.path.abspath(cand)
+    return None
+
+
+def run_tracker(exe: str, settings: str, det: str, tracks: str, timeout: float = 600.0) -> float:
+    """Run mtt-track once; return its wall time in seconds; raise TrackerError on failure."""
+    cmd = [exe, "--config", settings, "--detections", det, "--tracks", tracks]
+    t0 = time.perf_counter()
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        raise TrackerError(f"mtt-track timed out after {timeout:.0f} s") from None
+    except OSError as e:  # binary missing, not executable, being rebuilt
+        raise TrackerError(f"cannot run {exe}: {e}") from None
+    elapsed = time.perf_counter() - t0
+    if p.returncode != 0:
+        msg = (p.stderr or "").strip().splitlines()
+        raise TrackerError(f"mtt-track exit {p.returncode}: {msg[0] if msg else '(no message)'}")
+    if not os.path.isfile(tracks):
+        raise TrackerError("mtt-track exited 0 but wrote no tracks file")
+    return elapsed
+
+
+def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir: str | None = None,
+            timeout: float = 600.0) -> dict:
+    """Generate, track and score one run; never raises for tracker failures."""
+    res = {"mode": mode, "run": run_index, "seed": seed, "ok": False}
+    try:
+        run = generate.generate(scn, seed, mode)
+        nscan = len(run["times"])
+        with tempfile.TemporaryDirectory(prefix="mtt_mc_") as td:
+            paths = generate.write_run(run, td, "run")
+            tpath = os.path.join(td, "run.tracks.csv")
+            elapsed = run_tracker(exe, paths["settings"], paths["det"], tpath, timeout)
+            try:
+                tracks = csvio.read_tracks(tpath)
+            except csvio.FormatError as e:
+                raise TrackerError(f"bad tracks file: {e}") from None
+            if keep_dir:
+                os.makedirs(keep_dir, exist_ok=True)
+                name = run["name"]
+                shutil.copyfile(paths["det"], os.path.join(keep_dir, f"{name}.det.csv"))
+                shutil.copyfile(paths["truth"], os.path.join(keep_dir, f"{name}.truth.csv"))
+                shutil.copyfile(paths["settings"], os.path.join(keep_dir, f"{name}.{mode}.settings.json"))
+                shutil.copyfile(tpath, os.path.join(keep_dir, f"{name}.{mode}.tracks.csv"))
+        if len(tracks["scan"]) and (tracks["scan"].min() < 0 or tracks["scan"].max() >= nscan):
+            raise TrackerError("tracks file has a scan outside the detections' scans")
+        met = scn.get("metrics", {})
+        sc = metrics.score_run(run["truth"], tracks, nscan,
+                               float(met.get("match_distance", 1.0)), float(met.get("gospa_c", met.get("match_distance", 1.0))),
+                               run["seeded_targets"], int(met.get("seeded_eval_scan", -1)))
+        res.update(ok=True, elapsed=elapsed, time_per_frame=metrics.time_per_frame(elapsed, nscan), score=sc)
+    except TrackerError as e:
+        res["error"] = str(e)
+    return res
+
+
+# ------------------------------------------------------------------ aggregation
+
+
+def _nan_to_none(x):
+    if isinstance(x, dict):
+        return {k: _nan_to_none(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_nan_to_none(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return _nan_to_none(x.tolist())
+    if isinstance(x, (np.floating, float)):
+        return None if not math.isfinite(float(x)) else float(x)
+    if isinstance(x, np.integer):
+        return int(x)
+    if isinstance(x, np.bool_):
+        return bool(x)
+    return x
+
+
+class Aggregate:
+    """Sums of the per-run scores of one mode."""
+
+    PER_SCAN = ("n_truth", "conf_true", "conf_false", "n_tentative", "n_confirmed",
+                "gospa", "gospa_loc", "gospa_missed", "gospa_false", "idsw")
+
+    def __init__(self, nscan: int):
+        self.nscan = nscan
+        self.ok = 0
+        self.failures: list[dict] = []
+        self.sums = {k: np.zeros(nscan) for k in self.PER_SCAN}
+        self.sq = {}      # target id -> (sum of squared errors, count) per scan
+        self.mot = {"gt": 0, "matches": 0, "fn": 0, "fp": 0, "idsw": 0, "dist": 0.0}
+        self.times: list[float] = []
+        self.seeded = {"runs": 0, "failed": 0, "coalescence": 0, "switch": 0, "lost": 0,
+                       "coalescence_or_switch": 0}
+        self.run0 = None
+
+    def add(self, res: dict) -> None:
+        if not res["ok"]:
+            self.failures.append({"run": res["run"], "seed": res["seed"], "error": res.get("error", "")})
+            return
+        sc = res["score"]
+        self.ok += 1
+        for k in self.PER_SCAN:
+            self.sums[k] += sc[k]
+        for tid, e in sc["sq_err"].items():
+            s, c = self.sq.setdefault(int(tid), (np.zeros(self.nscan), np.zeros(self.nscan)))
+            m = np.isfinite(e)
+            s[m] += e[m]
+            c[m] += 1
+        for k in self.mot:
+            self.mot[k] += sc["mot"][k]
+        self.times.append(res["time_per_frame"])
+        if sc["seeded"] is not None:
+            self.seeded["runs"] += 1
+            for k in ("failed", "coalescence", "switch", "lost"):
+                self.seeded[k] += int(bool(sc["seeded"][k]))
+            self.seeded["coalescence_or_switch"] += int(sc["seeded"]["coalescence"] or sc["seeded"]["switch"])
+        if res["run"] == 0:
+            self.run0 = {"tentative": sc["n_tentative"].tolist(), "confirmed": sc["n_confirmed"].tolist(),
+                         "seeded": sc["seeded"]}
+
+    def result(self) -> dict:
+        n = max(self.ok, 1)
+        s = self.sums
+        per_scan = {
+            "n_truth_sum": s["n_truth"], "conf_true_sum": s["conf_true"], "conf_false_sum": s["conf_false"],
+            "tentative_mean": s["n_tentative"] / n, "confirmed_mean": s["n_confirmed"] / n,
+            "gospa_mean": s["gospa"] / n, "gospa_loc_mean": s["gospa_loc"] / n,
+            "gospa_missed_mean": s["gospa_missed"] / n, "gospa_false_mean": s["gospa_false"] / n,
+            "idsw_sum": s["idsw"],
+        }
+        rmse, rmse_target = {}, {}
+        tot_s = np.zeros(self.nscan)
+        tot_c = np.zeros(self.nscan)
+        for tid in sorted(self.sq):
+            ss, cc = self.sq[tid]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                rmse[str(tid)] = np.where(cc > 0, np.sqrt(ss / np.maximum(cc, 1)), np.nan)
+            rmse_target[str(tid)] = math.sqrt(ss.sum() / cc.sum()) if cc.sum() else math.nan
+            tot_s += ss
+            tot_c += cc
+        per_scan["rmse"] = rmse
+        per_scan["rmse_all"] = np.where(tot_c > 0, np.sqrt(tot_s / np.maximum(tot_c, 1)), np.nan)
+        total = s["n_tentative"] / n + s["n_confirmed"] / n
+        peak = int(np.argmax(total)) if self.ok else 0
+        mot = self.mot
+        gt = mot["gt"]
+        totals = {
+            "gospa_mean": float(s["gospa"].mean() / n) if self.ok else math.nan,
+            "mota": (1.0 - (mot["fn"] + mot["fp"] + mot["idsw"]) / gt) if gt else math.nan,
+            "motp": mot["dist"] / mot["matches"] if mot["matches"] else math.nan,
+            "idsw": mot["idsw"], "idsw_per_run": mot["idsw"] / n, "fn": mot["fn"], "fp": mot["fp"], "gt": gt,
+            "confirmed_true_fraction": float(s["conf_true"].sum() / s["n_truth"].sum()) if s["n_truth"].sum() else math.nan,
+            "confirmed_false_per_scan": float(s["conf_false"].mean() / n) if self.ok else math.nan,
+            "rmse_per_target": rmse_target,
+            "rmse_all": math.sqrt(tot_s.sum() / tot_c.sum()) if tot_c.sum() else math.nan,
+            "time_per_frame_ms": {
+                "mean": 1e3 * float(np.mean(self.times)) if self.times else math.nan,
+                "median": 1e3 * float(np.median(self.times)) if self.times else math.nan,
+                "max": 1e3 * float(np.max(self.times)) if self.times else math.nan,
+            },
+            "peak": {"scan": peak, "tentative_mean": float(s["n_tentative"][peak] / n),
+                     "confirmed_mean": float(s["n_confirmed"][peak] / n)},
+        }
+        if self.run0 is not None:
+            t0 = np.array(self.run0["tentative"]) + np.array(self.run0["confirmed"])
+            k = int(np.argmax(t0))
+            totals["peak_run0"] = {"scan": k, "tentative": int(self.run0["tentative"][k]),
+                                   "confirmed": int(self.run0["confirmed"][k])}
+        seeded = None
+        if self.seeded["runs"]:
+            r = self.seeded["runs"]
+            # rate: runs where some seeded track is not on its own target
+            # (metrics.seeded_outcome "failed"); the others break it down.
+            seeded = dict(self.seeded, rate=self.seeded["failed"] / r)
+        return _nan_to_none({
+            "runs_ok": self.ok, "runs_failed": len(self.failures), "failures": self.failures[:20],
+            "per_scan": per_scan, "totals": totals, "seeded": seeded, "run0": self.run0,
+        })
+
+
+# ------------------------------------------------------------------ parallel driver
+
+_G = {}
+
+
+def _init_worker(scn, exe, keep_root, timeout):
+    _G.update(scn=scn, exe=exe, keep_root=keep_root, timeout=timeout)
+
+
+def _work(item):
+    mode, r, seed = item
+    keep = _G["keep_root"] if (r == 0 and _G["keep_root"]) else None
+    return one_run(_G["scn"], mode, r, seed, _G["exe"], keep, _G["timeout"])
+
+
+def _progress(done, total, t_start, stream, last=[0.0]):
+    now = time.monotonic()
+    if done < total and now - last[0] < 0.25:  # at most 4 updates a second
+        return
+    last[0] = now
+    el = time.monotonic() - t_start
+    rate = done / el if el > 0 else 0.0
+    eta = (total - done) / rate if rate > 0 else float("nan")
+    eta_s = f"{eta:.0f} s" if math.isfinite(eta) else "?"
+    stream.write(f"\r[run {done}/{total}] {rate:.1f} runs/s, ETA {eta_s}   ")
+    stream.flush()
+
+
+def monte_carlo(scn: dict, modes, runs: int, exe: str, jobs: int | None = None, seed0: int = 0,
+                keep_root: str | None = None, timeout: float = 600.0, progress=sys.stderr) -> dict:
+    """Run every (mode, run) and return {mode: Aggregate.result()} plus timing info."""
+    nscan = int(scn["scans"]["count"])
+    jobs = jobs or os.cpu_count() or 1
+    items = [(m, r, seed0 + r) for r in range(runs) for m in modes]
+    aggs = {m: Aggregate(nscan) for m in modes}
+    t0 = time.monotonic()
+    done = 0
+    if jobs <= 1:
+        _init_worker(scn, exe, keep_root, timeout)
+        it = map(_work, items)
+        pool = None
+    else:
+        ctx = multiprocessing.get_context("fork")
+        pool = ctx.Pool(jobs, initializer=_init_worker, initargs=(scn, exe, keep_root, timeout))
+        it = pool.imap_unordered(_work, items, chunksize=1)
+    try:
+        for res in it:
+            aggs[res["mode"]].add(res)
+            done += 1
+            if progress is not None:
+                _progress(done, len(items), t0, progress)
+    finally:
+        if pool is not None:
+            pool.close()
+            pool.join()
+    if progress is not None:
+        progress.write("\n")
+        progress.flush()
+    wall = time.monotonic() - t0
+    return {"results": {m: aggs[m].result() for m in modes}, "wall_s": wall, "jobs": jobs}
+
+
+def build_summary(scn: dict, scenario_file: str, overrides, modes, runs, seed0, exe, mc: dict) -> dict:
+    """The summary.json object (documented in scenarios/README.md)."""
+    return _nan_to_none({
+        "scenario": scn["name"],
+        "scenario_file": scenario_file,
+        "overrides": list(overrides or []),
+        "units": scn.get("units", {}),
+        "runs": runs, "seed0": seed0, "modes": list(modes), "mtt_track": exe,
+        "jobs": mc["jobs"], "wall_s": mc["wall_s"],
+        "scan_times": scnmod.scan_times(scn),
+        "area": scn["area"],
+        "meas_sigma": scn["meas_sigma"],
+        "metrics": {"match_distance": scn.get("metrics", {}).get("match_distance"),
+                    "gospa_c": scn.get("metrics", {}).get("gospa_c"),
+                    "gospa_p": 1, "gospa_alpha": 2},
+        "report": scn.get("report", {}),
+        "results": mc["results"],
+    })

@@ -1,0 +1,428 @@
+"""Scenario files: load, apply overrides, validate, expand.
+
+The schema is documented in ``scenarios/README.md``.  In short, a scenario is
+one JSON object describing the sensor (area, scans, PD, noise, clutter,
+amplitudes), the targets (explicit, grouped formations, random, splits), the
+tracker settings object passed verbatim to ``mtt-track`` (key ``tracker``),
+and scoring / reporting parameters (``metrics``, ``report``).
+
+Any key whose name starts with ``_comment`` is a note and is ignored, except
+inside ``tracker``, which must be exactly a docs/FORMATS.md settings object (the
+tracker rejects unknown keys).  Every other unknown key is an error, so a typo
+never silently falls back to a default.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import re
+
+__all__ = [
+    "ScenarioError",
+    "TRACKER_KEYS",
+    "ASSOC_MODES",
+    "load",
+    "loads",
+    "apply_overrides",
+    "validate",
+    "expand_targets",
+    "scan_times",
+    "area_size",
+    "seeded_targets",
+    "tracker_settings",
+    "tracker_value",
+]
+
+
+class ScenarioError(ValueError):
+    """A scenario file is malformed; the message names the file and key."""
+
+
+# docs/FORMATS.md "Tracker settings" keys.
+TRACKER_KEYS = {
+    "association", "process_psd", "meas_sigma", "pd", "pg", "clutter_density",
+    "snr_rho", "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
+    "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
+    "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
+    "adaptive_jpda_distance", "adaptive_jpda_shrink", "initial_tracks",
+}
+
+ASSOC_MODES = (
+    "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
+    "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
+)
+
+# docs/FORMATS.md defaults that the harness itself needs (plots, gates).
+TRACKER_DEFAULTS = {"meas_sigma": [1.0, 1.0], "pg": 0.999, "association": "lm-ihpda"}
+
+_TOP_KEYS = {
+    "name", "description", "source", "units", "area", "scans", "pd", "meas_sigma",
+    "clutter", "amplitude", "truth_process_psd", "resolution", "targets", "groups",
+    "random_targets", "splits", "tracker", "tracker_notes", "metrics", "report",
+}
+_AREA_KEYS = {"x", "y"}
+_SCAN_KEYS = {"count", "dt", "t0"}
+_CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
+_AMP_KEYS = {"rho"}
+_TARGET_KEYS = {"id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd"}
+_GROUP_KEYS = {"first_id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "offsets"}
+_RANDOM_KEYS = {"count", "first_id", "speed", "margin", "first_scan", "last_scan", "pd"}
+_SPLIT_KEYS = {"parent", "child", "scan", "dv_parent", "dv_child"}
+_METRIC_KEYS = {"match_distance", "gospa_c", "seeded_targets", "seeded_eval_scan"}
+_REPORT_KEYS = {"table_times", "count_frames", "gate_scans", "zoom", "curve_stride"}
+
+_NAME_RE = re.compile(r"^[A-Za-z0-9_.-]+$")
+
+
+def _is_comment(key: str) -> bool:
+    return key.startswith("_comment")
+
+
+def _strip_comments(obj):
+    """Return a deep copy of obj without ``_comment*`` keys (not inside tracker)."""
+    if isinstance(obj, dict):
+        out = {}
+        for k, v in obj.items():
+            if _is_comment(k):
+                continue
+            out[k] = v if k == "tracker" else _strip_comments(v)
+        return out
+    if isinstance(obj, list):
+        return [_strip_comments(v) for v in obj]
+    return obj
+
+
+def loads(text: str, source: str = "<string>", overrides=None) -> dict:
+    """Parse, override (``["key.path=value", ...]``), validate and return a scenario."""
+    try:
+        raw = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise ScenarioError(f"{source}: invalid JSON: {e}") from None
+    if not isinstance(raw, dict):
+        raise ScenarioError(f"{source}: top level must be a JSON object")
+    scn = _strip_comments(raw)
+    if overrides:
+        apply_overrides(scn, overrides, source)
+    validate(scn, source)
+    scn["_source"] = source
+    return scn
+
+
+def load(path: str, overrides=None) -> dict:
+    """Load a scenario file (see :func:`loads`)."""
+    with open(path, encoding="utf-8") as f:
+        return loads(f.read(), path, overrides)
+
+
+def apply_overrides(scn: dict, overrides, source: str = "<string>") -> None:
+    """Set values in place from ``"dotted.path=value"`` strings.
+
+    The value is parsed as JSON when possible (numbers, lists, true/false,
+    null), else taken as a string.  List elements are addressed by integer
+    path components (``targets.0.pd=0.5``).  Missing dict keys are created.
+    """
+    for item in overrides:
+        if "=" not in item:
+            raise ScenarioError(f"{source}: override '{item}' is not KEY=VALUE")
+        path, text = item.split("=", 1)
+        try:
+            value = json.loads(text)
+        except json.JSONDecodeError:
+            value = text
+        parts = path.strip().split(".")
+        node = scn
+        for i, part in enumerate(parts):
+            last = i == len(parts) - 1
+            if isinstance(node, list):
+                try:
+                    idx = int(part)
+                    node[idx]  # noqa: B018 (bounds check)
+                except (ValueError, IndexError):
+                    raise ScenarioError(f"{source}: override '{path}': bad list index '{part}'") from None
+                if last:
+                    node[idx] = value
+                else:
+                    node = node[idx]
+            elif isinstance(node, dict):
+                if last:
+                    node[part] = value
+                else:
+                    node = node.setdefault(part, {})
+            else:
+                raise ScenarioError(f"{source}: override '{path}': '{part}' is inside a non-container")
+
+
+# ---------------------------------------------------------------- validation
+
+
+def _err(source, key, msg):
+    raise ScenarioError(f"{source}: key '{key}': {msg}")
+
+
+def _check_keys(obj, allowed, source, where):
+    if not isinstance(obj, dict):
+        _err(source, where, "must be an object")
+    for k in obj:
+        if k not in allowed:
+            _err(source, f"{where}.{k}" if where else k, "unknown key")
+
+
+def _num(obj, key, source, where, *, lo=None, hi=None, lo_open=False, required=True, integer=False):
+    full = f"{where}.{key}" if where else key
+    if key not in obj:
+        if required:
+            _err(source, full, "missing")
+        return None
+    v = obj[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        _err(source, full, "must be a number")
+    if integer and (not isinstance(v, int) and not float(v).is_integer()):
+        _err(source, full, "must be an integer")
+    if not math.isfinite(v):
+        _err(source, full, "must be finite")
+    if lo is not None and (v < lo or (lo_open and v == lo)):
+        _err(source, full, f"must be {'>' if lo_open else '>='} {lo}")
+    if hi is not None and v > hi:
+        _err(source, full, f"must be <= {hi}")
+    return v
+
+
+def _pair(obj, key, source, where, *, increasing=False, positive=False, required=True):
+    full = f"{where}.{key}" if where else key
+    if key not in obj:
+        if required:
+            _err(source, full, "missing")
+        return None
+    v = obj[key]
+    if (not isinstance(v, list) or len(v) != 2
+            or any(isinstance(a, bool) or not isinstance(a, (int, float)) or not math.isfinite(a) for a in v)):
+        _err(source, full, "must be a list of two finite numbers")
+    if increasing and not v[0] < v[1]:
+        _err(source, full, "must be increasing")
+    if positive and not (v[0] > 0 and v[1] > 0):
+        _err(source, full, "must be positive")
+    return v
+
+
+def _kinematics(obj, source, where):
+    for k in ("x", "y", "vx", "vy"):
+        _num(obj, k, source, where)
+    _num(obj, "t_ref", source, where, required=False)
+    _num(obj, "first_scan", source, where, lo=0, integer=True, required=False)
+    _num(obj, "last_scan", source, where, lo=0, integer=True, required=False)
+    _num(obj, "pd", source, where, lo=0, hi=1, required=False)
+
+
+def validate(scn: dict, source: str = "<string>") -> None:
+    """Raise ScenarioError naming the first bad key; return None if valid."""
+    _check_keys(scn, _TOP_KEYS, source, "")
+    name = scn.get("name")
+    if not isinstance(name, str) or not _NAME_RE.match(name):
+        _err(source, "name", "must be a string of letters, digits, '_', '-', '.'")
+    _check_keys(scn.get("area"), _AREA_KEYS, source, "area")
+    _pair(scn["area"], "x", source, "area", increasing=True)
+    _pair(scn["area"], "y", source, "area", increasing=True)
+    _check_keys(scn.get("scans"), _SCAN_KEYS, source, "scans")
+    _num(scn["scans"], "count", source, "scans", lo=1, integer=True)
+    _num(scn["scans"], "dt", source, "scans", lo=0, lo_open=True)
+    _num(scn["scans"], "t0", source, "scans", required=False)
+    _num(scn, "pd", source, "", lo=0, hi=1)
+    _pair(scn, "meas_sigma", source, "", positive=True)
+    _num(scn, "truth_process_psd", source, "", lo=0, required=False)
+    _num(scn, "resolution", source, "", lo=0, required=False)
+
+    cl = scn.get("clutter", {"model": "none"})
+    _check_keys(cl, _CLUTTER_KEYS, source, "clutter")
+    model = cl.get("model")
+    if model == "poisson":
+        if ("density" in cl) == ("mean" in cl):
+            _err(source, "clutter", "poisson needs exactly one of 'density' (per unit area) or 'mean' (per scan)")
+        _num(cl, "density", source, "clutter", lo=0, required=False)
+        _num(cl, "mean", source, "clutter", lo=0, required=False)
+    elif model == "binomial":
+        _num(cl, "n", source, "clutter", lo=0, integer=True)
+        _num(cl, "p", source, "clutter", lo=0, hi=1)
+    elif model != "none":
+        _err(source, "clutter.model", "must be 'poisson', 'binomial' or 'none'")
+
+    amp = scn.get("amplitude")
+    if amp is not None:
+        _check_keys(amp, _AMP_KEYS, source, "amplitude")
+        _num(amp, "rho", source, "amplitude", lo=0)
+
+    ids = set()
+    for i, t in enumerate(scn.get("targets", [])):
+        w = f"targets[{i}]"
+        _check_keys(t, _TARGET_KEYS, source, w)
+        _num(t, "id", source, w, lo=0, integer=True)
+        _kinematics(t, source, w)
+        if t["id"] in ids:
+            _err(source, w + ".id", "duplicate target id")
+        ids.add(int(t["id"]))
+    for i, g in enumerate(scn.get("groups", [])):
+        w = f"groups[{i}]"
+        _check_keys(g, _GROUP_KEYS, source, w)
+        _num(g, "first_id", source, w, lo=0, integer=True)
+        _kinematics(g, source, w)
+        offs = g.get("offsets")
+        if not isinstance(offs, list) or not offs:
+            _err(source, w + ".offsets", "must be a non-empty list of [dx, dy]")
+        for j in range(len(offs)):
+            _pair({"o": offs[j]}, "o", source, f"{w}.offsets[{j}]")
+            tid = int(g["first_id"]) + j
+            if tid in ids:
+                _err(source, w, f"target id {tid} already used")
+            ids.add(tid)
+    rt = scn.get("random_targets")
+    if rt is not None:
+        w = "random_targets"
+        _check_keys(rt, _RANDOM_KEYS, source, w)
+        n = _num(rt, "count", source, w, lo=0, integer=True)
+        first = _num(rt, "first_id", source, w, lo=0, integer=True, required=False) or 0
+        _pair(rt, "speed", source, w)
+        if not 0 <= rt["speed"][0] <= rt["speed"][1]:
+            _err(source, w + ".speed", "must be [lo, hi] with 0 <= lo <= hi")
+        _num(rt, "margin", source, w, lo=0, required=False)
+        _num(rt, "first_scan", source, w, lo=0, integer=True, required=False)
+        _num(rt, "last_scan", source, w, lo=0, integer=True, required=False)
+        _num(rt, "pd", source, w, lo=0, hi=1, required=False)
+        for tid in range(int(first), int(first) + int(n)):
+            if tid in ids:
+                _err(source, w, f"target id {tid} already used")
+            ids.add(tid)
+    for i, s in enumerate(scn.get("splits", [])):
+        w = f"splits[{i}]"
+        _check_keys(s, _SPLIT_KEYS, source, w)
+        _num(s, "parent", source, w, lo=0, integer=True)
+        _num(s, "child", source, w, lo=0, integer=True)
+        _num(s, "scan", source, w, lo=1, integer=True)
+        _pair(s, "dv_parent", source, w)
+        _pair(s, "dv_child", source, w)
+        if s["parent"] not in ids:
+            _err(source, w + ".parent", "no such target")
+        if s["child"] in ids:
+            _err(source, w + ".child", "target id already used")
+        ids.add(int(s["child"]))
+    if not ids:
+        _err(source, "targets", "the scenario has no target")
+
+    trk = scn.get("tracker")
+    if not isinstance(trk, dict):
+        _err(source, "tracker", "must be an object (a docs/FORMATS.md settings object)")
+    for k in trk:
+        if k not in TRACKER_KEYS:
+            _err(source, f"tracker.{k}", "not a docs/FORMATS.md settings key (mtt-track would reject it)")
+    if "association" in trk and trk["association"] not in ASSOC_MODES:
+        _err(source, "tracker.association", f"must be one of {', '.join(ASSOC_MODES)}")
+    if "tracker_notes" in scn and not isinstance(scn["tracker_notes"], dict):
+        _err(source, "tracker_notes", "must be an object")
+
+    met = scn.get("metrics", {})
+    _check_keys(met, _METRIC_KEYS, source, "metrics")
+    _num(met, "match_distance", source, "metrics", lo=0, lo_open=True, required=False)
+    _num(met, "gospa_c", source, "metrics", lo=0, lo_open=True, required=False)
+    _num(met, "seeded_eval_scan", source, "metrics", integer=True, required=False)
+    if "seeded_targets" in met:
+        st = met["seeded_targets"]
+        if not isinstance(st, list) or any(not isinstance(a, int) or a not in ids for a in st):
+            _err(source, "metrics.seeded_targets", "must be a list of target ids")
+        if len(st) != len(trk.get("initial_tracks", [])):
+            _err(source, "metrics.seeded_targets", "must have one target per tracker.initial_tracks entry")
+    rep = scn.get("report", {})
+    _check_keys(rep, _REPORT_KEYS, source, "report")
+    for k in ("table_times", "count_frames", "gate_scans"):
+        if k in rep and (not isinstance(rep[k], list)
+                         or any(isinstance(a, bool) or not isinstance(a, (int, float)) for a in rep[k])):
+            _err(source, f"report.{k}", "must be a list of numbers")
+    if "zoom" in rep and rep["zoom"] is not None:
+        z = rep["zoom"]
+        if not (isinstance(z, list) and len(z) == 2):
+            _err(source, "report.zoom", "must be [[x0, x1], [y0, y1]] or null")
+        _pair({"x": z[0]}, "x", source, "report.zoom[0]", increasing=True)
+        _pair({"y": z[1]}, "y", source, "report.zoom[1]", increasing=True)
+
+
+# ---------------------------------------------------------------- helpers
+
+
+def scan_times(scn: dict):
+    """Times of every scan: t0 + k * dt, k = 0 .. count-1 (a Python list)."""
+    s = scn["scans"]
+    t0 = float(s.get("t0", 0.0))
+    return [t0 + k * float(s["dt"]) for k in range(int(s["count"]))]
+
+
+def area_size(scn: dict) -> float:
+    """Area of the surveillance region in the scenario's length unit squared."""
+    a = scn["area"]
+    return (a["x"][1] - a["x"][0]) * (a["y"][1] - a["y"][0])
+
+
+def expand_targets(scn: dict):
+    """Deterministic targets (explicit and grouped) as a list of dicts.
+
+    Each dict has id, x, y, vx, vy (state at time t_ref), t_ref, first_scan,
+    last_scan (inclusive), pd.  Random targets and split children are drawn
+    or derived by the generator, not here.
+    """
+    nscan = int(scn["scans"]["count"])
+    t0 = float(scn["scans"].get("t0", 0.0))
+    pd = float(scn["pd"])
+    out = []
+
+    def one(tid, src, dx=0.0, dy=0.0):
+        return {
+            "id": int(tid),
+            "x": float(src["x"]) + dx, "y": float(src["y"]) + dy,
+            "vx": float(src["vx"]), "vy": float(src["vy"]),
+            "t_ref": float(src.get("t_ref", t0)),
+            "first_scan": int(src.get("first_scan", 0)),
+            "last_scan": int(src.get("last_scan", nscan - 1)),
+            "pd": float(src.get("pd", pd)),
+        }
+
+    for t in scn.get("targets", []):
+        out.append(one(t["id"], t))
+    for g in scn.get("groups", []):
+        for j, (dx, dy) in enumerate(g["offsets"]):
+            out.append(one(int(g["first_id"]) + j, g, float(dx), float(dy)))
+    out.sort(key=lambda d: d["id"])
+    return out
+
+
+def seeded_targets(scn: dict):
+    """Target ids that the tracker's ``initial_tracks`` follow, in list order.
+
+    ``metrics.seeded_targets`` if given, else the targets present at scan 0 in
+    ascending id (only when their number equals the number of initial tracks).
+    Empty list when there are no initial tracks.
+    """
+    init = scn["tracker"].get("initial_tracks") or []
+    if not init:
+        return []
+    met = scn.get("metrics", {})
+    if "seeded_targets" in met:
+        return [int(a) for a in met["seeded_targets"]]
+    present = [t["id"] for t in expand_targets(scn) if t["first_scan"] == 0]
+    if len(present) != len(init):
+        raise ScenarioError(
+            f"{scn.get('_source', '<scenario>')}: key 'metrics.seeded_targets': needed "
+            f"({len(init)} initial tracks, {len(present)} targets at scan 0)")
+    return present
+
+
+def tracker_settings(scn: dict, association: str | None = None) -> dict:
+    """The settings object to hand to mtt-track (a copy), optionally with another mode."""
+    trk = copy.deepcopy(scn["tracker"])
+    if association is not None:
+        if association not in ASSOC_MODES:
+            raise ScenarioError(f"association '{association}' is not one of {', '.join(ASSOC_MODES)}")
+        trk["association"] = association
+    return trk
+
+
+def tracker_value(scn: dict, key: str):
+    """A tracker setting with the docs/FORMATS.md default when absent."""
+    return scn["tracker"].get(key, TRACKER_DEFAULTS.get(key))

@@ -1,0 +1,223 @@
+"""Metrics on small cases whose answers are worked out by hand in the comments."""
+
+import os
+import sys
+import unittest
+
+import numpy as np
+
+from mtt_sim import assign, metrics
+
+
+class TestAssignment(unittest.TestCase):
+    def test_matches_brute_force(self):
+        rng = np.random.default_rng(12345)
+        for trial in range(400):
+            n, m = rng.integers(1, 7, 2)
+            c = rng.integers(0, 9, (n, m)).astype(float) if trial % 2 else rng.random((n, m)) * 10
+            pairs = assign.linear_assignment(c)
+            best, _ = assign.brute_force(c)
+            self.assertAlmostEqual(sum(c[i, j] for i, j in pairs), best, places=9)
+            self.assertEqual(len(pairs), min(n, m))
+            self.assertEqual(len({i for i, _ in pairs}), len(pairs))
+            self.assertEqual(len({j for _, j in pairs}), len(pairs))
+
+    def test_hand_3x3(self):
+        # cost rows = workers, cols = jobs.  Candidates:
+        #   (0,1)+(1,0)+(2,2) = 1 + 2 + 2 = 5   <- optimum
+        #   (0,0)+(1,1)+(2,2) = 4 + 4 + 2 = 10, (0,2)+(1,0)+(2,1) = 8 + 2 + 6 = 16, ...
+        c = [[4, 1, 8], [2, 4, 7], [9, 6, 2]]
+        self.assertEqual(assign.linear_assignment(c), [(0, 1), (1, 0), (2, 2)])
+
+    def test_empty_and_rectangular(self):
+        self.assertEqual(assign.linear_assignment(np.zeros((0, 3))), [])
+        # 3 rows, 1 column: the column goes to the cheapest row (row 2, cost 0.5)
+        self.assertEqual(assign.linear_assignment([[3.0], [1.0], [0.5]]), [(2, 0)])
+
+
+class TestGospa(unittest.TestCase):
+    def test_one_missed(self):
+        # X = {(0,0), (10,0)}, Y = {(1,0)}, c = 5, p = 1, alpha = 2.
+        # Best: (0,0)-(1,0) at d = 1 (< c); (10,0) is missed: c/2 = 2.5.
+        # GOSPA = 1 + 2.5 = 3.5 (loc 1, missed 2.5, false 0).
+        g = metrics.gospa([[0, 0], [10, 0]], [[1, 0]], c=5)
+        self.assertAlmostEqual(g["gospa"], 3.5)
+        self.assertAlmostEqual(g["loc"], 1.0)
+        self.assertAlmostEqual(g["missed"], 2.5)
+        self.assertAlmostEqual(g["false"], 0.0)
+        self.assertEqual((g["n_missed"], g["n_false"]), (1, 0))
+
+    def test_beyond_cutoff_is_missed_plus_false(self):
+        # X = {(0,0)}, Y = {(6,0)}, c = 5: d = 6 >= c, so no real pair:
+        # one missed (2.5) + one false (2.5) = 5 = c.
+        g = metrics.gospa([[0, 0]], [[6, 0]], c=5)
+        self.assertAlmostEqual(g["gospa"], 5.0)
+        self.assertEqual((g["n_missed"], g["n_false"], g["n_assigned"]), (1, 1, 0))
+
+    def test_optimal_not_greedy(self):
+        # X = {(0,0), (4,0)}, Y = {(3,0), (1,0)}, c = 10.
+        # Straight pairs: |0-1| + |4-3| = 2; crossed: |0-3| + |4-1| = 6.  GOSPA = 2.
+        g = metrics.gospa([[0, 0], [4, 0]], [[3, 0], [1, 0]], c=10)
+        self.assertAlmostEqual(g["gospa"], 2.0)
+
+    def test_empty_sets(self):
+        # both empty: 0.  X empty, |Y| = 3, c = 5: 3 false * 2.5 = 7.5.
+        self.assertEqual(metrics.gospa(np.zeros((0, 2)), np.zeros((0, 2)), c=5)["gospa"], 0.0)
+        self.assertAlmostEqual(metrics.gospa(np.zeros((0, 2)), [[0, 0], [1, 1], [2, 2]], c=5)["gospa"], 7.5)
+        # |X| = 2, Y empty, c = 4: 2 missed * 2 = 4.
+        self.assertAlmostEqual(metrics.gospa([[0, 0], [9, 9]], np.zeros((0, 2)), c=4)["gospa"], 4.0)
+
+    def test_two_targets_one_estimate_between(self):
+        # X = {(0,0), (4,0)}, Y = {(2,0)}, c = 3: either pair has d = 2 < 3.
+        # GOSPA = 2 (loc) + 1.5 (one missed) = 3.5.
+        self.assertAlmostEqual(metrics.gospa([[0, 0], [4, 0]], [[2, 0]], c=3)["gospa"], 3.5)
+
+    def test_p2(self):
+        # p = 2: X = {(0,0)}, Y = {(3,4)}, c = 10: d = 5, GOSPA = sqrt(25) = 5.
+        self.assertAlmostEqual(metrics.gospa([[0, 0]], [[3, 4]], c=10, p=2)["gospa"], 5.0)
+
+
+class TestConfirmedTrue(unittest.TestCase):
+    def test_counting(self):
+        # targets (0,0), (10,0); confirmed tracks (0.5,0), (1,0), (30,0); d_a = 2.
+        # target 0 can take (0.5,0) or (1,0) (one-to-one: one of them), target 1
+        # has nothing within 2 (nearest 9 away).  True 1, false 2.
+        self.assertEqual(metrics.confirmed_true_false([[0, 0], [10, 0]], [[0.5, 0], [1, 0], [30, 0]], 2.0), (1, 2))
+
+    def test_maximum_cardinality(self):
+        # A = (0,0), B = (3,0); P = (1.5,0), Q = (-1.6,0); d_a = 2.
+        # Distances: A-P 1.5, B-P 1.5, A-Q 1.6, B-Q 4.6 (not allowed).
+        # Nearest-first would give A-P and leave B unmatched (1 pair); the rule
+        # maximises the number of pairs first: A-Q + B-P = 2 pairs.  True 2, false 0.
+        pairs = metrics.match([[0, 0], [3, 0]], [[1.5, 0], [-1.6, 0]], 2.0)
+        self.assertEqual(sorted(pairs), [(0, 1), (1, 0)])
+        self.assertEqual(metrics.confirmed_true_false([[0, 0], [3, 0]], [[1.5, 0], [-1.6, 0]], 2.0), (2, 0))
+
+    def test_two_tracks_one_target(self):
+        # one target, two confirmed tracks on it: one true, one false.
+        self.assertEqual(metrics.confirmed_true_false([[5, 5]], [[5, 5.1], [5.2, 5]], 1.0), (1, 1))
+
+    def test_score_run_counts(self):
+        # 2 scans. Scan 0: target 0 at (0,0), confirmed track 7 at (0,1), tentative track 8.
+        # Scan 1: target 0 at (1,0), confirmed tracks 7 at (1,3) and 9 at (1,0.5); d_a = 2.
+        # conf_true = [1, 1] (scan 1: track 9, distance 0.5), conf_false = [0, 1],
+        # tentative = [1, 0], confirmed = [1, 2]; sq_err = [1, 0.25].
+        truth = {"scan": np.array([0, 1]), "target": np.array([0, 0]),
+                 "x": np.array([0.0, 1.0]), "y": np.array([0.0, 0.0])}
+        tracks = {"scan": np.array([0, 0, 1, 1]), "track": np.array([7, 8, 7, 9]),
+                  "confirmed": np.array([True, False, True, True]),
+                  "x": np.array([0.0, 50.0, 1.0, 1.0]), "y": np.array([1.0, 50.0, 3.0, 0.5])}
+        sc = metrics.score_run(truth, tracks, 2, match_distance=2.0, gospa_c=2.0)
+        self.assertEqual(sc["conf_true"].tolist(), [1, 1])
+        self.assertEqual(sc["conf_false"].tolist(), [0, 1])
+        self.assertEqual(sc["n_tentative"].tolist(), [1, 0])
+        self.assertEqual(sc["n_confirmed"].tolist(), [1, 2])
+        np.testing.assert_allclose(sc["sq_err"][0], [1.0, 0.25])
+        # GOSPA scan 1 (c = 2): pair target-track 9 at 0.5, track 7 false (1): 1.5.
+        self.assertAlmostEqual(sc["gospa"][1], 1.5)
+
+
+class TestClearMot(unittest.TestCase):
+    def test_hand_sequence(self):
+        # threshold 2.  Targets 1 and 2; tracks a, b, c, d (ids 10, 11, 12, 13).
+        # k0: 1@(0,0) 2@(10,0); a@(0,0) b@(10,0)      -> 1-a, 2-b. FN 0 FP 0 SW 0
+        # k1: 1@(1,0) 2@(9,0);  a@(9,0) b@(1,0)       -> old pairs now 8 apart, dropped;
+        #     new 1-b, 2-a; 1 was last on a, 2 on b    -> SW 2
+        # k2: 1@(2,0) 2@(8,0);  b@(2,0)               -> 1-b kept; 2 missed: FN 1
+        # k3: 1@(3,0) 2@(7,0);  b@(3,0) c@(7,0) d@(50,0)
+        #     1-b kept; 2-c new, 2 last on a          -> SW 1; d false: FP 1
+        # GT = 8, FN = 1, FP = 1, SW = 3 -> MOTA = 1 - 5/8 = 0.375; 7 matches at distance 0.
+        fr = [
+            ([1, 2], [[0, 0], [10, 0]], [10, 11], [[0, 0], [10, 0]]),
+            ([1, 2], [[1, 0], [9, 0]], [10, 11], [[9, 0], [1, 0]]),
+            ([1, 2], [[2, 0], [8, 0]], [11], [[2, 0]]),
+            ([1, 2], [[3, 0], [7, 0]], [11, 12, 13], [[3, 0], [7, 0], [50, 0]]),
+        ]
+        r = metrics.clear_mot(fr, 2.0)
+        self.assertEqual((r["gt"], r["fn"], r["fp"], r["idsw"], r["matches"]), (8, 1, 1, 3, 7))
+        self.assertAlmostEqual(r["mota"], 0.375)
+        self.assertAlmostEqual(r["motp"], 0.0)
+        self.assertEqual(r["idsw_scan"].tolist(), [0, 2, 0, 1])
+
+    def test_keeps_previous_correspondence(self):
+        # threshold 3.  k0: target 1@(0,0), track a@(0,0) -> 1-a.
+        # k1: target 1@(0,0); a@(2,0), b@(0,0).  The optimum alone would pick b
+        # (distance 0) but a is still within 3, so 1-a is kept: no switch, b false.
+        # MOTA = 1 - (0 + 1 + 0)/2 = 0.5, MOTP = (0 + 2)/2 = 1.
+        fr = [([1], [[0, 0]], [5], [[0, 0]]), ([1], [[0, 0]], [5, 6], [[2, 0], [0, 0]])]
+        r = metrics.clear_mot(fr, 3.0)
+        self.assertEqual((r["idsw"], r["fp"]), (0, 1))
+        self.assertAlmostEqual(r["mota"], 0.5)
+        self.assertAlmostEqual(r["motp"], 1.0)
+
+
+class TestSeededOutcome(unittest.TestCase):
+    T_IDS = [0, 1, 2]
+    T_XY = [[0, 0], [0, 3], [0, 6]]
+
+    def outcome(self, tracks):
+        ids = list(tracks)
+        xy = [tracks[i] for i in ids]
+        return metrics.seeded_outcome([0, 1, 2], self.T_IDS, self.T_XY, ids, xy, cutoff=1.0)
+
+    def test_all_on_own(self):
+        # nearest targets: 0 -> 0 (0.1), 1 -> 1 (0), 2 -> 2 (0.2): nothing wrong.
+        r = self.outcome({0: [0, 0.1], 1: [0, 3], 2: [0, 6.2]})
+        self.assertEqual(r["on"], [0, 1, 2])
+        self.assertFalse(r["failed"])
+
+    def test_coalescence(self):
+        # tracks 0 and 1 both nearest to target 0 (0 and 0.2 away): coalescence;
+        # track 1 is on target 0, not its own 1, so the switch flag is also set.
+        r = self.outcome({0: [0, 0], 1: [0, 0.2], 2: [0, 6]})
+        self.assertEqual(r["on"], [0, 0, 2])
+        self.assertTrue(r["coalescence"])
+        self.assertTrue(r["switch"])
+        self.assertFalse(r["lost"])
+        self.assertTrue(r["failed"])
+
+    def test_switch(self):
+        # tracks 0 and 1 exchanged targets: switch without coalescence.
+        r = self.outcome({0: [0, 3], 1: [0, 0], 2: [0, 6]})
+        self.assertEqual(r["on"], [1, 0, 2])
+        self.assertTrue(r["switch"])
+        self.assertFalse(r["coalescence"])
+        self.assertTrue(r["failed"])
+
+    def test_lost(self):
+        # track 2 deleted -> lost; track 2 present but 3 away from everything -> lost.
+        r = self.outcome({0: [0, 0], 1: [0, 3]})
+        self.assertEqual(r["on"], [0, 1, None])
+        self.assertTrue(r["lost"] and r["failed"])
+        self.assertFalse(r["switch"] or r["coalescence"])
+        r = self.outcome({0: [0, 0], 1: [0, 3], 2: [0, 9]})
+        self.assertTrue(r["lost"] and r["failed"])
+
+    def test_score_run_uses_last_scan_and_tentative(self):
+        # one target 0, seeded track 0.  Scan 0: on target; scan 1 (last): the
+        # track is 5 away (> cutoff 1) -> lost at the evaluation scan.
+        truth = {"scan": np.array([0, 1]), "target": np.array([0, 0]),
+                 "x": np.array([0.0, 1.0]), "y": np.array([0.0, 0.0])}
+        tracks = {"scan": np.array([0, 1]), "track": np.array([0, 0]), "confirmed": np.array([True, True]),
+                  "x": np.array([0.0, 6.0]), "y": np.array([0.0, 0.0])}
+        sc = metrics.score_run(truth, tracks, 2, 1.0, 1.0, seeded_targets=[0])
+        self.assertTrue(sc["seeded"]["lost"])
+        self.assertEqual(sc["seeded"]["eval_scan"], 1)
+        sc = metrics.score_run(truth, tracks, 2, 1.0, 1.0, seeded_targets=[0], eval_scan=0)
+        self.assertFalse(sc["seeded"]["failed"])
+
+
+class TestCountsAndTime(unittest.TestCase):
+    def test_counts(self):
+        # scans 0,0,1,2,2,2 with confirmed F,T,T,F,F,T over 4 scans:
+        # tentative [1,0,2,0], confirmed [1,1,1,0]
+        t, c = metrics.counts_per_scan([0, 0, 1, 2, 2, 2], [0, 1, 1, 0, 0, 1], 4)
+        self.assertEqual(t.tolist(), [1, 0, 2, 0])
+        self.assertEqual(c.tolist(), [1, 1, 1, 0])
+
+    def test_time_per_frame(self):
+        self.assertAlmostEqual(metrics.time_per_frame(0.5, 100), 0.005)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,158 @@
+#!/usr/bin/env bash
+# scripts/ci-firmware.sh - the firmware proof (docs/FIRMWARE.md), one CI step.
+#
+#   1. installs what it needs when missing (Debian, as root; apt-get update
+#      at most once): gcc-arm-none-eabi libnewlib-arm-none-eabi
+#      qemu-system-arm cppcheck clang-tidy
+#   2. per cross preset (cortex-m4f, cortex-m4f-small, cortex-m0plus,
+#      cortex-m0plus-small): configure + build (one check), ctest (each test
+#      one check: no double helpers, qemu run, host comparison), then prints
+#      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
+#      worst-case stack of mtt_tracker_step, instructions per frame
+#   3. cppcheck and clang-tidy on src/, float and double (one check each)
+#
+# Ends with "ci-firmware: N passed, M failed" (scripts/dev.sh adds it to its
+# total) and exits non-zero when anything failed.  The figures are
+# benchmark figures, not checks: docs/FIRMWARE.md records them.
+set -uo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+DEB_PACKAGES=(gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm cppcheck clang-tidy)
+PRESETS=(cortex-m4f cortex-m4f-small cortex-m0plus cortex-m0plus-small)
+FWCHECK=(python3 "$ROOT/firmware/fwcheck.py")
+passed=0
+failed=0
+failures=()
+
+say() { printf 'ci-firmware: %s\n' "$*"; }
+pass() { passed=$((passed + 1)); say "PASS $1"; }
+fail() { failed=$((failed + 1)); failures+=("$1"); say "FAIL $1"; }
+# check NAME CMD...: run CMD, count it as one check.
+check() {
+  local name="$1"; shift
+  if "$@"; then pass "$name"; else fail "$name"; fi
+}
+
+# ---------------------------------------------------------------- deps
+deps() {
+  local missing=() p
+  for p in "${DEB_PACKAGES[@]}"; do
+    [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" == "install ok installed" ]] \
+      || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    say "Debian packages present: ${DEB_PACKAGES[*]}"
+    return 0
+  fi
+  if [[ "$(id -u)" -ne 0 ]] || ! command -v apt-get >/dev/null 2>&1; then
+    say "missing Debian packages: ${missing[*]} (run 'apt-get install ${missing[*]}' as root)"
+    return 1
+  fi
+  say "apt-get update; apt-get install ${missing[*]}"
+  apt-get update -qq || return 1
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+}
+
+# ---------------------------------------------------------------- cross builds
+# ctest in build dir $1: each test is one check.
+ctest_checks() {
+  local preset="$1" log line nfail total
+  log="$(mktemp "${TMPDIR:-/tmp}/mtt-fw-ctest.XXXXXX")"
+  ctest --preset "$preset" 2>&1 | tee "$log"
+  line="$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n1 || true)"
+  rm -f "$log"
+  if [[ -z "$line" ]]; then
+    fail "$preset: ctest ran no test"
+    return
+  fi
+  nfail="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")"
+  total="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")"
+  passed=$((passed + total - nfail))
+  failed=$((failed + nfail))
+  ((nfail == 0)) || failures+=("$preset: $nfail ctest(s)")
+  say "$preset: ctest $((total - nfail)) passed, $nfail failed"
+}
+
+figures() {
+  local preset="$1" b="$ROOT/build/$1"
+  "${FWCHECK[@]}" size --label "$preset" --size arm-none-eabi-size --nm arm-none-eabi-nm \
+    --lib "$b/firmware/mtt-fw-size-lib.elf" --base "$b/firmware/mtt-fw-size-base.elf" \
+    --archive "$b/libmtt.a" --text-limit 16384 || return 1
+  "${FWCHECK[@]}" stack --label "$preset" --build "$b" --src "$ROOT/src" \
+    --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
+  "${FWCHECK[@]}" doubles --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
+  # M4F: the figure of record; M0+: ARMv6-M code on qemu's Cortex-M3 (AN385).
+  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" || return 1
+}
+
+cross() {
+  local preset
+  for preset in "${PRESETS[@]}"; do
+    say "=== $preset"
+    if ! { cmake --preset "$preset" >/dev/null && cmake --build --preset "$preset"; }; then
+      fail "$preset: configure + build"
+      continue
+    fi
+    pass "$preset: configure + build"
+    ctest_checks "$preset"
+    say "--- $preset figures"
+    figures "$preset" || fail "$preset: figures"
+  done
+}
+
+# ---------------------------------------------------------------- static analysis
+# Both: the library's include paths; the float build and the double build.
+# cppcheck checks the configuration given (-D/-U) and nothing else;
+# MTT_USER_CONFIG stays undefined (it names a header of the user's).
+# --suppress=variableScope: the library declares its locals at the top of a
+# block (one style through the code, for reading on paper); narrowing a
+# scope changes no behaviour, so this style rule is off.
+run_cppcheck() {
+  local real="$1"
+  cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
+    --inline-suppr --quiet --suppress=variableScope \
+    --template='{file}:{line}: {severity}: {id}: {message}' \
+    -I include -I src -UMTT_USER_CONFIG "$real" src/
+}
+
+# -bugprone-easily-swappable-parameters: a rule about the shape of an API
+# (adjacent parameters of one type): the comparators of mtt_sort take
+# (a, b, ctx) by contract, the math helpers take several scalars; changing
+# signatures is not a finding's minimal fix.
+TIDY_CHECKS='-*,bugprone-*,cert-*,clang-analyzer-*,-bugprone-easily-swappable-parameters'
+# bugprone-signed-char-misuse (= cert-str34-c) is about a char that holds a
+# character (EOF confusion); int8_t declares a small signed integer, so
+# that typedef is configured out (the check's CharTypdefsToIgnore option).
+TIDY_CONFIG='{CheckOptions: [{key: bugprone-signed-char-misuse.CharTypdefsToIgnore, value: int8_t}, {key: cert-str34-c.CharTypdefsToIgnore, value: int8_t}]}'
+run_clang_tidy() {
+  local rc=0 f
+  for f in src/*.c; do
+    clang-tidy --quiet -checks="$TIDY_CHECKS" -config="$TIDY_CONFIG" -warnings-as-errors='*' "$f" -- \
+      -std=c99 -Iinclude -Isrc "$@" 2>/dev/null || rc=1
+  done
+  return "$rc"
+}
+
+# ---------------------------------------------------------------- main
+start=$SECONDS
+if ! deps; then
+  fail "dependencies"
+else
+  pass "dependencies"
+  cross
+  say "=== cppcheck (float, double)"
+  check "cppcheck float" run_cppcheck -UMTT_REAL_DOUBLE
+  check "cppcheck double" run_cppcheck -DMTT_REAL_DOUBLE
+  say "=== clang-tidy (float, double)"
+  check "clang-tidy float" run_clang_tidy
+  check "clang-tidy double" run_clang_tidy -DMTT_REAL_DOUBLE
+fi
+say "done in $((SECONDS - start)) s"
+if ((failed > 0)); then
+  say "failed: ${failures[*]}"
+fi
+echo "ci-firmware: $passed passed, $failed failed"
+((failed == 0))

@@ -1,0 +1,197 @@
+#!/usr/bin/env bash
+# scripts/dev.sh - the one entry point for developers and CI.
+#
+#   ./scripts/dev.sh deps    install what the build needs (idempotent)
+#   ./scripts/dev.sh test    deps, then the workflows test-float, test-double,
+#                          test-float-small (configure + build + ctest each),
+#                          then scripts/ci-firmware.sh (cross builds, qemu,
+#                          static analysis; each check one test), then
+#                          scripts/ci-robustness.sh (ASan+UBSan, fuzz, soak);
+#                          ends with the line "N passed, M failed"
+#   ./scripts/dev.sh demo    deps, build host-float, 50 Monte Carlo runs of
+#                          scenarios/crossing3.json (lm-ihpda beside lm-ipda):
+#                          metric tables on stdout, plots in out/demo
+#   ./scripts/dev.sh --help
+#
+# Works from any directory.  deps needs root for apt (as on CI); elsewhere it
+# only reports what is missing.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
+PY_MODULES=(numpy matplotlib)
+WORKFLOWS=(test-float test-double test-float-small)
+
+say() { printf 'dev.sh: %s\n' "$*"; }
+die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }
+
+usage() {
+  sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'
+}
+
+is_root() { [[ "$(id -u)" -eq 0 ]]; }
+
+# ---------------------------------------------------------------- deps
+apt_updated=0
+apt_update_once() {
+  if ((apt_updated == 0)); then
+    say "apt-get update"
+    apt-get update -qq
+    apt_updated=1
+  fi
+}
+
+deb_installed() {
+  [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
+}
+
+deps_debian() {
+  local missing=() p
+  for p in "${DEB_PACKAGES[@]}"; do
+    deb_installed "$p" || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    say "Debian packages present: ${DEB_PACKAGES[*]}"
+    return 0
+  fi
+  if ! is_root || ! command -v apt-get >/dev/null 2>&1; then
+    die "missing Debian packages: ${missing[*]} (run 'apt-get install ${missing[*]}' as root)"
+  fi
+  apt_update_once
+  say "apt-get install ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+}
+
+deps_other() {
+  # No dpkg: check the commands and say what is missing.
+  local c missing=()
+  for c in cmake ninja cc pkg-config; do
+    command -v "$c" >/dev/null 2>&1 || missing+=("$c")
+  done
+  ((${#missing[@]} == 0)) || die "missing tools: ${missing[*]} (and cJSON headers for io/)"
+}
+
+check_cmake_version() {
+  local v
+  v="$(cmake --version | sed -n 's/^cmake version \([0-9][0-9]*\.[0-9][0-9]*\).*/\1/p')"
+  local major="${v%%.*}" minor="${v#*.}"
+  if ((major < 3 || (major == 3 && minor < 25))); then
+    die "cmake >= 3.25 needed (CMakePresets.json version 6), found ${v:-unknown}"
+  fi
+}
+
+deps_python() {
+  command -v python3 >/dev/null 2>&1 || die "python3 not found"
+  local mods
+  mods="$(IFS=,; echo "${PY_MODULES[*]}")"
+  if python3 -c "import $mods" 2>/dev/null; then
+    say "python3 modules present: ${PY_MODULES[*]}"
+    return 0
+  fi
+  say "python3 -m pip install ${PY_MODULES[*]}"
+  if PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore \
+       python3 -m pip install --quiet "${PY_MODULES[@]}"; then
+    return 0
+  fi
+  # A Debian system python refuses pip (PEP 668): take Debian's packages.
+  if [[ "$(command -v python3)" == /usr/bin/python3 ]] && is_root && command -v apt-get >/dev/null 2>&1; then
+    apt_update_once
+    say "apt-get install python3-numpy python3-matplotlib"
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+      python3-numpy python3-matplotlib >/dev/null
+    python3 -c "import $mods" && return 0
+  fi
+  die "could not install python modules ${PY_MODULES[*]}"
+}
+
+cmd_deps() {
+  if command -v dpkg-query >/dev/null 2>&1; then
+    deps_debian
+  else
+    deps_other
+  fi
+  check_cmake_version
+  "$ROOT/scripts/setup-unity.sh"
+  deps_python
+}
+
+# Runs a CI script that prints "<prefix>: N passed, M failed" and adds its
+# counts to cmd_test's passed/failed (each of its checks counts as one
+# test); a non-zero exit that reported no failure counts as one.
+run_counted() {
+  local prefix="$1" script="$2" before=$failed rc=0 line
+  say "=== scripts/$(basename "$script")"
+  "$script" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  line="$(grep -E "^$prefix: [0-9]+ passed, [0-9]+ failed\$" "$log" | tail -n1 || true)"
+  if [[ -n "$line" ]]; then
+    passed=$((passed + $(sed -E "s/^$prefix: ([0-9]+) passed.*/\1/" <<<"$line")))
+    failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
+  fi
+  if ((rc != 0)) && ((failed == before)); then
+    failed=$((failed + 1))
+  fi
+}
+
+# ---------------------------------------------------------------- test
+cmd_test() {
+  cmd_deps
+  local passed=0 failed=0 wf log rc line total nfail
+  log="$(mktemp "${TMPDIR:-/tmp}/mtt-dev-test.XXXXXX")"
+  # shellcheck disable=SC2064
+  trap "rm -f '$log'" EXIT
+  for wf in "${WORKFLOWS[@]}"; do
+    say "=== cmake --workflow --preset $wf"
+    rc=0
+    cmake --workflow --preset "$wf" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+    # ctest: "100% tests passed, 0 tests failed out of 12"
+    #        "83% tests passed, 2 tests failed out of 12"
+    line="$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n1 || true)"
+    if [[ -n "$line" ]]; then
+      nfail="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")"
+      total="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")"
+      passed=$((passed + total - nfail))
+      failed=$((failed + nfail))
+    fi
+    if ((rc != 0)); then
+      say "workflow $wf failed (exit $rc); stopping"
+      if [[ -z "$line" ]]; then
+        # configure or build failed: count it as one failure
+        failed=$((failed + 1))
+      fi
+      echo "$passed passed, $failed failed"
+      return "$rc"
+    fi
+  done
+  # The firmware proof: cross builds, qemu, static analysis.
+  run_counted ci-firmware "$ROOT/scripts/ci-firmware.sh"
+  # Robustness: unit tests under ASan+UBSan, fuzz smoke runs, soak.
+  run_counted robustness "$ROOT/scripts/ci-robustness.sh"
+  echo "$passed passed, $failed failed"
+  ((failed == 0))
+}
+
+# ---------------------------------------------------------------- demo
+cmd_demo() {
+  cmd_deps
+  cmake --preset host-float
+  cmake --build --preset host-float
+  [[ -x build/host-float/cli/mtt-track ]] \
+    || die "build/host-float/cli/mtt-track was not built"
+  mkdir -p out/demo
+  # The library's default mode beside the LM-IPDA of [S4], 50 runs (~10 s).
+  PYTHONPATH=python python3 -m mtt_sim.mc --scenario scenarios/crossing3.json --runs 50 --jobs 2 \
+    --assoc lm-ihpda lm-ipda --out out/demo --mtt-track build/host-float/cli/mtt-track
+  say "demo output in $ROOT/out/demo"
+}
+
+case "${1:-}" in
+  deps) cmd_deps ;;
+  test) cmd_test ;;
+  demo) cmd_demo ;;
+  -h|--help|help) usage ;;
+  "") usage; exit 2 ;;
+  *) printf 'dev.sh: unknown command %s\n\n' "$1" >&2; usage >&2; exit 2 ;;
+esac

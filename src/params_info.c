@@ -1,0 +1,162 @@
+/* params_info.c - the settings keys as a public table (mtt_params_info,
+ * mtt_params_find) and key-wise access to mtt_params (mtt_params_set,
+ * mtt_params_get), for tools and bindings; docs/FORMATS.md "Settings".
+ *
+ * The rows are params_table.h's, the range test is params.c's
+ * mtt_params_rule_ok: this file adds the texts and the conversion from and
+ * to double.  Nothing in the tracker calls it, so a firmware image does not
+ * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
+ * that no double helper is linked). */
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "params_table.h"
+
+/* A public row and, for REAL rows, its rule in params.c. */
+typedef struct info_row {
+    mtt_param_info info;
+    size_t rule;
+} info_row;
+
+#define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
+    {{key, MTT_PARAM_REAL, count, (double)(lo), (double)(hi), ((flags) & PF_OPEN_LO) != 0,                     \
+      ((flags) & PF_OPEN_HI) != 0, NULL, 0, cross, text},                                          \
+     MTT_RULE_##member},
+#define INFO_FLAG(key, member, text)                                                               \
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, NULL, text}, MTT_RULE_COUNT},
+#define INFO_ENUM(key, member, type, n_names, names, text)                                         \
+    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, NULL, text},     \
+     MTT_RULE_COUNT},
+
+static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
+
+#define N_ROWS (sizeof rows / sizeof rows[0])
+
+mtt_status mtt_params_info(size_t i, const mtt_param_info **info)
+{
+    if (info == NULL) {
+        return MTT_ERR_NULL;
+    }
+    if (i >= N_ROWS) {
+        return MTT_ERR_RANGE;
+    }
+    *info = &rows[i].info;
+    return MTT_OK;
+}
+
+mtt_status mtt_params_find(const char *key, size_t *i)
+{
+    size_t k;
+    if (key == NULL || i == NULL) {
+        return MTT_ERR_NULL;
+    }
+    for (k = 0; k < N_ROWS; ++k) {
+        if (strcmp(key, rows[k].info.key) == 0) {
+            *i = k;
+            return MTT_OK;
+        }
+    }
+    return MTT_ERR_RANGE;
+}
+
+/* The arguments of mtt_params_set / get: *r the row of key, which must
+ * have n values. */
+static mtt_status row_of(const void *p, const char *key, const void *v, size_t n,
+                         const info_row **r)
+{
+    size_t k;
+    mtt_status st;
+    if (p == NULL || v == NULL) {
+        return MTT_ERR_NULL;
+    }
+    st = mtt_params_find(key, &k); /* MTT_ERR_NULL for a NULL key */
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (n != rows[k].info.count) {
+        return MTT_ERR_RANGE;
+    }
+    *r = &rows[k];
+    return MTT_OK;
+}
+
+/* ENUM and BOOL rows: the member, as an int.  One case per row: the enum
+ * members need not be int-sized (short enums on ARM EABI). */
+#define GET_FLAG(name, member, text)                                                                \
+    if (strcmp(r->info.key, name) == 0) {                                                           \
+        return p->member != 0;                                                                     \
+    }
+#define GET_ENUM(name, member, type, n_names, names, text)                                          \
+    if (strcmp(r->info.key, name) == 0) {                                                           \
+        return (int)p->member;                                                                     \
+    }
+static int get_int(const mtt_params *p, const info_row *r)
+{
+    MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, GET_FLAG, GET_ENUM)
+    return 0;
+}
+
+#define SET_FLAG(name, member, text)                                                                \
+    if (strcmp(r->info.key, name) == 0) {                                                           \
+        p->member = value;                                                                         \
+    }
+#define SET_ENUM(name, member, type, n_names, names, text)                                          \
+    if (strcmp(r->info.key, name) == 0) {                                                           \
+        p->member = (type)value;                                                                   \
+    }
+static void set_int(mtt_params *p, const info_row *r, int value)
+{
+    MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, SET_FLAG, SET_ENUM)
+}
+
+mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
+{
+    const info_row *r = NULL;
+    mtt_params q;
+    size_t k;
+    mtt_status st = row_of(p, key, v, n, &r);
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (r->info.type != MTT_PARAM_REAL) {
+        /* an index in [0, hi]: whole, and compared before the conversion */
+        if (!(v[0] >= 0.0 && v[0] <= r->info.hi && v[0] == (double)(int)v[0])) {
+            return MTT_ERR_PARAM;
+        }
+        set_int(p, r, (int)v[0]);
+        return MTT_OK;
+    }
+    q = *p;
+    for (k = 0; k < n; ++k) {
+        /* beyond mtt_real's range the conversion is undefined: test first */
+        if (!(v[k] >= -(double)MTT_REAL_MAX && v[k] <= (double)MTT_REAL_MAX)) {
+            return MTT_ERR_PARAM;
+        }
+        mtt_params_rule_at(&q, r->rule)[k] = (mtt_real)v[k];
+    }
+    if (!mtt_params_rule_ok(&q, r->rule, 0)) {
+        return MTT_ERR_PARAM;
+    }
+    *p = q;
+    return MTT_OK;
+}
+
+mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_t n)
+{
+    const info_row *r = NULL;
+    mtt_params q;
+    size_t k;
+    mtt_status st = row_of(p, key, v, n, &r);
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (r->info.type != MTT_PARAM_REAL) {
+        v[0] = (double)get_int(p, r);
+        return MTT_OK;
+    }
+    q = *p; /* mtt_params_rule_at addresses a writable mtt_params */
+    for (k = 0; k < n; ++k) {
+        v[k] = (double)mtt_params_rule_at(&q, r->rule)[k];
+    }
+    return MTT_OK;
+}
