@@ -2,8 +2,9 @@
 
 A scene is plain text, one item per line ('#' starts a comment line):
 
-    param <name> <value> [<value>]     a docs/FORMATS.md setting (meas_sigma takes two values,
-                                       intensity_f1/f2 three, intensity_blend two;
+    param <key> <value> [<value>]      a docs/FORMATS.md setting, nested keys dotted
+                                       (meas_sigma takes two values, intensity_gate.f1
+                                       and .f2 three, intensity_gate.blend two;
                                        association / init_gate take a name;
                                        initiate takes 0 or 1)
     track x y vx vy p00 p01 ... p33    a seeded track (16 covariance values, row-major)
@@ -24,7 +25,10 @@ import numpy as np
 
 from .tracker import Params, Tracker
 
-_VECTOR = {"meas_sigma": 2, "intensity_f1": 3, "intensity_f2": 3, "intensity_blend": 2}
+_VECTOR = {"meas_sigma": 2, "intensity_gate.f1": 3, "intensity_gate.f2": 3, "intensity_gate.blend": 2}
+# settings keys (docs/FORMATS.md, nested ones dotted) -> Params fields
+_FIELD = {"intensity_gate.f1": "intensity_f1", "intensity_gate.f2": "intensity_f2",
+          "intensity_gate.blend": "intensity_blend"}
 _NAMES = {"association", "init_gate"}
 
 
@@ -37,7 +41,7 @@ class Scene:
     def make_params(self):
         kw = {}
         for k, v in self.params.items():
-            kw[k] = tuple(v) if k in _VECTOR else v
+            kw[_FIELD.get(k, k)] = tuple(v) if k in _VECTOR else v
         if "initiate" in kw:
             kw["initiate"] = bool(kw["initiate"])
         return Params(**kw)

@@ -19,9 +19,10 @@ the count is printed.  Every other disagreement fails the test, except the
 scenes that EXPECTED_FAILURES explains.
 
 Run:  ctest --preset host-double -R differential
-  or  MTT_DIFF_DRIVER=build/host-double/test/differential/mtt-diff-driver \
-      python3 -m unittest -v test_differential        (in python/tests)
-  or  python3 python/tests/test_differential.py [-v]   (finds the driver under build/host-double)
+  or  MTT_DIFF_DRIVER=build/host-double/test/differential/mtt-diff-driver PYTHONPATH=python \
+      python3 -m unittest -v python/tests/test_differential.py
+  or  PYTHONPATH=python python3 python/tests/test_differential.py [-v]
+      (finds the driver under build/host-double)
 Environment: MTT_DIFF_SCENES (default 2000) random scenes; MTT_DIFF_KEEP=DIR
 writes every failing scene there.
 """
@@ -40,7 +41,6 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.environ.get("MTT_SOURCE_DIR") or os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "python"))
 
 from mtt_ref import Scene, parse_driver_output, read_scene, two_point_cov, write_scene  # noqa: E402
 
@@ -127,18 +127,13 @@ SPEC_GAPS = {
         "correct implementations differ; mtt_ref flags such scenes as tie-sensitive", ""),
 }
 
-# The one place that knows where the scenario generator lives (tools/ now,
-# python/mtt_sim after the layout change).
+# The one place that knows where the scenario generator lives (python/mtt_sim).
 def generate_scenario(scenario, seed, out):
     """Run the simulation package's generator; returns (settings dict, det.csv path)."""
     env = dict(os.environ)
-    py = os.path.join(ROOT, "python")
-    if os.path.isdir(os.path.join(py, "mtt_sim")):
-        env["PYTHONPATH"] = py + os.pathsep + env.get("PYTHONPATH", "")
-        cmd = [sys.executable, "-m", "mtt_sim.gen"]
-    else:
-        cmd = [sys.executable, os.path.join(ROOT, "tools", "gen.py")]
-    cmd += [os.path.join(ROOT, "scenarios", scenario + ".json"), "--seed", str(seed), "--out", out]
+    env["PYTHONPATH"] = os.path.join(ROOT, "python") + os.pathsep + env.get("PYTHONPATH", "")
+    cmd = [sys.executable, "-m", "mtt_sim.gen",
+           os.path.join(ROOT, "scenarios", scenario + ".json"), "--seed", str(seed), "--out", out]
     subprocess.run(cmd, check=True, capture_output=True, env=env)
     name = os.path.join(out, scenario)
     with open(name + ".settings.json") as fh:
@@ -207,13 +202,13 @@ def random_scene(seed):
         side = 1000.0
         if rng.random() < 0.5:
             k = loguniform(rng, 0.02, 1.0)
-            par["intensity_f1"] = [k * c for c in (-0.0007, 0.5072, 39.70)]
-            par["intensity_f2"] = [k * c for c in (-0.0001, 0.2097, 57.25)]
+            par["intensity_gate.f1"] = [k * c for c in (-0.0007, 0.5072, 39.70)]
+            par["intensity_gate.f2"] = [k * c for c in (-0.0001, 0.2097, 57.25)]
             if rx_gate.random() < 0.5:      # an f2 of its own: its peak moves, or it has none
-                par["intensity_f2"] = [k * float(rx_gate.choice([0.0, -loguniform(rx_gate, 1e-5, 2e-3)])),
+                par["intensity_gate.f2"] = [k * float(rx_gate.choice([0.0, -loguniform(rx_gate, 1e-5, 2e-3)])),
                                        k * float(rx_gate.uniform(0.05, 1.0)), k * float(rx_gate.uniform(0.0, 60.0))]
             lo = float(rng.uniform(50.0, 300.0))
-            par["intensity_blend"] = [lo, lo + float(rng.uniform(1.0, 200.0))]
+            par["intensity_gate.blend"] = [lo, lo + float(rng.uniform(1.0, 200.0))]
     amp_scale = loguniform(rng, 30.0, 600.0) if par.get("init_gate") == "intensity" else 1.0
     if par["existence_init"] >= par["confirm_threshold"]:
         par["existence_init"] = 0.5 * par["confirm_threshold"]
@@ -311,7 +306,10 @@ def scenario_scene(scenario, seed, mode, tmp):
     for k, v in settings.items():
         if k == "initial_tracks":
             continue
-        par[k] = v
+        if isinstance(v, dict):               # intensity_gate: {"f1": ...} -> intensity_gate.f1
+            par.update({f"{k}.{kk}": vv for kk, vv in v.items()})
+        else:
+            par[k] = v
     par["association"] = mode
     rows = np.genfromtxt(det, delimiter=",", names=True, dtype=None, encoding=None, missing_values="",
                          filling_values=np.nan)

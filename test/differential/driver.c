@@ -4,7 +4,8 @@
  * Public API only (include/mtt/mtt.h); built with mtt_real = double.  The
  * scene format is documented in python/mtt_ref/scene.py:
  *
- *   param <name> <value...>     an mtt_params field, named as in docs/FORMATS.md
+ *   param <key> <value...>      a settings key of docs/FORMATS.md (dotted when
+ *                               nested: intensity_gate.f1), set by mtt_params_set
  *   track x y vx vy p00 .. p33  mtt_tracker_add_track before the first frame
  *   frame <time> <n>            then n lines "x y amplitude|-"
  *
@@ -49,54 +50,27 @@ static int num(const char *s, double *v)
     return end != s && *end == '\0';
 }
 
-/* One docs/FORMATS.md setting onto mtt_params; 0 on success. */
+/* "param <key> <values...>": one docs/FORMATS.md setting, through the
+ * library's own parameter table (mtt_params_find / info / set); an enum
+ * value is given by name.  0 on success. */
 static int set_param(mtt_params *p, char **w, int n)
 {
-    static const struct { const char *name; size_t off; int count; } reals[] = {
-        {"process_psd", offsetof(mtt_params, process_psd), 1},
-        {"meas_sigma", offsetof(mtt_params, meas_sigma), 2},
-        {"pd", offsetof(mtt_params, pd), 1},
-        {"pg", offsetof(mtt_params, pg), 1},
-        {"clutter_density", offsetof(mtt_params, clutter_density), 1},
-        {"snr_rho", offsetof(mtt_params, snr_rho), 1},
-        {"markov_p11", offsetof(mtt_params, markov_p11), 1},
-        {"markov_p21", offsetof(mtt_params, markov_p21), 1},
-        {"existence_init", offsetof(mtt_params, existence_init), 1},
-        {"confirm_threshold", offsetof(mtt_params, confirm_threshold), 1},
-        {"terminate_threshold", offsetof(mtt_params, terminate_threshold), 1},
-        {"merge_threshold", offsetof(mtt_params, merge_threshold), 1},
-        {"vmax", offsetof(mtt_params, vmax), 1},
-        {"intensity_f1", offsetof(mtt_params, intensity_f1), 3},
-        {"intensity_f2", offsetof(mtt_params, intensity_f2), 3},
-        {"intensity_blend", offsetof(mtt_params, intensity_blend), 2},
-    };
-    size_t i;
-    int k;
-    double v;
-    if (n < 3) return -1;
-    if (strcmp(w[1], "association") == 0)
-        return mtt_assoc_parse(w[2], &p->association) == MTT_OK ? 0 : -1;
-    if (strcmp(w[1], "init_gate") == 0) {
-        if (strcmp(w[2], "vmax") == 0) p->init_gate = MTT_INIT_GATE_VMAX;
-        else if (strcmp(w[2], "intensity") == 0) p->init_gate = MTT_INIT_GATE_INTENSITY;
-        else return -1;
-        return 0;
-    }
-    if (strcmp(w[1], "initiate") == 0) {
-        if (!num(w[2], &v)) return -1;
-        p->initiate = v != 0.0;
-        return 0;
-    }
-    for (i = 0; i < sizeof reals / sizeof reals[0]; ++i) {
-        if (strcmp(w[1], reals[i].name) != 0) continue;
-        if (n != 2 + reals[i].count) return -1;
-        for (k = 0; k < reals[i].count; ++k) {
-            if (!num(w[2 + k], &v)) return -1;
-            ((mtt_real *)(void *)((char *)p + reals[i].off))[k] = (mtt_real)v;
+    const mtt_param_info *inf;
+    double v[8];
+    size_t i, k, cnt;
+    if (n < 3 || mtt_params_find(w[1], &i) != MTT_OK || mtt_params_info(i, &inf) != MTT_OK) return -1;
+    cnt = inf->count;
+    if ((size_t)(n - 2) != cnt || cnt > sizeof v / sizeof v[0]) return -1;
+    if (inf->type == MTT_PARAM_ENUM) {
+        for (k = 0; k < inf->n_names && strcmp(inf->names[k], w[2]) != 0; ++k) {
         }
-        return 0;
+        if (k == inf->n_names) return -1;
+        v[0] = (double)k;
+    } else {
+        for (k = 0; k < cnt; ++k)
+            if (!num(w[2 + k], &v[k])) return -1;
     }
-    return -1;
+    return mtt_params_set(p, w[1], v, cnt) == MTT_OK ? 0 : -1;
 }
 
 static void print_tracks(long frame)
