@@ -4,6 +4,7 @@
 #   ./scripts/dev.sh deps    install what the build needs (idempotent)
 #   ./scripts/dev.sh test    deps, then the workflows test-float, test-double,
 #                          test-float-small (configure + build + ctest each),
+#                          then the Python package (python-package below),
 #                          then scripts/ci-firmware.sh (cross builds, qemu,
 #                          static analysis; each check one test), then
 #                          scripts/ci-robustness.sh (ASan+UBSan, fuzz, soak);
@@ -11,6 +12,11 @@
 #   ./scripts/dev.sh demo    deps, build host-float, 50 Monte Carlo runs of
 #                          scenarios/crossing3.json (lm-ihpda beside lm-ipda):
 #                          metric tables on stdout, plots in out/demo
+#   ./scripts/dev.sh python-package
+#                          pip install .[stonesoup,test] into the venv
+#                          build/pyvenv (PyPI only, pip's cache reused) and
+#                          pytest python/tests/package against the mtt-track of
+#                          build/host-float; ends with "N passed, M failed"
 #   ./scripts/dev.sh --help
 #
 # Works from any directory.  deps needs root for apt (as on CI); elsewhere it
@@ -135,6 +141,63 @@ run_counted() {
   fi
 }
 
+# ---------------------------------------------------------------- python package
+# The package (pyproject.toml) in a venv under build/, so the system Python
+# is not touched: pip install .[stonesoup,test] (scikit-build-core builds the
+# library and mtt._core; pip's cache keeps the second run short), then
+# pytest python/tests/package.  MTT_REQUIRE_ALL=1: a missing mtt-track or
+# Stone Soup fails the tests instead of skipping them.  Adds pytest's counts
+# to passed/failed (a failed install counts as one failure).
+PY_VENV="$ROOT/build/pyvenv"
+run_python_package() {
+  local rc=0 line n
+  say "=== python package: venv $PY_VENV, pip install .[stonesoup,test], pytest"
+  if [[ ! -x "$PY_VENV/bin/python" ]] && ! python3 -m venv "$PY_VENV"; then
+    if is_root && command -v apt-get >/dev/null 2>&1; then
+      apt_update_once
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null || true
+    fi
+    rm -rf "$PY_VENV"
+    python3 -m venv "$PY_VENV" || { say "cannot create a venv"; failed=$((failed + 1)); return 0; }
+  fi
+  if ! PIP_DISABLE_PIP_VERSION_CHECK=1 "$PY_VENV/bin/python" -m pip install --quiet \
+      -C "build-dir=$ROOT/build/pip/{wheel_tag}" "$ROOT[stonesoup,test]"; then
+    say "pip install of the package failed"
+    failed=$((failed + 1))
+    return 0
+  fi
+  # From build/ so that python/ (the sources, without the compiled module)
+  # is not on sys.path: the tests import the installed package.
+  (cd "$ROOT/build" && MTT_REQUIRE_ALL=1 MTT_TRACK="$ROOT/build/host-float/cli/mtt-track" \
+     "$PY_VENV/bin/python" -m pytest -q -p no:cacheprovider "$ROOT/python/tests/package") 2>&1 \
+    | tee "$log" || rc=${PIPESTATUS[0]}
+  # pytest's last line: "3 failed, 77 passed, 1 error in 9.1s" (any order)
+  line="$(grep -E '[0-9]+ (passed|failed|errors?)' "$log" | tail -n1 || true)"
+  for n in $(grep -oE '[0-9]+ passed' <<<"$line" | grep -oE '^[0-9]+' || true); do
+    passed=$((passed + n))
+  done
+  local bad=0
+  for n in $(grep -oE '[0-9]+ (failed|errors?)' <<<"$line" | grep -oE '^[0-9]+' || true); do
+    bad=$((bad + n))
+  done
+  failed=$((failed + bad))
+  if ((rc != 0)) && ((bad == 0)); then
+    failed=$((failed + 1))  # pytest failed without counting (collection, no tests)
+  fi
+}
+
+cmd_python_package() {
+  local passed=0 failed=0 log
+  log="$(mktemp "${TMPDIR:-/tmp}/mtt-dev-py.XXXXXX")"
+  # shellcheck disable=SC2064
+  trap "rm -f '$log'" EXIT
+  [[ -x "$ROOT/build/host-float/cli/mtt-track" ]] || {
+    cmake --preset host-float >/dev/null && cmake --build --preset host-float -j2 >/dev/null; }
+  run_python_package
+  echo "$passed passed, $failed failed"
+  ((failed == 0))
+}
+
 # ---------------------------------------------------------------- test
 cmd_test() {
   cmd_deps
@@ -165,6 +228,8 @@ cmd_test() {
       return "$rc"
     fi
   done
+  # The Python package against the mtt-track of test-float.
+  run_python_package
   # The firmware proof: cross builds, qemu, static analysis.
   run_counted ci-firmware "$ROOT/scripts/ci-firmware.sh"
   # Robustness: unit tests under ASan+UBSan, fuzz smoke runs, soak.
@@ -191,6 +256,7 @@ case "${1:-}" in
   deps) cmd_deps ;;
   test) cmd_test ;;
   demo) cmd_demo ;;
+  python-package) cmd_python_package ;;
   -h|--help|help) usage ;;
   "") usage; exit 2 ;;
   *) printf 'dev.sh: unknown command %s\n\n' "$1" >&2; usage >&2; exit 2 ;;

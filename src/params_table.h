@@ -44,53 +44,53 @@ extern const char *const mtt_init_gate_names[2];
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
-         "association mode (docs/ALGORITHMS.md describes each)")                                    \
+         "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
     REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                            \
-         "power spectral density Sw of the constant-velocity model's white-noise acceleration")  \
+         "power spectral density Sw of the constant-velocity model's white-noise acceleration, length²/time³ (§2)")  \
     REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL,                                    \
-         "[sx, sy]: measurement noise standard deviations")                                       \
-    REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, "probability of detection")                   \
+         "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²)")                                       \
+    REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, "probability of detection PD")                   \
     REAL("pg", pg, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                                   \
-         "gate probability; the chi-square gate threshold follows from it")                       \
+         "gate probability PG; the gate threshold is γ = −2 ln(1 − PG) (§4)")                       \
     REAL("clutter_density", clutter_density, 1, 0.0, MTT_REAL_MAX, 0, NULL,                             \
-         "clutter measurements per unit area; 0 estimates it per track")                          \
+         "clutter density λ per unit area; 0 estimates it per track (§5.2)")                          \
     REAL("snr_rho", snr_rho, 1, 0.0, 1e6, 0, NULL,                                             \
-         "amplitude model rho (target amplitude mean 1+rho, clutter 1); 0 ignores amplitude")     \
+         "intensity parameter ρ: target amplitude mean 1 + ρ, clutter mean 1; 0 ignores amplitude (§7.1)")     \
     REAL("markov_p11", markov_p11, 1, 0.0, 1.0, 0, NULL,                                         \
-         "probability that an existing target keeps existing from one scan to the next")          \
+         "probability that an existing target still exists at the next scan (§11)")          \
     REAL("markov_p21", markov_p21, 1, 0.0, 1.0, 0, NULL,                                         \
-         "probability that a target that does not exist appears")                                 \
+         "probability that a target that does not exist appears at the next scan (§11)")                                 \
     REAL("existence_init", existence_init, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,           \
-         "existence probability of a new track")                                                  \
+         "existence probability of a new track (§12.1)")                                                  \
     REAL("confirm_threshold", confirm_threshold, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                  \
-         "existence at which a track is confirmed")                                               \
+         "a track with existence >= this is confirmed (§12.4)")                                               \
     REAL("terminate_threshold", terminate_threshold, 1, 0.0, 1.0,                                \
          PF_OPEN_HI | PF_BELOW_CONFIRM, "below confirm_threshold",                                \
-         "existence below which a track is deleted; 0 never deletes")                             \
+         "a track with existence < this is deleted; 0 never deletes (§12.4)")                             \
     REAL("merge_threshold", merge_threshold, 1, 0.0, MTT_REAL_MAX, 0, NULL,                             \
-         "chi-square threshold of the track merging test; 0 never merges")                        \
+         "chi-square threshold of the track-merging test; 0 never merges (§12.3)")                        \
     FLAG("initiate", initiate,                                                                    \
-         "start tracks from unused measurements; false only updates seeded tracks")               \
+         "true starts tracks from unused measurements; false only updates existing (seeded) tracks")               \
     REAL("vmax", vmax, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                                          \
-         "maximum target speed of the two-point initial velocity gate")                           \
+         "largest target speed, length/time: the velocity gate of two-point initiation (§12.1)")                           \
     ENUM("init_gate", init_gate, mtt_init_gate, 2, mtt_init_gate_names,                           \
-         "initial gate: vmax, or intensity (the amplitude-based gate f(I))")                      \
+         "initiation gate: the vmax circle, or the amplitude-based gate f(I) (§12.2)")                      \
     REAL("intensity_gate.f1", intensity_f1, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL,                      \
-         "[a2, a1, a0] of f1(I) = a2 I^2 + a1 I + a0, the initial gate's sigma below I_lo")       \
+         "coefficients [a2, a1, a0] of f1(I) = a2·I² + a1·I + a0, the initial gate's σ below I_lo (§12.2)")       \
     REAL("intensity_gate.f2", intensity_f2, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL,                      \
-         "[a2, a1, a0] of f2(I), the initial gate's sigma above I_hi")                            \
+         "coefficients [a2, a1, a0] of f2(I), the initial gate's σ above I_hi (§12.2)")                            \
     REAL("intensity_gate.blend", intensity_blend, 2, -MTT_REAL_MAX, MTT_REAL_MAX, PF_ASCENDING,           \
-         "increasing (I_lo < I_hi)", "[I_lo, I_hi]: intensities between which f1 blends into f2") \
+         "increasing (I_lo < I_hi)", "[I_lo, I_hi]: f = f1 below I_lo, f2 above I_hi, a linear blend between (§12.2)") \
     REAL("jpda_bias", jpda_bias, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                         \
-         "bias B of the JPDA family; 0 uses lambda (1 - PD PG) / PD")                             \
+         "B of the JPDA family except jipda; 0 uses λ(1 − PD·PG)/PD (§13)")                             \
     REAL("jpda_star_threshold", jpda_star_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL,              \
-         "JPDA* pruning probability")                                                             \
+         "pruning probability of JPDA*; 0 is pure JPDA* (§13.6)")                                                             \
     REAL("nnjpda_threshold", nnjpda_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                    \
-         "NNJPDA minimum association probability")                                                \
+         "smallest β that NNJPDA assigns (§13.5)")                                                \
     REAL("adaptive_jpda_distance", adaptive_jpda_distance, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,      \
-         "adaptive JPDA: distance in measurement sigmas at which tracks overlap")                 \
+         "adaptive JPDA: tracks closer than this many measurement sigmas overlap (§13.7)")                 \
     REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL,                   \
-         "adaptive JPDA: gate shrink factor of overlapping tracks")
+         "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
 #define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,

@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""Monte Carlo runs of a scenario through mtt-track, with the papers' tables and plots.
+"""Monte Carlo runs of a scenario through the mtt tracker, with the papers' tables and plots.
 
     PYTHONPATH=python python3 -m mtt_sim.mc --scenario scenarios/crossing3.json --runs 500 --out out/crossing3 \
         --assoc lm-ipda lm-ihpda
     PYTHONPATH=python python3 -m mtt_sim.mc --scenario scenarios/formations.json --runs 10 --out out/formations
 
 Run r uses seed SEED0 + r in every mode (identical detections across modes).
+The tracker runs in-process through the mtt package when it is installed
+(`pip install .`), else as one mtt-track process per run; --tracker forces
+either (the scores are the same, in-process is faster: docs/PYTHON.md).
 Prints the tables to stdout (also OUT/report.txt), writes OUT/summary.json,
 OUT/*.png and the files of run 0 under OUT/run0/.  Progress goes to stderr.
 Exit status: 0 if every run succeeded, 1 if some failed, 2 on bad arguments.
@@ -27,6 +30,9 @@ def main(argv=None):
     ap.add_argument("--out", required=True, help="output directory")
     ap.add_argument("--mtt-track", dest="mtt_track",
                     help="mtt-track binary (default: $MTT_TRACK, then build/host-float/cli/mtt-track)")
+    ap.add_argument("--tracker", choices=("auto", "in-process", "mtt-track"), default="auto",
+                    help="auto (default): the mtt package in-process when it is installed, else "
+                         "mtt-track; in-process / mtt-track: that one only")
     ap.add_argument("--assoc", nargs="+", metavar="MODE",
                     help="association mode(s) to compare (default: the scenario's tracker.association)")
     ap.add_argument("--seed0", type=int, default=0, help="seed of run 0 (default 0)")
@@ -46,10 +52,14 @@ def main(argv=None):
     except (scenario.ScenarioError, OSError) as e:
         print(f"mc.py: {e}", file=sys.stderr)
         return 2
-    exe = runner.find_mtt_track(a.mtt_track)
+    exe = runner.find_tracker(a.tracker, a.mtt_track)
     if exe is None:
-        print("mc.py: no mtt-track binary (give --mtt-track, set MTT_TRACK, or build build/host-float)",
-              file=sys.stderr)
+        if a.tracker == "in-process":
+            print("mc.py: --tracker in-process: the mtt package is not installed (pip install .)",
+                  file=sys.stderr)
+        else:
+            print("mc.py: no mtt-track binary (give --mtt-track, set MTT_TRACK, build build/host-float, "
+                  "or pip install . for the in-process tracker)", file=sys.stderr)
         return 2
     os.makedirs(a.out, exist_ok=True)
     mc = runner.monte_carlo(scn, modes, a.runs, exe, a.jobs, a.seed0,

@@ -1,4 +1,4 @@
-"""Monte Carlo runner: generate, run mtt-track, score, aggregate.
+"""Monte Carlo runner: generate, run the tracker, score, aggregate.
 
 Run r of mode m uses seed ``seed0 + r`` for every mode, so the modes are
 compared on identical detections (common random numbers), as S4 compares
@@ -10,6 +10,13 @@ each one generates its run in a private temporary directory, calls
 timing the call with a monotonic clock, reads T and scores it with
 ``metrics.score_run``.  The files of run 0 are kept under ``OUT/run0/`` for
 the scene plot and for replotting.
+
+The tracker runs in-process through the ``mtt`` package (``pip install .``)
+when it is importable (``tracker="auto"``, or ``"in-process"`` to insist),
+else as one ``mtt-track`` process per run (``"mtt-track"`` forces it).  The
+in-process path hands the tracker the numbers exactly as mtt-track would read
+them from the detections file and takes the tracks' numbers as mtt-track
+prints them, so both paths give the same scores (python/tests/package).
 """
 
 from __future__ import annotations
@@ -28,7 +35,8 @@ import numpy as np
 from . import csvio, generate, metrics
 from . import scenario as scnmod
 
-__all__ = ["find_mtt_track", "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate"]
+__all__ = ["find_mtt_track", "find_tracker", "in_process_available", "track_in_process", "IN_PROCESS",
+           "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate"]
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "cli", "mtt-track")
@@ -44,6 +52,101 @@ def find_mtt_track(explicit: str | None = None) -> str | None:
         if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
             return os.path.abspath(cand)
     return None
+
+
+IN_PROCESS = "in-process"
+
+
+def in_process_available() -> bool:
+    """True when the mtt package (with its compiled module) can be imported."""
+    try:
+        import mtt  # noqa: F401
+        from mtt import _core  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def find_tracker(choice: str = "auto", explicit: str | None = None) -> str | None:
+    """The tracker to run: IN_PROCESS, or the path of mtt-track, or None.
+
+    "in-process": the mtt package (None if it does not import); "mtt-track":
+    find_mtt_track(explicit); "auto": an explicitly given binary, else the
+    package when it imports, else find_mtt_track().
+    """
+    if choice not in ("auto", IN_PROCESS, "mtt-track"):
+        raise ValueError(f"tracker must be auto, in-process or mtt-track, not {choice!r}")
+    if choice == IN_PROCESS or (choice == "auto" and explicit is None):
+        if in_process_available():
+            return IN_PROCESS
+        if choice == IN_PROCESS:
+            return None
+    return find_mtt_track(explicit)
+
+
+def _as_text(v, digits: int) -> np.ndarray:
+    """v as it reads back from text written with %.<digits>g (NaN stays NaN).
+    One format of the whole column, then one parse (the fastest way found)."""
+    v = np.asarray(v, float).ravel()
+    if len(v) == 0:
+        return np.zeros(0)
+    return np.array(((f"%.{digits}g," * len(v)) % tuple(v.tolist())).split(",")[:-1], dtype=float)
+
+
+def track_in_process(run: dict, printed=("x", "y")) -> tuple[dict, float]:
+    """Track a generated run with mtt.Tracker as mtt-track would track its files.
+
+    The detections are the numbers of csvio.format_det's text (x, y, time
+    %.10g, amplitude %.6g), each scan at its time minus the first scan's, in
+    the file's row order.  The track columns named in ``printed`` (those that
+    metrics.score_run reads, by default) are the numbers of mtt-track's text
+    (%.9g of a float build, %.17g of a double one), the others the tracker's
+    values (equal to the text to its printed digits).  Returns (tracks table
+    as csvio.read_tracks gives it, seconds spent tracking)."""
+    import mtt
+    from mtt.tracker import TABLE_COLUMNS
+
+    det = run["det"]
+    times = _as_text(run["times"], 10)
+    order = np.argsort(np.asarray(det["scan"], int), kind="stable")
+    scans = np.asarray(det["scan"], int)[order]
+    z = np.column_stack([_as_text(det["x"], 10)[order], _as_text(det["y"], 10)[order],
+                         _as_text(det["amp"], 6)[order]])
+    bounds = np.searchsorted(scans, np.arange(len(times) + 1))
+    tables, scan_of = [], []
+    t_start = time.perf_counter()
+    try:
+        trk = mtt.Tracker(run["settings"], interval=times[1] - times[0] if len(times) > 1 else None)
+        for k in range(len(times)):
+            trk.update(times[k] - times[0], z[bounds[k]:bounds[k + 1]])
+            tab = trk.track_table()
+            tables.append(tab)
+            scan_of.append(np.full(len(tab), k, int))
+    except ValueError as e:
+        raise TrackerError(f"mtt.Tracker: {e}") from None
+    elapsed = time.perf_counter() - t_start
+    tab = np.concatenate(tables) if tables else np.zeros((0, len(TABLE_COLUMNS)))
+    col = {name: tab[:, i] for i, name in enumerate(TABLE_COLUMNS)}
+    digits = 9 if mtt.REAL == "float" else 17
+    out = {"scan": np.concatenate(scan_of) if scan_of else np.zeros(0, int),
+           "track": col["id"].astype(int), "confirmed": col["confirmed"] != 0.0}
+    out["time"] = times[out["scan"]]
+    for k, c in (("x", "x"), ("y", "y"), ("vx", "vx"), ("vy", "vy"), ("existence", "existence"),
+                 ("pxx", "P00"), ("pxy", "P01"), ("pyy", "P11")):
+        out[k] = _as_text(col[c], digits) if k in printed else col[c].copy()
+    return out, elapsed
+
+
+def _tracks_text(tracks: dict) -> str:
+    """A tracks CSV of a tracks table (the files kept of run 0)."""
+    lines = [csvio.TRACKS_HEADER]
+    for i in range(len(tracks["scan"])):
+        lines.append(",".join([str(int(tracks["scan"][i])), repr(float(tracks["time"][i])),
+                               str(int(tracks["track"][i])),
+                               "confirmed" if tracks["confirmed"][i] else "tentative"]
+                              + [repr(float(tracks[k][i])) for k in
+                                 ("x", "y", "vx", "vy", "existence", "pxx", "pxy", "pyy")]))
+    return "\n".join(lines) + "\n"
 
 
 def run_tracker(exe: str, settings: str, det: str, tracks: str, timeout: float = 600.0) -> float:
@@ -65,6 +168,26 @@ def run_tracker(exe: str, settings: str, det: str, tracks: str, timeout: float =
     return elapsed
 
 
+def _track_process(run: dict, mode: str, exe: str, keep_dir: str | None, timeout: float):
+    """One mtt-track process on the run's files; returns (tracks table, wall seconds)."""
+    with tempfile.TemporaryDirectory(prefix="mtt_mc_") as td:
+        paths = generate.write_run(run, td, "run")
+        tpath = os.path.join(td, "run.tracks.csv")
+        elapsed = run_tracker(exe, paths["settings"], paths["det"], tpath, timeout)
+        try:
+            tracks = csvio.read_tracks(tpath)
+        except csvio.FormatError as e:
+            raise TrackerError(f"bad tracks file: {e}") from None
+        if keep_dir:
+            os.makedirs(keep_dir, exist_ok=True)
+            name = run["name"]
+            shutil.copyfile(paths["det"], os.path.join(keep_dir, f"{name}.det.csv"))
+            shutil.copyfile(paths["truth"], os.path.join(keep_dir, f"{name}.truth.csv"))
+            shutil.copyfile(paths["settings"], os.path.join(keep_dir, f"{name}.{mode}.settings.json"))
+            shutil.copyfile(tpath, os.path.join(keep_dir, f"{name}.{mode}.tracks.csv"))
+    return tracks, elapsed
+
+
 def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir: str | None = None,
             timeout: float = 600.0) -> dict:
     """Generate, track and score one run; never raises for tracker failures."""
@@ -72,21 +195,18 @@ def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir:
     try:
         run = generate.generate(scn, seed, mode)
         nscan = len(run["times"])
-        with tempfile.TemporaryDirectory(prefix="mtt_mc_") as td:
-            paths = generate.write_run(run, td, "run")
-            tpath = os.path.join(td, "run.tracks.csv")
-            elapsed = run_tracker(exe, paths["settings"], paths["det"], tpath, timeout)
-            try:
-                tracks = csvio.read_tracks(tpath)
-            except csvio.FormatError as e:
-                raise TrackerError(f"bad tracks file: {e}") from None
+        if exe == IN_PROCESS:
+            # run 0 is kept: every column as mtt-track would print it
+            tracks, elapsed = track_in_process(run, csvio.TRACKS_HEADER.split(",") if keep_dir else ("x", "y"))
             if keep_dir:
-                os.makedirs(keep_dir, exist_ok=True)
                 name = run["name"]
-                shutil.copyfile(paths["det"], os.path.join(keep_dir, f"{name}.det.csv"))
-                shutil.copyfile(paths["truth"], os.path.join(keep_dir, f"{name}.truth.csv"))
-                shutil.copyfile(paths["settings"], os.path.join(keep_dir, f"{name}.{mode}.settings.json"))
-                shutil.copyfile(tpath, os.path.join(keep_dir, f"{name}.{mode}.tracks.csv"))
+                generate.write_run(run, keep_dir, name)
+                os.replace(os.path.join(keep_dir, f"{name}.settings.json"),
+                           os.path.join(keep_dir, f"{name}.{mode}.settings.json"))
+                with open(os.path.join(keep_dir, f"{name}.{mode}.tracks.csv"), "w", encoding="utf-8") as f:
+                    f.write(_tracks_text(tracks))
+        else:
+            tracks, elapsed = _track_process(run, mode, exe, keep_dir, timeout)
         if len(tracks["scan"]) and (tracks["scan"].min() < 0 or tracks["scan"].max() >= nscan):
             raise TrackerError("tracks file has a scan outside the detections' scans")
         met = scn.get("metrics", {})

@@ -1,0 +1,146 @@
+"""mtt.stonesoup: the mtt tracker as a Stone Soup tracker (``pip install mtt[stonesoup]``).
+
+    from mtt.stonesoup import MttTracker
+    tracker = MttTracker(detector=reader, settings={"pd": 0.9, "clutter_density": 1e-4})
+    for time, tracks in tracker:            # confirmed tracks
+        ...
+
+``MttTracker`` takes Stone Soup ``Detection``s whose ``state_vector`` is the
+2-D position ``[x, y]`` (``metadata["amplitude"]``, if present, is the
+detection's amplitude) and gives Stone Soup ``Track``s of ``GaussianState``s
+in Stone Soup's constant-velocity order ``[x, vx, y, vy]`` (the covariance
+permuted the same way).  ``track.id`` is the mtt track id as a string, and
+``track.metadata`` holds ``existence``, ``confirmed`` and ``age`` of the
+last scan.  The same ``Track`` object grows by one state per scan for as
+long as mtt keeps the track.  Times are the scans' timestamps in seconds
+since the first scan's timestamp (a timestamp may also be a number).
+"""
+
+from __future__ import annotations
+
+import datetime
+import math
+
+import numpy as np
+
+try:
+    from stonesoup.base import Property
+    from stonesoup.reader.base import DetectionReader
+    from stonesoup.tracker.base import Tracker as _SSTracker
+    from stonesoup.types.state import GaussianState
+    from stonesoup.types.track import Track as _SSTrack
+except ImportError as e:  # the optional extra
+    raise ImportError(f"mtt.stonesoup needs Stone Soup: pip install 'mtt[stonesoup]' ({e})") from e
+
+from .tracker import Tracker
+
+__all__ = ["MttTracker", "CV_ORDER"]
+
+#: mtt's state order (x, y, vx, vy) indexed into Stone Soup's CV order (x, vx, y, vy).
+CV_ORDER = (0, 2, 1, 3)
+
+
+class MttTracker(_SSTracker):
+    """Stone Soup tracker running mtt's LM-IHPDA (or any mode of the settings).
+
+    Iterate over it (with a ``detector``) or call :meth:`update_tracker` per
+    scan; both return ``(timestamp, tracks)``, the set of confirmed tracks.
+    """
+
+    detector: DetectionReader = Property(
+        default=None, doc="Detection reader (or any iterable) giving (timestamp, Detections) per "
+                          "scan; None when update_tracker is called directly")
+    settings: object = Property(default=None, doc="mtt settings: a dict with the keys of "
+                                "docs/FORMATS.md, a path to a settings JSON file, or None")
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.detector_iter = None
+        #: the mtt.Tracker underneath (its stats, its numpy tracks)
+        self.mtt = Tracker(self.settings)
+        self._t0 = None
+        self._live: dict[int, _SSTrack] = {}
+
+    # ------------------------------------------------------------ Stone Soup interface
+
+    @property
+    def tracks(self) -> set:
+        """Confirmed tracks after the last scan."""
+        return {t for t in self._live.values() if t.metadata.get("confirmed")}
+
+    @property
+    def tentative_tracks(self) -> set:
+        """Tentative (not yet confirmed) tracks after the last scan."""
+        return {t for t in self._live.values() if not t.metadata.get("confirmed")}
+
+    def __iter__(self):
+        if self.detector is None:
+            raise AttributeError("Detector has not been set. A detector attribute is required to "
+                                 "iterate over a tracker.")
+        if self.detector_iter is None:
+            self.detector_iter = iter(self.detector)
+        return self
+
+    def __next__(self):
+        timestamp, detections = next(self.detector_iter)
+        return self.update_tracker(timestamp, detections)
+
+    def update_tracker(self, timestamp, detections):
+        """Run one scan; returns (timestamp, confirmed tracks).  ``detections``:
+        any iterable of Detections, given to mtt in its iteration order (a list
+        keeps a file's order; mtt's tie rules look at the order).  Raises ValueError
+        (and changes nothing) for a timestamp not later than the last one or a
+        detection that is not a 2-D position."""
+        seconds = self._seconds(timestamp)
+        z = self._matrix(detections)
+        live = self.mtt.step(seconds, z)
+        if self._t0 is None:
+            self._t0 = timestamp
+        tracks = {}
+        for t in live:
+            sst = self._live.get(t.id)
+            if sst is None:
+                sst = _SSTrack(id=str(t.id))
+            order = list(CV_ORDER)
+            state = GaussianState(t.state[order].reshape(4, 1),
+                                  t.covar[np.ix_(order, order)], timestamp=timestamp)
+            sst.append(state)
+            sst.metadata.update(existence=t.existence, confirmed=t.confirmed, age=t.age)
+            tracks[t.id] = sst
+        self._live = tracks
+        return timestamp, self.tracks
+
+    # ------------------------------------------------------------ conversions
+
+    def _seconds(self, timestamp) -> float:
+        """Seconds since the first scan's timestamp (a datetime or a number)."""
+        t0 = timestamp if self._t0 is None else self._t0
+        if isinstance(timestamp, datetime.datetime) or isinstance(t0, datetime.datetime):
+            if not (isinstance(timestamp, datetime.datetime) and isinstance(t0, datetime.datetime)):
+                raise ValueError(f"timestamp {timestamp!r} and the first scan's {t0!r} must both be "
+                                 f"datetimes or both numbers")
+            return (timestamp - t0).total_seconds()
+        try:
+            return float(timestamp) - float(t0)
+        except (TypeError, ValueError):
+            raise ValueError(f"timestamp must be a datetime or a number, got {timestamp!r}") from None
+
+    @staticmethod
+    def _matrix(detections) -> np.ndarray:
+        rows = []
+        for d in detections:
+            sv = np.asarray(getattr(d, "state_vector", None), dtype=float).ravel()
+            if sv.shape != (2,):
+                raise ValueError(f"a detection's state_vector must be [x, y] (2-D position), "
+                                 f"got shape {sv.shape}")
+            md = getattr(d, "metadata", None) or {}
+            a = md.get("amplitude", None)
+            if a is None or (isinstance(a, str) and a.strip() == ""):
+                amp = math.nan
+            else:
+                try:
+                    amp = float(a)
+                except (TypeError, ValueError):
+                    raise ValueError(f"metadata['amplitude'] must be a number, got {a!r}") from None
+            rows.append((sv[0], sv[1], amp))
+        return np.array(rows, dtype=float).reshape(-1, 3)

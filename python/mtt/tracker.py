@@ -1,0 +1,230 @@
+"""mtt.Tracker and mtt.Track: the C tracker (include/mtt/mtt.h) with numpy in and out.
+
+    import numpy as np, mtt
+    trk = mtt.Tracker({"pd": 0.9, "clutter_density": 1e-4})
+    for t, z in enumerate(scans):           # z: (n, 2) [x, y] or (n, 3) [x, y, amplitude]
+        for track in trk.step(float(t), z):
+            print(track.id, track.confirmed, track.state)
+
+Every error raises and changes nothing: the input is validated before the C
+library sees it, and the library itself leaves the tracker unchanged on error.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+
+from . import _core
+from .settings import SettingsError, apply_settings, load_settings
+
+__all__ = ["Tracker", "Track", "SettingsError", "TABLE_COLUMNS"]
+
+#: Columns of Tracker.track_table(): one row per live track.
+TABLE_COLUMNS = ("id", "confirmed", "x", "y", "vx", "vy", "existence", "age", "detection",
+                 *(f"P{i}{j}" for i in range(4) for j in range(4)))
+
+
+class Track:
+    """One live track after a step (a snapshot: later steps do not change it).
+
+    Attributes: ``id`` (int, never reused), ``confirmed`` (bool), ``state``
+    (numpy (4,): x, y, vx, vy), ``covar`` (numpy (4, 4)), ``existence``
+    (float in [0, 1]), ``age`` (scans since birth), ``detection`` (index of
+    the detection of this step that updated it, or -1), and
+    ``model_probabilities``: None (the constant-velocity model alone; with an
+    IMM motion model it will hold the model probabilities).
+    """
+
+    __slots__ = ("id", "confirmed", "state", "covar", "existence", "age", "detection",
+                 "model_probabilities")
+
+    def __init__(self, id, confirmed, state, covar, existence, age, detection=-1,
+                 model_probabilities=None):
+        self.id = int(id)
+        self.confirmed = bool(confirmed)
+        self.state = state
+        self.covar = covar
+        self.existence = float(existence)
+        self.age = int(age)
+        self.detection = int(detection)
+        self.model_probabilities = model_probabilities
+
+    @classmethod
+    def _from_row(cls, r) -> "Track":
+        """A row of Tracker.track_table()."""
+        state = r[2:6].copy()
+        covar = r[9:25].reshape(4, 4).copy()
+        state.flags.writeable = False
+        covar.flags.writeable = False
+        return cls(r[0], r[1] != 0.0, state, covar, r[6], r[7], r[8])
+
+    def __repr__(self) -> str:
+        x, y, vx, vy = (float(v) for v in self.state)
+        return (f"Track(id={self.id}, {'confirmed' if self.confirmed else 'tentative'}, "
+                f"x={x:.6g}, y={y:.6g}, vx={vx:.6g}, vy={vy:.6g}, existence={self.existence:.4g}, "
+                f"age={self.age})")
+
+
+def _detections(detections) -> np.ndarray:
+    """(n, 2) or (n, 3) array-like into validated (n, 3) float64 rows, NaN = no amplitude."""
+    if detections is None:
+        return np.zeros((0, 3))
+    try:
+        z = np.asarray(detections, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"detections must be numbers: {e}") from None
+    if z.size == 0 and z.ndim <= 2:
+        return np.zeros((0, 3))
+    if z.ndim != 2 or z.shape[1] not in (2, 3):
+        raise ValueError(f"detections must have shape (n, 2) [x, y] or (n, 3) [x, y, amplitude], "
+                         f"got {z.shape}")
+    if z.shape[1] == 2:
+        z = np.column_stack([z, np.full(len(z), np.nan)])
+    xy = z[:, :2]
+    bad = ~np.isfinite(xy) | (np.abs(xy) > _core.REAL_MAX)
+    if bad.any():
+        i, j = np.argwhere(bad)[0]
+        raise ValueError(f"detection {i}: {'xy'[j]} = {z[i, j]!r} is not a finite number that "
+                         f"mtt_real ({_core.REAL}) holds")
+    a = z[:, 2]
+    bad = ~np.isnan(a) & ~((a >= 0) & (a <= _core.REAL_MAX))
+    if bad.any():
+        i = int(np.argwhere(bad)[0][0])
+        raise ValueError(f"detection {i}: amplitude = {a[i]!r} must be >= 0 and finite "
+                         f"(NaN: unknown)")
+    return np.ascontiguousarray(z)
+
+
+class Tracker:
+    """A multi-target tracker: ``Tracker(settings=None)``.
+
+    ``settings``: a dict with the keys of docs/FORMATS.md ("Settings"), a path
+    to a settings JSON file, or None for the defaults.  ``initial_tracks``
+    entries start as confirmed tracks (identities 0, 1, ...); one without "P"
+    gets the two-point covariance of the scan interval ``interval`` (keyword,
+    default 1: mtt-track uses its detections' first scan interval).  Bad
+    settings raise ``ValueError`` (:class:`mtt.SettingsError`) naming the key
+    as mtt-track does.
+    """
+
+    def __init__(self, settings=None, *, interval: float | None = None):
+        if settings is None:
+            settings, source = {}, "settings"
+        elif isinstance(settings, (str, bytes, os.PathLike)):
+            source = os.fsdecode(settings)
+            settings = load_settings(source)
+        elif isinstance(settings, dict):
+            source = "settings"
+        else:
+            raise TypeError(f"settings must be a dict, a path or None, not {type(settings).__name__}")
+        core = _core.Tracker()
+        seeds = apply_settings(core, settings, source)
+        st = core.init()
+        if st != 0:  # mtt_params_check passed: not the settings' fault
+            raise RuntimeError(f"mtt_tracker_init failed: {_core.status_text(st)}")
+        self._core = core
+        self._time = None
+        if seeds:
+            self._add_seeds(seeds, source, 1.0 if interval is None else interval)
+        self._tracks = None
+
+    def _add_seeds(self, seeds, source, interval):
+        st, P2 = _core.two_point_cov(*self.param("meas_sigma"), float(interval))
+        if st != 0:
+            raise ValueError(f"two-point covariance for the initial tracks failed (scan interval "
+                             f"{interval:g}): {_core.status_text(st)}")
+        for i, s in enumerate(seeds):
+            st, _ = self._core.add_track(s.x, s.P if s.P is not None else P2)
+            if st == 0:
+                continue
+            if st == _core.ERR_VALUE:
+                key = f"initial_tracks[{i}]" + (".P" if s.P is not None else "")
+                msg = ("must be a symmetric positive definite covariance" if s.P is not None
+                       else "rejected: state not finite")
+            elif st == _core.ERR_FULL:
+                key = f"initial_tracks[{i}]"
+                msg = f"too many initial tracks: the track table holds {_core.MAX_TRACKS} (MTT_MAX_TRACKS)"
+            else:
+                raise RuntimeError(f"mtt_tracker_add_track failed: {_core.status_text(st)}")
+            raise SettingsError(source, key, msg)
+
+    # ------------------------------------------------------------ queries
+
+    def param(self, key: str):
+        """The value of a settings key as the tracker holds it (tuple of floats;
+        an enum as its index, a boolean as 0 / 1)."""
+        from .settings import params_table
+        row = next((r for r in params_table() if r.key == key), None)
+        if row is None:
+            raise KeyError(key)
+        _, v = self._core.get_param(key, row.count)
+        return v
+
+    @property
+    def tracks(self) -> list:
+        """The live tracks after the last step (ascending id), as ``step`` returned them."""
+        if self._tracks is None:
+            self._tracks = [Track._from_row(r) for r in self.track_table()]
+        return list(self._tracks)
+
+    def track_table(self) -> np.ndarray:
+        """The live tracks as one float64 array (n, 25), ascending id; the columns
+        are ``mtt.tracker.TABLE_COLUMNS``: id, confirmed (0/1), x, y, vx, vy,
+        existence, age, detection (-1: none), then the covariance row-major.
+        Cheaper than ``tracks`` for many steps (no object per track)."""
+        a = np.frombuffer(self._core.table(), dtype=np.float64).reshape(-1, _core.TABLE_COLUMNS)
+        return a
+
+    @property
+    def stats(self) -> dict:
+        """{"last": counters of the last step, "total": since the start}, named as mtt_counts' fields."""
+        last, total, _ = self._core.stats()
+        return {"last": last, "total": total}
+
+    @property
+    def time(self) -> float | None:
+        """Time of the last step, or None."""
+        return self._time
+
+    # ------------------------------------------------------------ stepping
+
+    def step(self, time: float, detections=()) -> list:
+        """Run one scan (see :meth:`update`) and return the live tracks after it,
+        a list of :class:`Track` in ascending id."""
+        self.update(time, detections)
+        return self.tracks
+
+    def update(self, time: float, detections=()) -> None:
+        """Run one scan at ``time`` (greater than the last step's) with ``detections``:
+        array-like (n, 2) [x, y] or (n, 3) [x, y, amplitude] (NaN amplitude: unknown;
+        n may be 0), without building Track objects (``tracks`` and
+        ``track_table()`` give the result).
+
+        Raises ValueError for a time that is not finite, not representable or
+        not later than the last one, and for detections of the wrong shape or
+        with non-finite coordinates or negative amplitudes; the tracker is then
+        unchanged.
+        """
+        try:
+            t = float(time)
+        except (TypeError, ValueError):
+            raise ValueError(f"time must be a number, got {time!r}") from None
+        if not math.isfinite(t) or abs(t) > _core.REAL_MAX:
+            raise ValueError(f"time {t!r} is not a finite number that mtt_real ({_core.REAL}) holds")
+        z = _detections(detections)
+        st = self._core.step(t, z.tobytes())
+        if st == _core.ERR_TIME:
+            raise ValueError(f"time {t!r} is not later than the last step's time {self._time!r} "
+                             f"in the tracker's precision (mtt_real={_core.REAL})")
+        if st != 0:
+            raise RuntimeError(f"mtt_tracker_step failed: {_core.status_text(st)}")
+        self._time = t
+        self._tracks = None
+
+    def __repr__(self) -> str:
+        tab = self.track_table()
+        n, c = len(tab), int(tab[:, 1].sum())
+        return f"<mtt.Tracker time={self._time!r}: {n} tracks, {c} confirmed>"
