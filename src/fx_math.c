@@ -159,21 +159,21 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
     }
     na = mtt_fx_clz(ua);
     nb = mtt_fx_clz(ub);
-    n = ua << na; /* both in [2^31, 2^32): n / d in (1/2, 2) */
-    d = ub << nb;
-    /* q = floor(n / d * 2^31) < 2^32: the integer bit, then 31 fraction
-     * bits.  The remainder stays below d < 2^32; when its top bit is set
-     * the doubled remainder exceeds d, and the uint32 difference wraps to
-     * the right value. */
+    /* Both in [2^30, 2^31): n / d in (1/2, 2), and the doubled remainder
+     * (< 2 d < 2^32) never leaves 32 bits.  The shift drops no bit: a
+     * magnitude is at most 2^31, so na = 0 only for 2^31 itself. */
+    n = (ua << na) >> 1;
+    d = (ub << nb) >> 1;
+    /* q = floor(n / d 2^31) < 2^32: the integer bit, then 31 fraction bits,
+     * one per pass. */
     if (n >= d) {
         q = 1u;
         n -= d;
     }
     for (i = 0; i < 31; ++i) {
-        const uint32_t top = n >> 31;
         n <<= 1;
         q <<= 1;
-        if (top != 0u || n >= d) {
+        if (n >= d) {
             n -= d;
             q |= 1u;
         }
@@ -184,7 +184,7 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
         r = (uint32_t)MTT_FX_MAX; /* q >= 2^30: the result is >= 2^31 */
     } else if (sh == 0) {
         /* round with the next quotient bit: 2 rem >= d */
-        const uint32_t up = ((n >> 31) != 0u || (n << 1) >= d) ? 1u : 0u;
+        const uint32_t up = ((n << 1) >= d) ? 1u : 0u;
         r = (q > (uint32_t)MTT_FX_MAX - up) ? (uint32_t)MTT_FX_MAX : q + up;
     } else if (sh > 32) {
         r = 0u;
