@@ -150,6 +150,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);
             np.beta = MTT_R(0.0);
+            np.g = MTT_R(1.0);
             push_pair(trk, &np, &resort);
         }
     }

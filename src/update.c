@@ -9,6 +9,8 @@
  * beta row and beta_0; existence from the association stage.
  * HARD (NNJPDA, ALGORITHMS.md §13.5): the Kalman update with the assigned measurement
  * (beta 1, beta0 0); existence from the association stage (ALGORITHMS.md §13.2).
+ * lm-ihpda contest (ALGORITHMS.md §10.4): a contested track takes the PDA update with
+ * the LM-IPDA row of the contest test instead of ONE.
  * A track with no measurement keeps its prediction, with L = 1 - PD PG. */
 #include "mtt_internal.h"
 
@@ -97,7 +99,7 @@ void mtt_update_frame(mtt_tracker *trk)
         if (!tf->valid) {
             continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
-        if (kind == MTT_UPDATE_ONE) {
+        if (kind == MTT_UPDATE_ONE && tf->contest != MTT_CONTEST_YES) {
             if (tf->assigned < 0) {
                 keep_prediction(trk, i);
             } else {
