@@ -7,8 +7,8 @@
  * pair with its beta and L (update kind ONE), the beta row, beta_0 and the
  * updated existence (PDA), or the assigned pair and the existence (HARD).
  * PDA modes use every gated measurement, so those are marked used here
- * (§15.1); the other modes mark the assigned ones while assigning (and
- * lm-ihpda contest the claimed measurements of contested tracks, §10.4).  The
+ * (§15.1); the other modes mark the assigned ones while assigning (the
+ * update stage marks those claimed by contested lm-ihpda tracks, §10.4).  The
  * table also gives the names of docs/FORMATS.md `association`. */
 #include "mtt_internal.h"
 
@@ -120,9 +120,6 @@ void mtt_associate_frame(mtt_tracker *trk)
             mtt_contest_frame(trk); /* lm_ihpda_variant contest (§10.4) */
         }
         mtt_ihpda_final_frame(trk);
-        if (MTT_CONTEST_ON(trk)) {
-            mtt_contest_used(trk);
-        }
         break;
     case MTT_ASSOCIATE_SELECT: /* ihpda (§7.4) */
         mtt_ihpda_select_frame(trk);

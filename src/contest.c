@@ -10,7 +10,9 @@
  * more tracks give it beta >= contest_beta, a track when one of its
  * measurements with beta >= contest_beta is contested.  A contested track
  * takes the LM-IPDA (PDA) update with that row, as JPDA's marginal betas
- * would; the others keep §10.3 and §7.4.  O(gated pairs), no enumeration. */
+ * would, and marks its measurements with beta >= contest_beta used
+ * (update.c); the others keep §10.3 and §7.4.  O(gated pairs), no
+ * enumeration. */
 #include "mtt_internal.h"
 
 void mtt_contest_frame(mtt_tracker *trk)
@@ -44,17 +46,6 @@ void mtt_contest_frame(mtt_tracker *trk)
             if (pp->beta >= eps) {
                 trk->tf[pp->track].contest = MTT_CONTEST_YES;
             }
-        }
-    }
-}
-
-void mtt_contest_used(mtt_tracker *trk)
-{
-    uint16_t k;
-    for (k = 0; k < trk->n_pairs; ++k) {
-        const mtt_pair *pp = &trk->pairs[k];
-        if (trk->tf[pp->track].contest == MTT_CONTEST_YES && pp->beta >= trk->par.contest_beta) {
-            trk->meas[pp->meas].used = 1;
         }
     }
 }

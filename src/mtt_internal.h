@@ -23,6 +23,11 @@ void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less
  * typed compares, no byte swaps. */
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
+/* CSR lists filled with first[c] as the cursor of c hold in first[c] the
+ * end of c, which is the start of c + 1: shift first[0..n] back by one
+ * (first[0] = 0).  A forward carry, so the compiler links no memmove. */
+void mtt_csr_unshift(uint16_t *first, uint16_t n);
+
 /* ---- kalman.c: Kalman filter on the motion model of motion.h (ALGORITHMS.md §3, §6) ---- */
 /* xp = F x, Pp = F P F' + Q through the model, symmetrised (ALGORITHMS.md §2, §3). */
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
@@ -111,9 +116,6 @@ enum { MTT_CONTEST_NONE = 0, MTT_CONTEST_ROW = 1, MTT_CONTEST_YES = 2 };
 /* After MMR: the LM-IPDA row (pair.beta, tf.beta0, tf.ex_post) of every
  * track of a cluster with two or more tracks, then tf.contest. */
 void mtt_contest_frame(mtt_tracker *trk);
-/* After the final recomputation: the measurements with LM-IPDA beta >=
- * contest_beta of a contested track are used (not for initiation). */
-void mtt_contest_used(mtt_tracker *trk);
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
