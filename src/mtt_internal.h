@@ -221,6 +221,15 @@ void mtt_track_manage(mtt_tracker *trk);
 typedef mtt_real mtt_split_state[MTT_SPLIT_STATE];
 typedef mtt_real mtt_split_cov[MTT_SPLIT_STATE][MTT_SPLIT_STATE];
 
+/* One target's (x, P) as a stacked state: [x; x], [[P, P], [P, P]] (the
+ * two targets of a split start from the one estimate, [S3] eq. 5, 11). */
+int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
+                    mtt_split_cov Ps);
+/* Stacked prediction with the model's F and Q (n x n): xps = blockdiag(F,
+ * F) xs, Pps = F^s Ps F^s' + blockdiag(Q, Q), symmetrised. */
+int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
+                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
+                      mtt_split_cov Pps);
 /* Model 5 "just split" from one prediction (xp, Pp) and the m >= 2
  * validated measurements z with their PDA betas: clusters around the two
  * largest betas (Mahalanobis with S; cluster[j] = 0 parent, 1 child), betas

@@ -232,6 +232,89 @@ static int n_ok(uint8_t n)
     return n >= 4u && n <= MTT_MAX_STATE;
 }
 
+/* ---- stacking and prediction ---- */
+
+int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
+                    mtt_split_cov Ps)
+{
+    int i, k;
+    if (!n_ok(n)) {
+        return -1;
+    }
+    /* Both targets at the one estimate, fully correlated ([S3] eq. 5, 11). */
+    for (i = 0; i < n; ++i) {
+        xs[i] = x[i];
+        xs[n + i] = x[i];
+        for (k = 0; k < n; ++k) {
+            const mtt_real v = MTT_R(0.5) * (P[i][k] + P[k][i]);
+            Ps[i][k] = v;
+            Ps[i][n + k] = v;
+            Ps[n + i][k] = v;
+            Ps[n + i][n + k] = v;
+        }
+    }
+    return 0;
+}
+
+int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
+                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
+                      mtt_split_cov Pps)
+{
+    mtt_real FP[NS][NS];
+    int i, k, l, ti, tk;
+    if (!n_ok(n)) {
+        return -1;
+    }
+    /* F^s = blockdiag(F, F): each target moves alone; Q^s = blockdiag(Q,
+     * Q): their process noises are independent, so the cross covariance
+     * only propagates (F P_12 F') and the targets decorrelate. */
+    for (ti = 0; ti < 2; ++ti) {
+        const int o = ti * (int)n;
+        for (i = 0; i < n; ++i) {
+            mtt_real s = MTT_R(0.0);
+            for (l = 0; l < n; ++l) {
+                s += F[i][l] * xs[o + l];
+            }
+            xps[o + i] = s;
+            for (k = 0; k < 2 * n; ++k) {
+                s = MTT_R(0.0);
+                for (l = 0; l < n; ++l) {
+                    s += F[i][l] * Ps[o + l][k];
+                }
+                FP[o + i][k] = s;
+            }
+        }
+    }
+    for (ti = 0; ti < 2; ++ti) {
+        for (tk = ti; tk < 2; ++tk) {
+            const int oi = ti * (int)n, ok = tk * (int)n;
+            for (i = 0; i < n; ++i) {
+                for (k = 0; k < n; ++k) {
+                    mtt_real s = (ti == tk) ? MTT_R(0.5) * (Q[i][k] + Q[k][i]) : MTT_R(0.0);
+                    for (l = 0; l < n; ++l) {
+                        s += FP[oi + i][ok + l] * F[k][l];
+                    }
+                    Pps[oi + i][ok + k] = s;
+                }
+            }
+        }
+    }
+    /* P_21 = P_12', then the diagonal blocks symmetrised */
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            Pps[n + k][i] = Pps[i][n + k];
+        }
+    }
+    for (i = 0; i < 2 * n; ++i) {
+        for (k = i + 1; k < 2 * n; ++k) {
+            const mtt_real v = MTT_R(0.5) * (Pps[i][k] + Pps[k][i]);
+            Pps[i][k] = v;
+            Pps[k][i] = v;
+        }
+    }
+    return 0;
+}
+
 /* ---- model 5: just split ---- */
 
 int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],

@@ -146,6 +146,55 @@ static void assert_psd(mtt_split_cov P, int N)
     }
 }
 
+/* ---- stacking and prediction ---- */
+
+/* [x; x] with [[P, P], [P, P]]; its prediction with the CV model: each
+ * half is the single-target prediction of kalman.c, the cross block is
+ * F P F' (no Q: the process noises are independent). */
+static void test_stack_predict(void)
+{
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], Pk[MTT_MAX_STATE][MTT_MAX_STATE], xk[MTT_MAX_STATE];
+    mtt_real F[MTT_MAX_STATE][MTT_MAX_STATE], Q[MTT_MAX_STATE][MTT_MAX_STATE], FPF;
+    mtt_split_state xs, xps;
+    mtt_split_cov Ps, Pps;
+    const mtt_real dt = MTT_R(0.5), sw = MTT_R(5.0);
+    int i, k, l, h;
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_stack(4, XP, P, xs, Ps));
+    memset(F, 0, sizeof F);
+    for (i = 0; i < 4; ++i) {
+        F[i][i] = MTT_R(1.0);
+    }
+    F[0][2] = dt;
+    F[1][3] = dt;
+    mtt_motion_q(dt, sw, Q);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_predict(4, F, Q, xs, Ps, xps, Pps));
+    mtt_kalman_predict(dt, sw, XP, P, xk, Pk);
+    for (h = 0; h < 2; ++h) {
+        for (i = 0; i < 4; ++i) {
+            TV_ASSERT_REAL(xk[i], xps[4 * h + i]);
+            for (k = 0; k < 4; ++k) {
+                TV_ASSERT_REAL(Pk[i][k], Pps[4 * h + i][4 * h + k]);
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            FPF = MTT_R(0.0);
+            for (l = 0; l < 4; ++l) {
+                int c;
+                for (c = 0; c < 4; ++c) {
+                    FPF += F[i][l] * P[l][c] * F[k][c];
+                }
+            }
+            TV_ASSERT_REAL(FPF, Pps[i][4 + k]);
+            TV_ASSERT_REAL(Pk[i][k] - Q[i][k], Pps[4 + i][k]);
+        }
+    }
+    assert_psd(Pps, 8);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_stack(MTT_MAX_STATE + 1, XP, P, xs, Ps));
+}
+
 /* ---- model 5 ---- */
 
 static void test_just_split_reference(void)
@@ -435,6 +484,7 @@ static void test_separate(void)
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_stack_predict);
     RUN_TEST(test_just_split_reference);
     RUN_TEST(test_just_split_refuses);
     RUN_TEST(test_just_split_two);
