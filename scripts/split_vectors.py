@@ -78,8 +78,10 @@ def just_split(xp, Pp, R, z, beta, V):
                 lik_ratio=lik_literal * V ** m, S=S, V=V)
 
 
-def split_events(xps, Pps, R, z, pd, pg, gamma, V):
-    """Model 6: the joint events by brute force, [S3] eq. 14 literally."""
+def split_events(xps, Pps, R, z, pd, pg, gamma, V, lam=0.0):
+    """Model 6: the joint events by brute force, [S3] eq. 14 literally
+    (lam = 0); with lam > 0 the parametric form (Poisson clutter of density
+    lam: lam^phi in place of phi! V^-phi)."""
     n = len(xps) // 2
     H = H_of(n)
     m = len(z)
@@ -99,7 +101,7 @@ def split_events(xps, Pps, R, z, pd, pg, gamma, V):
                 continue
             assigned = [(t, j) for t, j in ((0, j1), (1, j2)) if j is not None]
             phi = m - len(assigned)
-            w = math.factorial(phi) * V ** (-phi)
+            w = lam ** phi if lam > 0 else math.factorial(phi) * V ** (-phi)
             for t, j in assigned:
                 w *= gauss(z[j] - zh[t], S[t])
             for t, j in ((0, j1), (1, j2)):
@@ -107,7 +109,8 @@ def split_events(xps, Pps, R, z, pd, pg, gamma, V):
             events.append(((j1, j2), w))
     c = sum(w for _, w in events)
     probs = {e: w / c for e, w in events}
-    return probs, c, c * V ** m / math.factorial(m), zh, S
+    ratio = c / lam ** m if lam > 0 else c * V ** m / math.factorial(m)
+    return probs, c, ratio, zh, S
 
 
 def split_update(xps, Pps, R, z, probs):
@@ -210,6 +213,14 @@ def main():
     print("xs = {%s}" % fmt(xs6))
     print("Ps (8x8, row-major) = {%s}" % fmt(Ps6))
     print("min eigenvalue of Ps = %.6g" % min(np.linalg.eigvalsh(Ps6)))
+
+    LAM6 = 2e-4
+    probs_p, _, ratio_p, _, _ = split_events(XPS, PPS, R, Z6, PD6, PG6, GAMMA, V6, LAM6)
+    print("\n## model 6, parametric: lambda = %g" % LAM6)
+    print("events (j1, j2; -1 = undetected), P(theta):")
+    for e, p in sorted(probs_p.items(), key=lambda kv: tuple(-1 if j is None else j for j in kv[0])):
+        print("  {%d, %d, %.10g}," % tuple([-1 if j is None else j for j in e] + [p]))
+    print("lik ratio (c / lambda^m) = %.10g" % ratio_p)
 
     print("\n## decoupling")
     print("d2 of the model-6 prediction = %.10g" % decouple_d2(XPS, PPS, R))

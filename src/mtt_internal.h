@@ -236,7 +236,8 @@ int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_M
  * renormalised per cluster (beta_n), per-half PDA update and the cross
  * covariance (I - WH) Pp (I - WH)' into the stacked (xs, Ps), and *lik =
  * prod_i (V/m_i) sum_{j in I_i} N_j (eq. 13 with V^-(m_i - 1), over V^-m);
- * vg = V, the validation volume. */
+ * vg = V, the validation volume (1/lambda for a known clutter density
+ * lambda: the m_i - 1 others are clutter of density lambda). */
 int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
                    uint16_t m, const mtt_real z[][2], const mtt_real beta[], mtt_real vg,
                    mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
@@ -253,12 +254,16 @@ typedef struct mtt_split_assoc {
     mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
     uint16_t m;
     uint8_t n;
+    uint8_t parametric;                   /* 1: known clutter density lambda */
 } mtt_split_assoc;
 /* Per-target gates (d^2 <= gamma with S_t = H P_tt H' + R) and the event
- * factors a, b. */
+ * factors a, b.  lam = 0: non-parametric ([S3] eq. 14, V = vg; lik is the
+ * ratio to V^-m); lam > 0: Poisson clutter of known density lam (the
+ * detection factor is PD N / lam, no factorials; lik is the ratio to the
+ * all-clutter density, the scale of the IPDA L of ALGORITHMS.md §6). */
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
                          uint16_t m, const mtt_real z[][2], mtt_real pd, mtt_real pg,
-                         mtt_real gamma, mtt_real vg, mtt_split_assoc *as);
+                         mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as);
 /* Unnormalised weight of the joint event (j1, j2) (measurement index of
  * target 1 and 2, -1 = undetected): (phi!/m!) prod PD V N prod (1 - PD PG);
  * 0 when infeasible. */

@@ -430,14 +430,15 @@ int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
 
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
                          uint16_t m, const mtt_real z[][2], mtt_real pd, mtt_real pg,
-                         mtt_real gamma, mtt_real vg, mtt_split_assoc *as)
+                         mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
 {
     mtt_real S[3], Si[3], det;
     mtt_real a[2][MTT_MAX_SPLIT_MEAS];
     uint16_t j;
     int t;
     if (!n_ok(n) || m > MTT_MAX_SPLIT_MEAS || !(pd >= MTT_R(0.0) && pd <= MTT_R(1.0)) ||
-        !(pg > MTT_R(0.0) && pg <= MTT_R(1.0)) || !(gamma > MTT_R(0.0)) || !(vg > MTT_R(0.0))) {
+        !(pg > MTT_R(0.0) && pg <= MTT_R(1.0)) || !(gamma > MTT_R(0.0)) || !(lam >= MTT_R(0.0)) ||
+        !mtt_isfinite(lam) || (lam == MTT_R(0.0) && !(vg > MTT_R(0.0)))) {
         return -1;
     }
     for (t = 0; t < 2; ++t) {
@@ -448,8 +449,10 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
         for (j = 0u; j < m; ++j) {
             const mtt_real d2 = quad2(Si, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
             /* PD V N: the detection factor of [S3] eq. 14 times V (the
-             * ratio to V^-m); 0 outside the target's gate (not feasible). */
-            a[t][j] = (d2 <= gamma) ? pd * vg * gauss2(d2, det) : MTT_R(0.0);
+             * ratio to V^-m), or PD N / lambda with a known clutter
+             * density; 0 outside the target's gate (not feasible). */
+            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, det) / lam : vg * gauss2(d2, det);
+            a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
         }
     }
     for (t = 0; t < 2; ++t) {
@@ -462,24 +465,29 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
     }
     as->m = m;
     as->n = n;
+    as->parametric = (uint8_t)((lam > MTT_R(0.0)) ? 1u : 0u);
     return 0;
 }
 
 mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j2)
 {
+    /* Non-parametric: phi!/m! of [S3] eq. 14 (phi = m - number detected)
+     * with the V^m of the ratio folded into the detection factors.
+     * Parametric (Poisson clutter of density lambda): the factorials
+     * cancel, the ratio to lambda^m is the product of the factors. */
     const int16_t m = (int16_t)as->m;
+    const mtt_real m1 = as->parametric ? MTT_R(1.0) : (mtt_real)m;
+    const mtt_real m2 = as->parametric ? MTT_R(1.0) : (mtt_real)m * (mtt_real)(m - 1);
     mtt_real w;
     if (j1 < -1 || j2 < -1 || j1 >= m || j2 >= m || (j1 >= 0 && j1 == j2)) {
         return MTT_R(0.0); /* not an event: one measurement, two targets */
     }
-    /* phi!/m! of [S3] eq. 14 (phi = m - number detected) with the V^m of
-     * the ratio folded into the detection factors. */
     if (j1 >= 0 && j2 >= 0) {
-        w = as->a[0][j1] * as->a[1][j2] / ((mtt_real)m * (mtt_real)(m - 1));
+        w = as->a[0][j1] * as->a[1][j2] / m2;
     } else if (j1 >= 0) {
-        w = as->a[0][j1] * as->b[1] / (mtt_real)m;
+        w = as->a[0][j1] * as->b[1] / m1;
     } else if (j2 >= 0) {
-        w = as->b[0] * as->a[1][j2] / (mtt_real)m;
+        w = as->b[0] * as->a[1][j2] / m1;
     } else {
         w = as->b[0] * as->b[1];
     }

@@ -45,6 +45,21 @@ static const double ref5_beta_n[5] = {0.5357142857, 0.6470588235, 0.3214285714, 
 static const double ref5_xs[8] = {104.7842041, 48.20229151, 11.65148149, -5.680961534, 95.54647398, 55.26628362, 8.366344266, -3.210235274};
 static const double ref5_Ps[64] = {10.28632078, 0.9730889993, 3.421070261, 0.09243998307, 1.60046456, 0.3659696876, 0.5265371933, 0.08341191966, 0.9730889993, 11.93993154, 0.005996808288, 3.820394298, 0.3659696876, 2.630080718, 0.05213244979, 0.8382893529, 3.421070261, 0.005996808288, 6.79510406, 0.6430323188, 0.5265371933, 0.05213244979, 5.823849396, 0.7199560226, 0.09243998307, 3.820394298, 0.6430323188, 5.653372107, 0.08341191966, 0.8382893529, 0.7199560226, 4.694175407, 1.60046456, 0.3659696876, 0.5265371933, 0.08341191966, 9.028827215, 1.844940986, 2.976284161, 0.3998989293, 0.3659696876, 2.630080718, 0.05213244979, 0.8382893529, 1.844940986, 8.499811596, 0.3904008239, 2.694954058, 0.5265371933, 0.05213244979, 5.823849396, 0.7199560226, 2.976284161, 0.3904008239, 6.635741319, 0.7762408193, 0.08341191966, 0.8382893529, 0.7199560226, 4.694175407, 0.3998989293, 2.694954058, 0.7762408193, 5.284705886};
 static const double ref5_lik = 2.294999627;
+static const struct { int j1, j2; double p; } ref6p_events[13] = {
+    {-1, -1, 1.555348617e-05},
+    {-1, 0, 0.0008355800172},
+    {-1, 1, 0.002562358385},
+    {-1, 2, 0.00114135053},
+    {0, -1, 0.002355080585},
+    {0, 1, 0.3879876458},
+    {0, 2, 0.1728212211},
+    {1, -1, 0.0005406242138},
+    {1, 0, 0.0290439574},
+    {1, 2, 0.0396722462},
+    {2, -1, 0.001654111067},
+    {2, 0, 0.08886381733},
+    {2, 1, 0.2725064539},};
+static const double ref6p_lik = 763.8801917;
 static const double ref6_V = 2177.036038;
 static const struct { int j1, j2; double p; } ref6_events[13] = {
     {-1, -1, 0.0009336180605},
@@ -291,7 +306,7 @@ static void test_split_events_reference(void)
     int e, t, j, j1, j2, found;
     prior_s(Pps, 1.0);
     TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
-                                                  (mtt_real)ref6_V, &as));
+                                                  (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     /* every event of the brute-force enumeration, and no other */
     for (j1 = -1; j1 < 4; ++j1) {
@@ -324,6 +339,30 @@ static void test_split_events_reference(void)
     TV_ASSERT_REAL(ref6_lik, as.lik);
 }
 
+/* Known clutter density (lambda = 2e-4): the parametric events. */
+static void test_split_events_parametric(void)
+{
+    mtt_split_cov Pps;
+    mtt_split_assoc as;
+    double sum = 0.0;
+    int e;
+    prior_s(Pps, 1.0);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+                                                  MTT_R(2e-4), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+    for (e = 0; e < 13; ++e) {
+        const double p = (double)mtt_split_event_weight(&as, (int16_t)ref6p_events[e].j1,
+                                                        (int16_t)ref6p_events[e].j2) / (double)as.lik;
+        TV_ASSERT_REAL_MSG(ref6p_events[e].p, p, "P(theta)");
+        sum += p;
+    }
+    TV_ASSERT_REAL(1.0, sum);
+    TV_ASSERT_REAL(ref6p_lik, as.lik);
+    /* neither a clutter density nor a volume: refused */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+                                                   MTT_R(0.0), &as));
+}
+
 static void test_split_update_reference(void)
 {
     mtt_split_cov Pps, Ps;
@@ -331,7 +370,7 @@ static void test_split_update_reference(void)
     mtt_split_assoc as;
     prior_s(Pps, 1.0);
     TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
-                                                  (mtt_real)ref6_V, &as));
+                                                  (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, XPS, Pps, R, Z6, xs, Ps));
     TV_ASSERT_VEC(ref6_xs, xs, 8);
@@ -355,7 +394,7 @@ static void test_split_update_independent(void)
     xps[4] += MTT_R(60.0);
     prior_s(Pps, 0.0);
     TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
-                                                  MTT_R(2000.0), &as));
+                                                  MTT_R(2000.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta[0][0]);
     TV_ASSERT_REAL(1.0, as.beta[1][1]);
@@ -391,7 +430,7 @@ static void test_split_no_measurement(void)
     mtt_split_assoc as;
     int i, k;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta0);
     TV_ASSERT_REAL((1.0 - 0.9 * 0.99) * (1.0 - 0.9 * 0.99), as.lik);
@@ -404,7 +443,7 @@ static void test_split_no_measurement(void)
     }
     /* PD = PG = 1 and nothing gated: every event weighs 0 -> refused */
     TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 0, Z6, MTT_R(1.0), MTT_R(1.0), GAMMA,
-                                                  MTT_R(100.0), &as));
+                                                  MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(-1, mtt_split_joint(&as));
 }
 
@@ -489,6 +528,7 @@ int main(void)
     RUN_TEST(test_just_split_refuses);
     RUN_TEST(test_just_split_two);
     RUN_TEST(test_split_events_reference);
+    RUN_TEST(test_split_events_parametric);
     RUN_TEST(test_split_update_reference);
     RUN_TEST(test_split_update_independent);
     RUN_TEST(test_split_no_measurement);
