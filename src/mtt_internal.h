@@ -239,7 +239,7 @@ int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_M
  * vg = V, the validation volume (1/lambda for a known clutter density
  * lambda: the m_i - 1 others are clutter of density lambda). */
 int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
-                   uint16_t m, const mtt_real z[][2], const mtt_real beta[], mtt_real vg,
+                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
                    mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
                    mtt_real *lik);
 
@@ -262,7 +262,7 @@ typedef struct mtt_split_assoc {
  * detection factor is PD N / lam, no factorials; lik is the ratio to the
  * all-clutter density, the scale of the IPDA L of ALGORITHMS.md §6). */
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
-                         uint16_t m, const mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as);
 /* Unnormalised weight of the joint event (j1, j2) (measurement index of
  * target 1 and 2, -1 = undetected): (phi!/m!) prod PD V N prod (1 - PD PG);
@@ -273,7 +273,7 @@ int mtt_split_joint(mtt_split_assoc *as);
 /* Coupled update of the stacked state (ALGORITHMS.md §14.3, corrected
  * bracket of [S3] eq. 25), after mtt_split_joint. */
 int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
-                     const mtt_real R[3], const mtt_real z[][2], mtt_split_state xs,
+                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
                      mtt_split_cov Ps);
 /* Decoupling test [S3] eq. 27 on a stacked prediction: *d2 = (z1 - z2)'
  * (S1 + S2)^-1 (z1 - z2); returns 1 when d2 >= c (decoupled), 0 when not,

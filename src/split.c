@@ -318,7 +318,7 @@ int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_M
 /* ---- model 5: just split ---- */
 
 int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
-                   uint16_t m, const mtt_real z[][2], const mtt_real beta[], mtt_real vg,
+                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
                    mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
                    mtt_real *lik)
 {
@@ -429,7 +429,7 @@ int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
 /* ---- model 6: split ---- */
 
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
-                         uint16_t m, const mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
 {
     mtt_real S[3], Si[3], det;
@@ -537,7 +537,7 @@ int mtt_split_joint(mtt_split_assoc *as)
 }
 
 int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
-                     const mtt_real R[3], const mtt_real z[][2], mtt_split_state xs,
+                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
                      mtt_split_cov Ps)
 {
     const int16_t m = (int16_t)as->m;

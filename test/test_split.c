@@ -20,19 +20,20 @@ void tearDown(void) {}
 
 #if MTT_WITH_SPLIT
 
-/* ---- inputs (scripts/split_vectors.py: R, XP, PP, Z5, B5, XPS, P22, P12, Z6) ---- */
+/* ---- inputs (scripts/split_vectors.py: R, XP, PP, Z5, B5, XPS, P22, P12, Z6;
+ * Z5, Z6 not const: the split functions take measurements as mtt_real[][2]) ---- */
 static const mtt_real R[3] = {MTT_R(9.0), MTT_R(1.5), MTT_R(12.0)};
 static const mtt_real XP[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
 static const double PP[4][4] = {{30, 2, 10, 0}, {2, 25, 0, 8}, {10, 0, 9, 0.5}, {0, 8, 0.5, 7}};
 static const double P22[4][4] = {{28, 1, 9, 0}, {1, 26, 0, 7}, {9, 0, 8, 0.3}, {0, 7, 0.3, 6}};
 static const double P12[4][4] = {{12, 1, 4, 0}, {0.5, 10, 0, 3}, {4, 0, 3, 0.2}, {0, 3, 0.1, 2.5}};
-static const mtt_real Z5[5][2] = {{MTT_R(104.0), MTT_R(48.0)}, {MTT_R(93.0), MTT_R(57.0)},
+static mtt_real Z5[5][2] = {{MTT_R(104.0), MTT_R(48.0)}, {MTT_R(93.0), MTT_R(57.0)},
                                   {MTT_R(108.0), MTT_R(44.0)}, {MTT_R(97.0), MTT_R(59.0)},
                                   {MTT_R(110.0), MTT_R(53.0)}};
 static const mtt_real B5[5] = {MTT_R(0.30), MTT_R(0.22), MTT_R(0.18), MTT_R(0.12), MTT_R(0.08)};
 static const mtt_real XPS[8] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0),
                                 MTT_R(112.0), MTT_R(47.0), MTT_R(12.0), MTT_R(-1.0)};
-static const mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
+static mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
                                   {MTT_R(106.0), MTT_R(52.0)}, {MTT_R(140.0), MTT_R(80.0)}};
 #define PD6 MTT_R(0.9)
 #define PG6 MTT_R(0.99)
@@ -388,7 +389,7 @@ static void test_split_update_independent(void)
     mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], Pk[MTT_MAX_STATE][MTT_MAX_STATE];
     mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], xk[MTT_MAX_STATE], nu[1][2];
     mtt_real one[1] = {MTT_R(1.0)};
-    const mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
+    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
     int t, i, k;
     memcpy(xps, XPS, sizeof XPS);
     xps[4] += MTT_R(60.0);
@@ -520,6 +521,83 @@ static void test_separate(void)
     TV_ASSERT_REAL(-7.0, x1[0]);
 }
 
+/* Deterministic pseudo-random cases (an LCG): for any stacked prior and any
+ * measurements, the event probabilities sum to 1, each target's marginals
+ * sum to 1, and the updated covariances of models 5 and 6 are symmetric
+ * positive semi-definite. */
+static uint32_t lcg_state = 12345u;
+static double urand(double lo, double hi)
+{
+    lcg_state = lcg_state * 1664525u + 1013904223u;
+    return lo + (hi - lo) * (double)(lcg_state >> 8) / 16777216.0;
+}
+
+static void test_split_random_properties(void)
+{
+    int c, i, k, l, t;
+    for (c = 0; c < 200; ++c) {
+        double A[8][8];
+        mtt_split_cov Pps, Ps;
+        mtt_split_state xps, xs;
+        mtt_split_assoc as;
+        mtt_real z[8][2], b[8], P[MTT_MAX_STATE][MTT_MAX_STATE], bn[8], lik;
+        uint8_t cl[8];
+        const uint16_t m = (uint16_t)(urand(0.0, 8.999));
+        const mtt_real pd = (mtt_real)urand(0.5, 1.0);
+        double sum = 0.0;
+        int16_t j1, j2;
+        for (i = 0; i < 8; ++i) {
+            for (k = 0; k < 8; ++k) {
+                A[i][k] = urand(-2.0, 2.0);
+            }
+            xps[i] = (mtt_real)urand(-10.0, 10.0);
+        }
+        for (i = 0; i < 8; ++i) {
+            for (k = 0; k < 8; ++k) {
+                double v = (i == k) ? 1.0 : 0.0;
+                for (l = 0; l < 8; ++l) {
+                    v += A[i][l] * A[k][l];
+                }
+                Pps[i][k] = (mtt_real)v;
+            }
+        }
+        for (i = 0; i < (int)m; ++i) {
+            t = (urand(0.0, 1.0) < 0.5) ? 0 : 4;
+            z[i][0] = xps[t] + (mtt_real)urand(-6.0, 6.0);
+            z[i][1] = xps[t + 1] + (mtt_real)urand(-6.0, 6.0);
+            b[i] = (mtt_real)urand(0.0, 1.0);
+        }
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, m, z, pd, PG6, GAMMA, MTT_R(500.0),
+                                                      MTT_R(0.0), &as));
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+        for (j1 = -1; j1 < (int16_t)m; ++j1) {
+            for (j2 = -1; j2 < (int16_t)m; ++j2) {
+                sum += (double)mtt_split_event_weight(&as, j1, j2) / (double)as.lik;
+            }
+        }
+        TV_ASSERT_REAL(1.0, sum);
+        for (t = 0; t < 2; ++t) {
+            double s = (double)as.beta_miss[t];
+            for (i = 0; i < (int)m; ++i) {
+                s += (double)as.beta[t][i];
+            }
+            TV_ASSERT_REAL(1.0, s);
+        }
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, xps, Pps, R, z, xs, Ps));
+        assert_psd(Ps, 8);
+        if (m >= 2u) {
+            for (i = 0; i < 4; ++i) {
+                for (k = 0; k < 4; ++k) {
+                    P[i][k] = Pps[i][k];
+                }
+            }
+            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(4, xps, P, R, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+            assert_psd(Ps, 8);
+            TEST_ASSERT_TRUE(lik >= MTT_R(0.0));
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -532,6 +610,7 @@ int main(void)
     RUN_TEST(test_split_update_reference);
     RUN_TEST(test_split_update_independent);
     RUN_TEST(test_split_no_measurement);
+    RUN_TEST(test_split_random_properties);
     RUN_TEST(test_decouple_reference);
     RUN_TEST(test_decouple_boundary);
     RUN_TEST(test_separate);
