@@ -78,7 +78,7 @@ def just_split(xp, Pp, R, z, beta, V):
                 lik_ratio=lik_literal * V ** m, S=S, V=V)
 
 
-def split_events(xps, Pps, R, z, pd, pg, gamma, V, lam=0.0):
+def split_events(xps, Pps, R, z, pd, pg, gamma, V, lam=0.0, coupled=False):
     """Model 6: the joint events by brute force, [S3] eq. 14 literally
     (lam = 0); with lam > 0 the parametric form (Poisson clutter of density
     lam: lam^phi in place of phi! V^-phi)."""
@@ -102,8 +102,15 @@ def split_events(xps, Pps, R, z, pd, pg, gamma, V, lam=0.0):
             assigned = [(t, j) for t, j in ((0, j1), (1, j2)) if j is not None]
             phi = m - len(assigned)
             w = lam ** phi if lam > 0 else math.factorial(phi) * V ** (-phi)
-            for t, j in assigned:
-                w *= gauss(z[j] - zh[t], S[t])
+            if coupled and len(assigned) == 2:
+                Hs = np.block([[H, np.zeros((2, n))], [np.zeros((2, n)), H]])
+                Ss = Hs @ Pps @ Hs.T + np.block([[R, np.zeros((2, 2))], [np.zeros((2, 2)), R]])
+                nu4 = np.concatenate([z[j1] - zh[0], z[j2] - zh[1]])
+                w *= math.exp(-0.5 * nu4 @ np.linalg.solve(Ss, nu4)) / (
+                    (2.0 * math.pi) ** 2 * math.sqrt(np.linalg.det(Ss)))
+            else:
+                for t, j in assigned:
+                    w *= gauss(z[j] - zh[t], S[t])
             for t, j in ((0, j1), (1, j2)):
                 w *= pd if j is not None else (1.0 - pd * pg)
             events.append(((j1, j2), w))
@@ -221,6 +228,13 @@ def main():
     for e, p in sorted(probs_p.items(), key=lambda kv: tuple(-1 if j is None else j for j in kv[0])):
         print("  {%d, %d, %.10g}," % tuple([-1 if j is None else j for j in e] + [p]))
     print("lik ratio (c / lambda^m) = %.10g" % ratio_p)
+
+    probs_c, _, ratio_c, _, _ = split_events(XPS, PPS, R, Z6, PD6, PG6, GAMMA, V6, 0.0, True)
+    print("\n## model 6, coupled two-detection density (option), non-parametric")
+    print("events (j1, j2; -1 = undetected), P(theta):")
+    for e, p in sorted(probs_c.items(), key=lambda kv: tuple(-1 if j is None else j for j in kv[0])):
+        print("  {%d, %d, %.10g}," % tuple([-1 if j is None else j for j in e] + [p]))
+    print("lik ratio (c V^m / m!) = %.10g" % ratio_c)
 
     print("\n## decoupling")
     print("d2 of the model-6 prediction = %.10g" % decouple_d2(XPS, PPS, R))

@@ -252,9 +252,15 @@ typedef struct mtt_split_assoc {
     mtt_real beta_miss[2];                /* P(target t undetected) */
     mtt_real beta0;                       /* P(theta_0): neither detected */
     mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
+    mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
+    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
+    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
+    mtt_real pd;
+    mtt_real scale;                       /* V, or 1/lambda */
     uint16_t m;
     uint8_t n;
     uint8_t parametric;                   /* 1: known clutter density lambda */
+    uint8_t joint;                        /* 1: coupled two-detection density */
 } mtt_split_assoc;
 /* Per-target gates (d^2 <= gamma with S_t = H P_tt H' + R) and the event
  * factors a, b.  lam = 0: non-parametric ([S3] eq. 14, V = vg; lik is the
@@ -264,6 +270,12 @@ typedef struct mtt_split_assoc {
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
                          uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as);
+/* Option (ALGORITHMS.md §14.3 as written uses the product of the
+ * marginals): events in which both targets are detected weigh the joint
+ * density N([z_j1; z_j2]; zhat^s, S^s) with S^s = H^s Pps H^s' + R^s (the
+ * cross covariance of the coupled filter) instead of N_1 N_2.  Call after
+ * mtt_split_assoc_init with the same Pps and R. */
+int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_real R[3]);
 /* Unnormalised weight of the joint event (j1, j2) (measurement index of
  * target 1 and 2, -1 = undetected): (phi!/m!) prod PD V N prod (1 - PD PG);
  * 0 when infeasible. */
