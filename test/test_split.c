@@ -23,7 +23,7 @@ void tearDown(void) {}
 /* ---- inputs (scripts/split_vectors.py: R, XP, PP, Z5, B5, XPS, P22, P12, Z6;
  * Z5, Z6 not const: the split functions take measurements as mtt_real[][2]) ---- */
 static const mtt_real R[3] = {MTT_R(9.0), MTT_R(1.5), MTT_R(12.0)};
-static const mtt_real XP[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+static const mtt_real XP[MTT_MAX_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
 static const double PP[4][4] = {{30, 2, 10, 0}, {2, 25, 0, 8}, {10, 0, 9, 0.5}, {0, 8, 0.5, 7}};
 static const double P22[4][4] = {{28, 1, 9, 0}, {1, 26, 0, 7}, {9, 0, 8, 0.3}, {0, 7, 0.3, 6}};
 static const double P12[4][4] = {{12, 1, 4, 0}, {0.5, 10, 0, 3}, {4, 0, 3, 0.2}, {0, 3, 0.1, 2.5}};
@@ -31,7 +31,7 @@ static mtt_real Z5[5][2] = {{MTT_R(104.0), MTT_R(48.0)}, {MTT_R(93.0), MTT_R(57.
                                   {MTT_R(108.0), MTT_R(44.0)}, {MTT_R(97.0), MTT_R(59.0)},
                                   {MTT_R(110.0), MTT_R(53.0)}};
 static const mtt_real B5[5] = {MTT_R(0.30), MTT_R(0.22), MTT_R(0.18), MTT_R(0.12), MTT_R(0.08)};
-static const mtt_real XPS[8] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0),
+static const mtt_real XPS[MTT_SPLIT_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0),
                                 MTT_R(112.0), MTT_R(47.0), MTT_R(12.0), MTT_R(-1.0)};
 static mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
                                   {MTT_R(106.0), MTT_R(52.0)}, {MTT_R(140.0), MTT_R(80.0)}};
