@@ -231,4 +231,97 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
 /* End of frame: delete, confirm, compact. */
 void mtt_track_manage(mtt_tracker *trk);
 
+/* ==== Split targets (ALGORITHMS.md §14.3): split.c ======================
+ * Built with MTT_WITH_SPLIT (include/mtt/config.h).  Plain functions over
+ * arrays.  A single-target model has n components (4 <= n <=
+ * MTT_MAX_STATE, position first); the stacked split state is [x_1; x_2]
+ * (2n components in MTT_SPLIT_STATE storage), target 1 the parent, target
+ * 2 the child.  Likelihoods are ratios to the all-clutter density V^-m of
+ * the m validated measurements (the scale of the IPDA likelihood ratio,
+ * ALGORITHMS.md §14.2).  Functions return 0, or -1 on invalid arguments
+ * or a covariance that is not positive definite (nothing written). */
+#if MTT_WITH_SPLIT
+/* chi-square 0.99 quantile, 2 degrees of freedom: -2 ln 0.01 ([S3] eq. 27) */
+#define MTT_SPLIT_CHI2_99 MTT_R(9.2103403719761836)
+typedef mtt_real mtt_split_state[MTT_SPLIT_STATE];
+typedef mtt_real mtt_split_cov[MTT_SPLIT_STATE][MTT_SPLIT_STATE];
+
+/* One target's (x, P) as a stacked state: [x; x], [[P, P], [P, P]] (the
+ * two targets of a split start from the one estimate, [S3] eq. 5, 11). */
+int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
+                    mtt_split_cov Ps);
+/* Stacked prediction with the model's F and Q (n x n): xps = blockdiag(F,
+ * F) xs, Pps = F^s Ps F^s' + blockdiag(Q, Q), symmetrised. */
+int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
+                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
+                      mtt_split_cov Pps);
+/* Model 5 "just split" from one prediction (xp, Pp) and the m >= 2
+ * validated measurements z with their PDA betas: clusters around the two
+ * largest betas (Mahalanobis with S; cluster[j] = 0 parent, 1 child), betas
+ * renormalised per cluster (beta_n), per-half PDA update and the cross
+ * covariance (I - WH) Pp (I - WH)' into the stacked (xs, Ps), and *lik =
+ * prod_i (V/m_i) sum_{j in I_i} N_j (eq. 13 with V^-(m_i - 1), over V^-m);
+ * vg = V, the validation volume (1/lambda for a known clutter density
+ * lambda: the m_i - 1 others are clutter of density lambda). */
+int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
+                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
+                   mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
+                   mtt_real *lik);
+
+/* Model 6 "split": the joint association of the two targets of a stacked
+ * prediction with m validated measurements ([S3] eq. 14, non-parametric). */
+typedef struct mtt_split_assoc {
+    mtt_real a[2][MTT_MAX_SPLIT_MEAS];    /* PD V N(z_j; zhat_t, S_t), 0 outside t's gate */
+    mtt_real b[2];                        /* 1 - PD PG: target t undetected */
+    mtt_real beta[2][MTT_MAX_SPLIT_MEAS]; /* P(z_j is target t's) */
+    mtt_real beta_miss[2];                /* P(target t undetected) */
+    mtt_real beta0;                       /* P(theta_0): neither detected */
+    mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
+    mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
+    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
+    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
+    mtt_real pd;
+    mtt_real scale;                       /* V, or 1/lambda */
+    uint16_t m;
+    uint8_t n;
+    uint8_t parametric;                   /* 1: known clutter density lambda */
+    uint8_t joint;                        /* 1: coupled two-detection density */
+} mtt_split_assoc;
+/* Per-target gates (d^2 <= gamma with S_t = H P_tt H' + R) and the event
+ * factors a, b.  lam = 0: non-parametric ([S3] eq. 14, V = vg; lik is the
+ * ratio to V^-m); lam > 0: Poisson clutter of known density lam (the
+ * detection factor is PD N / lam, no factorials; lik is the ratio to the
+ * all-clutter density, the scale of the IPDA L of ALGORITHMS.md §6). */
+int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
+                         uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as);
+/* Option (ALGORITHMS.md §14.3 as written uses the product of the
+ * marginals): events in which both targets are detected weigh the joint
+ * density N([z_j1; z_j2]; zhat^s, S^s) with S^s = H^s Pps H^s' + R^s (the
+ * cross covariance of the coupled filter) instead of N_1 N_2.  Call after
+ * mtt_split_assoc_init with the same Pps and R. */
+int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_real R[3]);
+/* Unnormalised weight of the joint event (j1, j2) (measurement index of
+ * target 1 and 2, -1 = undetected): (phi!/m!) prod PD V N prod (1 - PD PG);
+ * 0 when infeasible. */
+mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j2);
+/* Normalise over every event: lik, beta, beta_miss, beta0. */
+int mtt_split_joint(mtt_split_assoc *as);
+/* Coupled update of the stacked state (ALGORITHMS.md §14.3, corrected
+ * bracket of [S3] eq. 25), after mtt_split_joint. */
+int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
+                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
+                     mtt_split_cov Ps);
+/* Decoupling test [S3] eq. 27 on a stacked prediction: *d2 = (z1 - z2)'
+ * (S1 + S2)^-1 (z1 - z2); returns 1 when d2 >= c (decoupled), 0 when not,
+ * -1 on invalid input. */
+int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
+                       mtt_real c, mtt_real *d2);
+/* A decoupled split state as two independent track states: (x1, P1) the
+ * parent's, (x2, P2) the child's first state; the cross covariance is
+ * dropped.  -1 when a half is not positive definite. */
+int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
+                       mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE]);
+#endif /* MTT_WITH_SPLIT */
+
 #endif /* MTT_INTERNAL_H */

@@ -108,4 +108,26 @@
 #error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"
 #endif
 
+/* ==== Split targets (ALGORITHMS.md §14.3): src/split.c ====================
+ * MTT_WITH_SPLIT 1 builds the split-target models ("just split", "split"
+ * with its coupled joint events, the decoupling test); 0 leaves them out
+ * (firmware).  MTT_MAX_SPLIT_MEAS bounds the validated measurements of one
+ * split track (the union of its two targets' gates): the joint events are
+ * the (m + 1)^2 pairs (measurement or none, per target), enumerated by
+ * brute force.  The stacked two-target state has 2 x MTT_MAX_STATE
+ * components (MTT_SPLIT_STATE, derived, not configurable). */
+#ifndef MTT_WITH_SPLIT
+#define MTT_WITH_SPLIT 1
+#endif
+#ifndef MTT_MAX_SPLIT_MEAS
+#define MTT_MAX_SPLIT_MEAS (2 * MTT_MAX_GATED)
+#endif
+#define MTT_SPLIT_STATE (2 * MTT_MAX_STATE)
+#if MTT_WITH_SPLIT != 0 && MTT_WITH_SPLIT != 1
+#error "MTT_WITH_SPLIT must be 0 or 1"
+#endif
+#if MTT_MAX_SPLIT_MEAS < 2 || MTT_MAX_SPLIT_MEAS > 128
+#error "MTT_MAX_SPLIT_MEAS must be in [2, 128] (model 5 needs 2 measurements)"
+#endif
+
 #endif /* MTT_CONFIG_H */

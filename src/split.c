@@ -1,0 +1,725 @@
+/* split.c - split-target mathematics of one track (ALGORITHMS.md §14.3,
+ * [S3]): model 5 "just split" (two clusters, per-half PDA update, cross
+ * covariance, likelihood with the exponent -(m_i - 1)), model 6 "split"
+ * (stacked two-target state, non-parametric joint events of [S3] eq. 14,
+ * coupled update with the corrected bracket of eq. 25, model likelihood),
+ * the decoupling test of eq. 27 and the conversion of a decoupled split
+ * state into two independent track states.
+ *
+ * Plain functions over arrays: a single-target model has n state
+ * components (4 <= n <= MTT_MAX_STATE), position first (H = [I 0],
+ * motion.h); the stacked state is [x_1; x_2] with 2n components, target 1
+ * the parent (the largest-beta cluster of model 5), target 2 the child.
+ *
+ * Likelihoods are returned as ratios to the all-clutter density V^-m of
+ * the m validated measurements (V: the validation volume), the scale of
+ * the IPDA likelihood ratio of ALGORITHMS.md §14.2, so that the IMM mode
+ * update can weigh models 5 and 6 against the single-target models; the
+ * literal densities of [S3] are the ratio times V^-m, which under- or
+ * overflows float for a handful of measurements.
+ *
+ * Covariances are written as beta0 Pp + (1 - beta0) A Pp A' + W M W',
+ * A = I - W H, M = (1 - beta0) R + spread: the Joseph form of the updated
+ * covariance plus the spread of the innovations, a sum of positive
+ * semi-definite terms (as kalman.c does for one target).  A's measured
+ * block is R S^-1 (exact: H Pp H' = S - R), which avoids the cancellation
+ * of I - W H when the prior is far wider than R. */
+#include "mtt_internal.h"
+
+#if MTT_WITH_SPLIT
+
+#define NS MTT_SPLIT_STATE
+#define QMAX 4 /* measurement size of the stacked model: 2 targets x 2 */
+
+/* A = L D L' of the leading n x n block (unit lower L).  Returns 0, or -1
+ * when a pivot is not positive and finite. */
+static int ldl(int n, mtt_real A[][NS], mtt_real L[][NS], mtt_real d[])
+{
+    int i, j, k;
+    for (i = 0; i < n; ++i) {
+        mtt_real di = A[i][i];
+        for (j = 0; j < i; ++j) {
+            mtt_real s = A[i][j];
+            for (k = 0; k < j; ++k) {
+                s -= L[i][k] * L[j][k] * d[k];
+            }
+            L[i][j] = s / d[j];
+            di -= L[i][j] * s;
+        }
+        if (!(di > MTT_R(0.0)) || !mtt_isfinite(di)) {
+            return -1;
+        }
+        d[i] = di;
+        L[i][i] = MTT_R(1.0);
+    }
+    return 0;
+}
+
+/* Inverse of the symmetric positive definite q x q matrix S (q <= QMAX). */
+static int inv_spd(int q, mtt_real S[][NS], mtt_real Si[][QMAX])
+{
+    mtt_real L[QMAX][NS], d[QMAX], y[QMAX];
+    int i, k, c;
+    if (ldl(q, S, L, d) != 0) {
+        return -1;
+    }
+    for (c = 0; c < q; ++c) {
+        /* column c: L y = e_c, then D L' x = y */
+        for (i = 0; i < q; ++i) {
+            mtt_real s = (i == c) ? MTT_R(1.0) : MTT_R(0.0);
+            for (k = 0; k < i; ++k) {
+                s -= L[i][k] * y[k];
+            }
+            y[i] = s;
+        }
+        for (i = q - 1; i >= 0; --i) {
+            mtt_real s = y[i] / d[i];
+            for (k = i + 1; k < q; ++k) {
+                s -= L[k][i] * Si[k][c];
+            }
+            Si[i][c] = s;
+        }
+    }
+    for (i = 0; i < q; ++i) {
+        for (k = i + 1; k < q; ++k) {
+            const mtt_real s = MTT_R(0.5) * (Si[i][k] + Si[k][i]);
+            Si[i][k] = s;
+            Si[k][i] = s;
+        }
+    }
+    return 0;
+}
+
+/* 2x2 innovation covariance of the target whose position is at offset o
+ * of the state: S = Pp_pos + R (sym: s11, s12, s22), S^-1 and det S.
+ * Returns -1 when det S is not positive and finite. */
+static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                  mtt_real *det)
+{
+    mtt_real d;
+    S[0] = Pp[o][o] + R[0];
+    S[1] = MTT_R(0.5) * (Pp[o][o + 1] + Pp[o + 1][o]) + R[1];
+    S[2] = Pp[o + 1][o + 1] + R[2];
+    d = S[0] * S[2] - S[1] * S[1];
+    if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
+        return -1;
+    }
+    *det = d;
+    Si[0] = S[2] / d;
+    Si[1] = -S[1] / d;
+    Si[2] = S[0] / d;
+    return 0;
+}
+
+static mtt_real quad2(const mtt_real Si[3], mtt_real a, mtt_real b)
+{
+    return Si[0] * a * a + MTT_R(2.0) * Si[1] * a * b + Si[2] * b * b;
+}
+
+/* N(nu; 0, S) of a 2-D innovation with d2 = nu' S^-1 nu (untruncated). */
+static mtt_real gauss2(mtt_real d2, mtt_real det)
+{
+    return mtt_exp(MTT_R(-0.5) * d2) / (MTT_R(2.0) * MTT_PI * mtt_sqrt(det));
+}
+
+/* The mixed update of an N-state (N <= NS) with a q-dimensional measurement
+ * of the components sel[0..q) (H selects them), measurement noise Rq:
+ *   S = H Pp H' + Rq, W = Pp H' S^-1, A = I - W H,
+ *   x = xp + W nub,
+ *   P = beta0 Pp + (1 - beta0) A Pp A' + W [(1 - beta0) Rq + spread] W'
+ * (ALGORITHMS.md §6 and §14.3 in one form; beta0 = 0 and spread = 0 is the
+ * Joseph-form Kalman update of ALGORITHMS.md §3).  APA (may be NULL)
+ * receives A Pp A'.  Returns -1 when S is not positive definite (nothing
+ * written). */
+static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_real Pp[][NS],
+                        mtt_real Rq[][QMAX], mtt_real beta0, const mtt_real nub[],
+                        mtt_real spread[][QMAX], mtt_real x[], mtt_real P[][NS],
+                        mtt_real APA[][NS])
+{
+    mtt_real S[QMAX][NS], Si[QMAX][QMAX], M[QMAX][QMAX];
+    mtt_real W[NS][QMAX], A[NS][NS], AP[NS][NS], C[NS][NS];
+    const mtt_real w = MTT_R(1.0) - beta0;
+    int i, k, a, b;
+    for (a = 0; a < q; ++a) {
+        for (b = 0; b < q; ++b) {
+            S[a][b] = MTT_R(0.5) * (Pp[sel[a]][sel[b]] + Pp[sel[b]][sel[a]]) + Rq[a][b];
+        }
+    }
+    if (inv_spd(q, S, Si) != 0) {
+        return -1;
+    }
+    for (i = 0; i < N; ++i) {
+        for (a = 0; a < q; ++a) {
+            mtt_real s = MTT_R(0.0);
+            for (b = 0; b < q; ++b) {
+                s += Pp[i][sel[b]] * Si[b][a];
+            }
+            W[i][a] = s;
+        }
+    }
+    /* A = I - W H; its measured block (rows and columns sel) is Rq S^-1. */
+    for (i = 0; i < N; ++i) {
+        for (k = 0; k < N; ++k) {
+            A[i][k] = (i == k) ? MTT_R(1.0) : MTT_R(0.0);
+        }
+        for (a = 0; a < q; ++a) {
+            A[i][sel[a]] -= W[i][a];
+        }
+    }
+    for (a = 0; a < q; ++a) {
+        for (b = 0; b < q; ++b) {
+            mtt_real s = MTT_R(0.0);
+            for (k = 0; k < q; ++k) {
+                s += Rq[a][k] * Si[k][b];
+            }
+            A[sel[a]][sel[b]] = s;
+        }
+    }
+    for (i = 0; i < N; ++i) {
+        for (k = 0; k < N; ++k) {
+            mtt_real s = MTT_R(0.0);
+            int l;
+            for (l = 0; l < N; ++l) {
+                s += A[i][l] * Pp[l][k];
+            }
+            AP[i][k] = s;
+        }
+    }
+    for (a = 0; a < q; ++a) {
+        for (b = 0; b < q; ++b) {
+            M[a][b] = w * Rq[a][b] + spread[a][b];
+        }
+    }
+    for (i = 0; i < N; ++i) {
+        for (k = i; k < N; ++k) {
+            mtt_real apa = MTT_R(0.0), wmw = MTT_R(0.0);
+            int l;
+            for (l = 0; l < N; ++l) {
+                apa += AP[i][l] * A[k][l];
+            }
+            for (a = 0; a < q; ++a) {
+                mtt_real s = MTT_R(0.0);
+                for (b = 0; b < q; ++b) {
+                    s += M[a][b] * W[k][b];
+                }
+                wmw += W[i][a] * s;
+            }
+            C[i][k] = apa;
+            C[k][i] = apa;
+            P[i][k] = beta0 * MTT_R(0.5) * (Pp[i][k] + Pp[k][i]) + w * apa + wmw;
+            P[k][i] = P[i][k];
+        }
+    }
+    for (i = 0; i < N; ++i) {
+        mtt_real s = xp[i];
+        for (a = 0; a < q; ++a) {
+            s += W[i][a] * nub[a];
+        }
+        x[i] = s;
+    }
+    if (APA != NULL) {
+        for (i = 0; i < N; ++i) {
+            for (k = 0; k < N; ++k) {
+                APA[i][k] = C[i][k];
+            }
+        }
+    }
+    return 0;
+}
+
+static int n_ok(uint8_t n)
+{
+    return n >= 4u && n <= MTT_MAX_STATE;
+}
+
+/* ---- stacking and prediction ---- */
+
+int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
+                    mtt_split_cov Ps)
+{
+    int i, k;
+    if (!n_ok(n)) {
+        return -1;
+    }
+    /* Both targets at the one estimate, fully correlated ([S3] eq. 5, 11). */
+    for (i = 0; i < n; ++i) {
+        xs[i] = x[i];
+        xs[n + i] = x[i];
+        for (k = 0; k < n; ++k) {
+            const mtt_real v = MTT_R(0.5) * (P[i][k] + P[k][i]);
+            Ps[i][k] = v;
+            Ps[i][n + k] = v;
+            Ps[n + i][k] = v;
+            Ps[n + i][n + k] = v;
+        }
+    }
+    return 0;
+}
+
+int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
+                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
+                      mtt_split_cov Pps)
+{
+    mtt_real FP[NS][NS];
+    int i, k, l, ti, tk;
+    if (!n_ok(n)) {
+        return -1;
+    }
+    /* F^s = blockdiag(F, F): each target moves alone; Q^s = blockdiag(Q,
+     * Q): their process noises are independent, so the cross covariance
+     * only propagates (F P_12 F') and the targets decorrelate. */
+    for (ti = 0; ti < 2; ++ti) {
+        const int o = ti * (int)n;
+        for (i = 0; i < n; ++i) {
+            mtt_real s = MTT_R(0.0);
+            for (l = 0; l < n; ++l) {
+                s += F[i][l] * xs[o + l];
+            }
+            xps[o + i] = s;
+            for (k = 0; k < 2 * n; ++k) {
+                s = MTT_R(0.0);
+                for (l = 0; l < n; ++l) {
+                    s += F[i][l] * Ps[o + l][k];
+                }
+                FP[o + i][k] = s;
+            }
+        }
+    }
+    for (ti = 0; ti < 2; ++ti) {
+        for (tk = ti; tk < 2; ++tk) {
+            const int oi = ti * (int)n, ok = tk * (int)n;
+            for (i = 0; i < n; ++i) {
+                for (k = 0; k < n; ++k) {
+                    mtt_real s = (ti == tk) ? MTT_R(0.5) * (Q[i][k] + Q[k][i]) : MTT_R(0.0);
+                    for (l = 0; l < n; ++l) {
+                        s += FP[oi + i][ok + l] * F[k][l];
+                    }
+                    Pps[oi + i][ok + k] = s;
+                }
+            }
+        }
+    }
+    /* P_21 = P_12', then the diagonal blocks symmetrised */
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            Pps[n + k][i] = Pps[i][n + k];
+        }
+    }
+    for (i = 0; i < 2 * n; ++i) {
+        for (k = i + 1; k < 2 * n; ++k) {
+            const mtt_real v = MTT_R(0.5) * (Pps[i][k] + Pps[k][i]);
+            Pps[i][k] = v;
+            Pps[k][i] = v;
+        }
+    }
+    return 0;
+}
+
+/* ---- model 5: just split ---- */
+
+int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
+                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
+                   mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
+                   mtt_real *lik)
+{
+    mtt_real Pq[NS][NS], S[3], Si[3], det, xh[2][NS], Ph[2][NS][NS], P12[NS][NS];
+    mtt_real nu[MTT_MAX_SPLIT_MEAS][2], bn[MTT_MAX_SPLIT_MEAS], bs[2], gs[2];
+    mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
+    uint8_t cl[MTT_MAX_SPLIT_MEAS];
+    uint16_t mi[2] = {0u, 0u};
+    uint16_t j, c[2] = {0u, 0u};
+    static const int sel[2] = {0, 1};
+    int i, k, h;
+    if (!n_ok(n) || m < 2u || m > MTT_MAX_SPLIT_MEAS || !(vg > MTT_R(0.0))) {
+        return -1;
+    }
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            Pq[i][k] = Pp[i][k];
+        }
+    }
+    if (innov2(Pq, 0, R, S, Si, &det) != 0) {
+        return -1;
+    }
+    /* Steps 1 and 2: centres = the two largest beta (ties: lower index). */
+    for (j = 1u; j < m; ++j) {
+        if (beta[j] > beta[c[0]]) {
+            c[0] = j;
+        }
+    }
+    c[1] = (c[0] == 0u) ? 1u : 0u;
+    for (j = 0u; j < m; ++j) {
+        if (j != c[0] && beta[j] > beta[c[1]]) {
+            c[1] = j;
+        }
+    }
+    /* Step 3: every other measurement to the nearer centre, Mahalanobis
+     * distance with S; ties to cluster 1 (the parent). */
+    for (j = 0u; j < m; ++j) {
+        nu[j][0] = z[j][0] - xp[0];
+        nu[j][1] = z[j][1] - xp[1];
+        if (j == c[0] || j == c[1]) {
+            cl[j] = (uint8_t)((j == c[0]) ? 0u : 1u);
+        } else {
+            const mtt_real d0 = quad2(Si, z[j][0] - z[c[0]][0], z[j][1] - z[c[0]][1]);
+            const mtt_real d1 = quad2(Si, z[j][0] - z[c[1]][0], z[j][1] - z[c[1]][1]);
+            cl[j] = (uint8_t)((d1 < d0) ? 1u : 0u);
+        }
+        ++mi[cl[j]];
+    }
+    /* Step 4: beta renormalised per cluster (both targets detected, no
+     * beta_0); a cluster whose betas are all 0 shares equally. */
+    bs[0] = MTT_R(0.0);
+    bs[1] = MTT_R(0.0);
+    gs[0] = MTT_R(0.0);
+    gs[1] = MTT_R(0.0);
+    for (j = 0u; j < m; ++j) {
+        bs[cl[j]] += beta[j];
+        gs[cl[j]] += gauss2(quad2(Si, nu[j][0], nu[j][1]), det);
+    }
+    for (h = 0; h < 2; ++h) {
+        mtt_real nub[QMAX] = {MTT_R(0.0)}, sp[QMAX][QMAX] = {{MTT_R(0.0)}};
+        for (j = 0u; j < m; ++j) {
+            if (cl[j] == (uint8_t)h) {
+                bn[j] = (bs[h] > MTT_R(0.0)) ? beta[j] / bs[h] : MTT_R(1.0) / (mtt_real)mi[h];
+                nub[0] += bn[j] * nu[j][0];
+                nub[1] += bn[j] * nu[j][1];
+            }
+        }
+        for (j = 0u; j < m; ++j) {
+            if (cl[j] == (uint8_t)h) {
+                const mtt_real dx = nu[j][0] - nub[0], dy = nu[j][1] - nub[1];
+                sp[0][0] += bn[j] * dx * dx;
+                sp[0][1] += bn[j] * dx * dy;
+                sp[1][1] += bn[j] * dy * dy;
+            }
+        }
+        sp[1][0] = sp[0][1];
+        Rq[0][0] = R[0];
+        Rq[0][1] = R[1];
+        Rq[1][0] = R[1];
+        Rq[1][1] = R[2];
+        /* Step 5: the PDA update of the half (beta_0 = 0): x_h and P_hh;
+         * A Pp A' is the cross covariance P_12 of [S3] eq. 12. */
+        if (mixed_update(n, 2, sel, xp, Pq, Rq, MTT_R(0.0), nub, sp, xh[h], Ph[h], P12) != 0) {
+            return -1;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        xs[i] = xh[0][i];
+        xs[n + i] = xh[1][i];
+        for (k = 0; k < n; ++k) {
+            Ps[i][k] = Ph[0][i][k];
+            Ps[n + i][n + k] = Ph[1][i][k];
+            Ps[i][n + k] = P12[i][k];
+            Ps[n + i][k] = P12[k][i];
+        }
+    }
+    for (j = 0u; j < m; ++j) {
+        cluster[j] = cl[j];
+        beta_n[j] = bn[j];
+    }
+    /* Likelihood [S3] eq. 13 with the exponent -(m_i - 1) (ALGORITHMS.md
+     * §14.3 RECON): prod_i (1/m_i) sum_{j in I_i} N_j V^-(m_i - 1), returned
+     * as its ratio to V^-m: prod_i (V/m_i) sum_{j in I_i} N_j. */
+    *lik = (vg / (mtt_real)mi[0]) * gs[0] * (vg / (mtt_real)mi[1]) * gs[1];
+    return 0;
+}
+
+/* ---- model 6: split ---- */
+
+int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
+                         uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
+{
+    mtt_real S[3], Si[3], det;
+    mtt_real a[2][MTT_MAX_SPLIT_MEAS];
+    uint16_t j;
+    int t;
+    if (!n_ok(n) || m > MTT_MAX_SPLIT_MEAS || !(pd >= MTT_R(0.0) && pd <= MTT_R(1.0)) ||
+        !(pg > MTT_R(0.0) && pg <= MTT_R(1.0)) || !(gamma > MTT_R(0.0)) || !(lam >= MTT_R(0.0)) ||
+        !mtt_isfinite(lam) || (lam == MTT_R(0.0) && !(vg > MTT_R(0.0)))) {
+        return -1;
+    }
+    for (t = 0; t < 2; ++t) {
+        const int o = t * (int)n;
+        if (innov2(Pps, o, R, S, Si, &det) != 0) {
+            return -1;
+        }
+        for (j = 0u; j < m; ++j) {
+            const mtt_real d2 = quad2(Si, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
+            /* PD V N: the detection factor of [S3] eq. 14 times V (the
+             * ratio to V^-m), or PD N / lambda with a known clutter
+             * density; 0 outside the target's gate (not feasible). */
+            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, det) / lam : vg * gauss2(d2, det);
+            a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
+        }
+    }
+    for (t = 0; t < 2; ++t) {
+        const int o = t * (int)n;
+        for (j = 0u; j < m; ++j) {
+            as->a[t][j] = a[t][j];
+            as->nu[t][j][0] = z[j][0] - xps[o];
+            as->nu[t][j][1] = z[j][1] - xps[o + 1];
+        }
+        /* Undetected: 1 - PD PG, the library's convention for N truncated
+         * to the gate (ALGORITHMS.md §4); PG = 1 gives [S3]'s 1 - PD. */
+        as->b[t] = MTT_R(1.0) - pd * pg;
+    }
+    as->m = m;
+    as->n = n;
+    as->parametric = (uint8_t)((lam > MTT_R(0.0)) ? 1u : 0u);
+    as->joint = 0u;
+    as->pd = pd;
+    as->scale = (lam > MTT_R(0.0)) ? MTT_R(1.0) / lam : vg;
+    return 0;
+}
+
+int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_real R[3])
+{
+    const int n = (int)as->n;
+    const int sel[QMAX] = {0, 1, n, n + 1};
+    mtt_real S[QMAX][NS], L[QMAX][NS], d[QMAX], Si[QMAX][QMAX], det = MTT_R(1.0);
+    int a, b;
+    /* S^s = H^s Pps H^s' + R^s: the joint innovation covariance of the two
+     * targets' measurements, with the cross block H P_12 H'. */
+    for (a = 0; a < QMAX; ++a) {
+        for (b = 0; b < QMAX; ++b) {
+            S[a][b] = MTT_R(0.5) * (Pps[sel[a]][sel[b]] + Pps[sel[b]][sel[a]]);
+        }
+    }
+    for (a = 0; a < QMAX; a += 2) {
+        S[a][a] += R[0];
+        S[a][a + 1] += R[1];
+        S[a + 1][a] += R[1];
+        S[a + 1][a + 1] += R[2];
+    }
+    if (ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, Si) != 0) {
+        return -1;
+    }
+    for (a = 0; a < QMAX; ++a) {
+        det *= d[a];
+        for (b = 0; b < QMAX; ++b) {
+            as->s4i[a][b] = Si[a][b];
+        }
+    }
+    /* PD^2 scale^2 / ((2 pi)^2 sqrt(det S^s)) */
+    as->g4 = as->pd * as->pd * as->scale * as->scale /
+             (MTT_R(4.0) * MTT_PI * MTT_PI * mtt_sqrt(det));
+    as->joint = 1u;
+    return 0;
+}
+
+mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j2)
+{
+    /* Non-parametric: phi!/m! of [S3] eq. 14 (phi = m - number detected)
+     * with the V^m of the ratio folded into the detection factors.
+     * Parametric (Poisson clutter of density lambda): the factorials
+     * cancel, the ratio to lambda^m is the product of the factors. */
+    const int16_t m = (int16_t)as->m;
+    const mtt_real m1 = as->parametric ? MTT_R(1.0) : (mtt_real)m;
+    const mtt_real m2 = as->parametric ? MTT_R(1.0) : (mtt_real)m * (mtt_real)(m - 1);
+    mtt_real w;
+    if (j1 < -1 || j2 < -1 || j1 >= m || j2 >= m || (j1 >= 0 && j1 == j2)) {
+        return MTT_R(0.0); /* not an event: one measurement, two targets */
+    }
+    if (j1 >= 0 && j2 >= 0 && as->joint) {
+        /* both detected, coupled: the joint density N([z_j1; z_j2]; zhat^s,
+         * S^s) in place of the product of the marginals (gates as before) */
+        mtt_real nu4[QMAX], q = MTT_R(0.0);
+        int a, b;
+        if (!(as->a[0][j1] > MTT_R(0.0)) || !(as->a[1][j2] > MTT_R(0.0))) {
+            return MTT_R(0.0);
+        }
+        nu4[0] = as->nu[0][j1][0];
+        nu4[1] = as->nu[0][j1][1];
+        nu4[2] = as->nu[1][j2][0];
+        nu4[3] = as->nu[1][j2][1];
+        for (a = 0; a < QMAX; ++a) {
+            for (b = 0; b < QMAX; ++b) {
+                q += nu4[a] * as->s4i[a][b] * nu4[b];
+            }
+        }
+        w = as->g4 * mtt_exp(MTT_R(-0.5) * q) / m2;
+    } else if (j1 >= 0 && j2 >= 0) {
+        w = as->a[0][j1] * as->a[1][j2] / m2;
+    } else if (j1 >= 0) {
+        w = as->a[0][j1] * as->b[1] / m1;
+    } else if (j2 >= 0) {
+        w = as->b[0] * as->a[1][j2] / m1;
+    } else {
+        w = as->b[0] * as->b[1];
+    }
+    return w;
+}
+
+int mtt_split_joint(mtt_split_assoc *as)
+{
+    const int16_t m = (int16_t)as->m;
+    mtt_real c = MTT_R(0.0);
+    int16_t j1, j2;
+    int t;
+    /* Brute force over the (m + 1)^2 pairs (j1, j2), -1 = undetected;
+     * infeasible ones weigh 0.  First the normalising constant c. */
+    for (j1 = -1; j1 < m; ++j1) {
+        for (j2 = -1; j2 < m; ++j2) {
+            c += mtt_split_event_weight(as, j1, j2);
+        }
+    }
+    if (!(c > MTT_R(0.0)) || !mtt_isfinite(c)) {
+        return -1;
+    }
+    as->lik = c;
+    for (t = 0; t < 2; ++t) {
+        as->beta_miss[t] = MTT_R(0.0);
+        for (j1 = 0; j1 < m; ++j1) {
+            as->beta[t][j1] = MTT_R(0.0);
+        }
+    }
+    for (j1 = -1; j1 < m; ++j1) {
+        for (j2 = -1; j2 < m; ++j2) {
+            const mtt_real p = mtt_split_event_weight(as, j1, j2) / c;
+            if (j1 >= 0) {
+                as->beta[0][j1] += p;
+            } else {
+                as->beta_miss[0] += p;
+            }
+            if (j2 >= 0) {
+                as->beta[1][j2] += p;
+            } else {
+                as->beta_miss[1] += p;
+            }
+        }
+    }
+    as->beta0 = mtt_split_event_weight(as, -1, -1) / c;
+    return 0;
+}
+
+int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
+                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
+                     mtt_split_cov Ps)
+{
+    const int16_t m = (int16_t)as->m;
+    const int n = (int)as->n;
+    const int sel[QMAX] = {0, 1, n, n + 1};
+    mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}}, sp[QMAX][QMAX] = {{MTT_R(0.0)}};
+    mtt_real nub[QMAX] = {MTT_R(0.0)}, zh[QMAX];
+    int16_t j1, j2;
+    int a, b;
+    if (!(as->lik > MTT_R(0.0))) {
+        return -1;
+    }
+    for (a = 0; a < QMAX; ++a) {
+        zh[a] = xps[sel[a]];
+    }
+    /* nu^s = sum_theta P(theta) nu^s(theta), an undetected target's part 0
+     * (ALGORITHMS.md §14.3 CHOICE): from the marginals. */
+    for (j1 = 0; j1 < m; ++j1) {
+        nub[0] += as->beta[0][j1] * (z[j1][0] - zh[0]);
+        nub[1] += as->beta[0][j1] * (z[j1][1] - zh[1]);
+        nub[2] += as->beta[1][j1] * (z[j1][0] - zh[2]);
+        nub[3] += as->beta[1][j1] * (z[j1][1] - zh[3]);
+    }
+    /* The corrected bracket of [S3] eq. 25: sum_theta P(theta) nu(theta)
+     * nu(theta)' - nu^s nu^s', as sum_theta P(theta) (nu(theta) - nu^s)
+     * (nu(theta) - nu^s)' over every event (theta_0 included): equal, and
+     * positive semi-definite term by term. */
+    for (j1 = -1; j1 < m; ++j1) {
+        for (j2 = -1; j2 < m; ++j2) {
+            const mtt_real p = mtt_split_event_weight(as, j1, j2) / as->lik;
+            mtt_real d[QMAX];
+            if (!(p > MTT_R(0.0))) {
+                continue;
+            }
+            d[0] = ((j1 >= 0) ? z[j1][0] - zh[0] : MTT_R(0.0)) - nub[0];
+            d[1] = ((j1 >= 0) ? z[j1][1] - zh[1] : MTT_R(0.0)) - nub[1];
+            d[2] = ((j2 >= 0) ? z[j2][0] - zh[2] : MTT_R(0.0)) - nub[2];
+            d[3] = ((j2 >= 0) ? z[j2][1] - zh[3] : MTT_R(0.0)) - nub[3];
+            for (a = 0; a < QMAX; ++a) {
+                for (b = a; b < QMAX; ++b) {
+                    sp[a][b] += p * d[a] * d[b];
+                }
+            }
+        }
+    }
+    for (a = 0; a < QMAX; ++a) {
+        for (b = 0; b < a; ++b) {
+            sp[a][b] = sp[b][a];
+        }
+    }
+    /* R^s = blockdiag(R, R), H^s = blockdiag(H, H) ([S3] eq. 22, 23). */
+    Rq[0][0] = R[0];
+    Rq[0][1] = R[1];
+    Rq[1][0] = R[1];
+    Rq[1][1] = R[2];
+    Rq[2][2] = R[0];
+    Rq[2][3] = R[1];
+    Rq[3][2] = R[1];
+    Rq[3][3] = R[2];
+    return mixed_update(2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
+}
+
+/* ---- decoupling and conversion ---- */
+
+int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
+                       mtt_real c, mtt_real *d2)
+{
+    mtt_real S1[3], S2[3], Si[3], det;
+    mtt_real sum[NS][NS];
+    if (!n_ok(n)) {
+        return -1;
+    }
+    if (innov2(Pps, 0, R, S1, Si, &det) != 0 || innov2(Pps, (int)n, R, S2, Si, &det) != 0) {
+        return -1;
+    }
+    /* (z1 - z2)' (S1 + S2)^-1 (z1 - z2), [S3] eq. 27 */
+    sum[0][0] = S1[0] + S2[0];
+    sum[0][1] = S1[1] + S2[1];
+    sum[1][1] = S1[2] + S2[2];
+    det = sum[0][0] * sum[1][1] - sum[0][1] * sum[0][1];
+    if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
+        return -1;
+    }
+    Si[0] = sum[1][1] / det;
+    Si[1] = -sum[0][1] / det;
+    Si[2] = sum[0][0] / det;
+    *d2 = quad2(Si, xps[0] - xps[n], xps[1] - xps[n + 1]);
+    return (*d2 >= c) ? 1 : 0;
+}
+
+int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
+                       mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE])
+{
+    mtt_real B[2][NS][NS], L[NS][NS], d[NS];
+    int i, k, h;
+    if (!n_ok(n)) {
+        return -1;
+    }
+    /* The halves, symmetrised; the cross covariance P_12 is dropped: from
+     * now on the two targets are filtered independently. */
+    for (h = 0; h < 2; ++h) {
+        const int o = h * (int)n;
+        for (i = 0; i < n; ++i) {
+            for (k = 0; k < n; ++k) {
+                B[h][i][k] = MTT_R(0.5) * (Ps[o + i][o + k] + Ps[o + k][o + i]);
+            }
+        }
+        if (ldl(n, B[h], L, d) != 0) {
+            return -1;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        x1[i] = xs[i];
+        x2[i] = xs[n + i];
+        for (k = 0; k < n; ++k) {
+            P1[i][k] = B[0][i][k];
+            P2[i][k] = B[1][i][k];
+        }
+    }
+    return 0;
+}
+
+#else
+/* ISO C wants a non-empty translation unit. */
+typedef int mtt_split_left_out;
+#endif /* MTT_WITH_SPLIT */
