@@ -95,4 +95,46 @@
 #error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"
 #endif
 
+/* ---- Interacting multiple models (ALGORITHMS.md §14) ----
+ * MTT_WITH_IMM 1 builds the IMM stages (src/imm.c) and the extra motion
+ * models (src/motion_ca.c, src/motion_ct.c); 0 leaves them out, so a
+ * firmware build keeps one 4-state CV filter per track and its .text.
+ * MTT_MAX_MODELS bounds the models of one IMM track (r), MTT_MAX_STATE the
+ * state size of any model: 6 for constant acceleration [x y vx vy ax ay],
+ * 5 for the coordinated turn [x y vx vy omega], 4 for CV.  Every model's
+ * first four components are [x y vx vy] (the common subspace of the
+ * mixing, ALGORITHMS.md §14.1). */
+#ifndef MTT_WITH_IMM
+#define MTT_WITH_IMM 1
+#endif
+#ifndef MTT_MAX_MODELS
+#if MTT_WITH_IMM
+#define MTT_MAX_MODELS 3
+#else
+#define MTT_MAX_MODELS 1
+#endif
+#endif
+#ifndef MTT_MAX_STATE
+#if MTT_WITH_IMM
+#define MTT_MAX_STATE 6
+#else
+#define MTT_MAX_STATE 4
+#endif
+#endif
+#if MTT_WITH_IMM != 0 && MTT_WITH_IMM != 1
+#error "MTT_WITH_IMM must be 0 or 1"
+#endif
+#if MTT_MAX_MODELS < 1 || MTT_MAX_MODELS > 8
+#error "MTT_MAX_MODELS must be in [1, 8]"
+#endif
+#if MTT_WITH_IMM && MTT_MAX_MODELS < 2
+#error "MTT_WITH_IMM needs MTT_MAX_MODELS >= 2"
+#endif
+#if MTT_MAX_STATE < 4 || MTT_MAX_STATE > 8
+#error "MTT_MAX_STATE must be in [4, 8] (the first four components are x y vx vy)"
+#endif
+#if MTT_WITH_IMM && MTT_MAX_STATE < 6
+#error "MTT_WITH_IMM needs MTT_MAX_STATE >= 6 (the constant-acceleration model)"
+#endif
+
 #endif /* MTT_CONFIG_H */
