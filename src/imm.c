@@ -58,6 +58,47 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
     return 0;
 }
 
+/* Moment-matched mixture of the common parts of r models with weights w
+ * (Σ w = 1), as differences to model ref (see the header):
+ *   xo = x_ref + Σ_{i≠ref} w_i (x_i - x_ref)
+ *   Po = P_ref + Σ_i w_i [d_i d_i' + (P_i - P_ref)],  d_i = x_i - xo
+ * Po symmetric by construction (upper triangle mirrored). */
+static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MTT_MAX_STATE],
+                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xo[MTT_IMM_COMMON],
+                     mtt_real Po[MTT_IMM_COMMON][MTT_IMM_COMMON])
+{
+    mtt_real d[MTT_MAX_MODELS][MTT_IMM_COMMON];
+    uint8_t i, a, b;
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        mtt_real s = MTT_R(0.0);
+        for (i = 0; i < r; ++i) {
+            if (i != ref) {
+                s += w[i] * (x[i][a] - x[ref][a]);
+            }
+        }
+        xo[a] = x[ref][a] + s;
+    }
+    for (i = 0; i < r; ++i) {
+        for (a = 0; a < MTT_IMM_COMMON; ++a) {
+            d[i][a] = x[i][a] - xo[a];
+        }
+    }
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        for (b = a; b < MTT_IMM_COMMON; ++b) {
+            mtt_real s = MTT_R(0.0);
+            for (i = 0; i < r; ++i) {
+                mtt_real t = d[i][a] * d[i][b];
+                if (i != ref) {
+                    t += P[i][a][b] - P[ref][a][b];
+                }
+                s += w[i] * t;
+            }
+            Po[a][b] = P[ref][a][b] + s;
+            Po[b][a] = Po[a][b];
+        }
+    }
+}
+
 int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
                 mtt_real x[][MTT_MAX_STATE], mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE],
                 mtt_real x0[][MTT_MAX_STATE], mtt_real P0[][MTT_MAX_STATE][MTT_MAX_STATE])
@@ -72,38 +113,16 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
         }
     }
     for (j = 0; j < r; ++j) {
-        mtt_real d[MTT_MAX_MODELS][MTT_IMM_COMMON];
-        /* Common mean, as x_j + Σ_{i≠j} μ_{i|j} (x_i - x_j). */
-        for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            mtt_real s = MTT_R(0.0);
-            for (i = 0; i < r; ++i) {
-                if (i != j) {
-                    s += mix[i][j] * (x[i][a] - x[j][a]);
-                }
-            }
-            x0[j][a] = x[j][a] + s;
-        }
+        mtt_real w[MTT_MAX_MODELS], xo[MTT_IMM_COMMON], Po[MTT_IMM_COMMON][MTT_IMM_COMMON];
         for (i = 0; i < r; ++i) {
-            for (a = 0; a < MTT_IMM_COMMON; ++a) {
-                d[i][a] = x[i][a] - x0[j][a];
-            }
+            w[i] = mix[i][j];
         }
-        /* Common block: P_j + Σ_{i≠j} μ_{i|j} (P_i - P_j) + Σ_i μ_{i|j} d_i d_i',
-         * upper triangle mirrored (symmetric by construction). */
+        /* Common part: the mixture with reference model j. */
+        mixture4(r, j, w, x, P, xo, Po);
         for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            for (b = a; b < MTT_IMM_COMMON; ++b) {
-                mtt_real s = MTT_R(0.0);
-                mtt_real v;
-                for (i = 0; i < r; ++i) {
-                    mtt_real t = d[i][a] * d[i][b];
-                    if (i != j) {
-                        t += P[i][a][b] - P[j][a][b];
-                    }
-                    s += mix[i][j] * t;
-                }
-                v = P[j][a][b] + s;
-                P0[j][a][b] = v;
-                P0[j][b][a] = v;
+            x0[j][a] = xo[a];
+            for (b = 0; b < MTT_IMM_COMMON; ++b) {
+                P0[j][a][b] = Po[a][b];
             }
         }
         /* Extras of model j: own mean and block, cross terms scaled by μ_{j|j}. */
@@ -151,40 +170,10 @@ int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[MTT_IMM_COMMON],
                     mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON])
 {
-    mtt_real d[MTT_MAX_MODELS][MTT_IMM_COMMON];
-    uint8_t j, a, b;
     if (r < 1u || r > MTT_MAX_MODELS) {
         return -1;
     }
-    /* Reference: model 0 (see the header on difference sums). */
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        mtt_real s = MTT_R(0.0);
-        for (j = 1; j < r; ++j) {
-            s += mu[j] * (x[j][a] - x[0][a]);
-        }
-        xc[a] = x[0][a] + s;
-    }
-    for (j = 0; j < r; ++j) {
-        for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            d[j][a] = x[j][a] - xc[a];
-        }
-    }
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        for (b = a; b < MTT_IMM_COMMON; ++b) {
-            mtt_real s = MTT_R(0.0);
-            mtt_real v;
-            for (j = 0; j < r; ++j) {
-                mtt_real t = d[j][a] * d[j][b];
-                if (j != 0u) {
-                    t += P[j][a][b] - P[0][a][b];
-                }
-                s += mu[j] * t;
-            }
-            v = P[0][a][b] + s;
-            Pc[a][b] = v;
-            Pc[b][a] = v;
-        }
-    }
+    mixture4(r, 0, mu, x, P, xc, Pc);
     return 0;
 }
 

@@ -56,6 +56,21 @@ static void set_block(mtt_real M[S][S], const double *v, int n)
     }
 }
 
+/* Mixing weights of the 2-model cases against expected c̄ and μ_{i|j}
+ * (row i, column j, row-major). */
+static void check_mix_weights(const mtt_real mu[2], const double cbar_e[2], const double mix_e[4],
+                              mtt_real cbar[2])
+{
+    int i, j;
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, g_Pi, mu, cbar, g_mix));
+    TV_ASSERT_VEC(cbar_e, cbar, 2);
+    for (i = 0; i < 2; ++i) {
+        for (j = 0; j < 2; ++j) {
+            TV_ASSERT_REAL_MSG(mix_e[2 * i + j], g_mix[i][j], "mu_{i|j}");
+        }
+    }
+}
+
 /* ---- TV14 ---- */
 
 static void tv14_inputs(mtt_real mu[2])
@@ -93,15 +108,8 @@ static void test_tv14_mixing(void)
         0.1487603306,  -0.1487603306, 0.2975206612,  2.785123967};
     static const uint8_t n[2] = {4, 4};
     mtt_real mu[2], cbar[2];
-    int i, j;
     tv14_inputs(mu);
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, g_Pi, mu, cbar, g_mix));
-    TV_ASSERT_VEC(cbar_e, cbar, 2);
-    for (i = 0; i < 2; ++i) {
-        for (j = 0; j < 2; ++j) {
-            TV_ASSERT_REAL_MSG(mix_e[2 * i + j], g_mix[i][j], "mu_{i|j}");
-        }
-    }
+    check_mix_weights(mu, cbar_e, mix_e, cbar);
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix(2, n, g_mix, g_x, g_P, g_x0, g_P0));
     TV_ASSERT_VEC(x01, g_x0[0], 4);
     TV_ASSERT_MAT4(P01, g_P0[0]);
@@ -196,13 +204,7 @@ static void test_mix_cv_ca(void)
     }
     set_block(g_P[0], P_cv, 4);
     set_block(g_P[1], P_ca, 6);
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, g_Pi, mu, cbar, g_mix));
-    TV_ASSERT_VEC(cbar_e, cbar, 2);
-    for (i = 0; i < 2; ++i) {
-        for (j = 0; j < 2; ++j) {
-            TV_ASSERT_REAL_MSG(mix_e[2 * i + j], g_mix[i][j], "mu_{i|j}");
-        }
-    }
+    check_mix_weights(mu, cbar_e, mix_e, cbar);
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix(2, n, g_mix, g_x, g_P, g_x0, g_P0));
     TV_ASSERT_VEC(x00, g_x0[0], 4);
     assert_block(P00, g_P0[0], 4, "P0_cv");
