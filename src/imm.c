@@ -183,7 +183,7 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
     mtt_real w = MTT_R(0.0), s = MTT_R(0.0);
     uint8_t j;
     if (r > MTT_MAX_MODELS) {
-        r = MTT_MAX_MODELS;
+        r = 0; /* out of range: PD* = 0, p* = 0 */
     }
     for (j = 0; j < r; ++j) {
         w += cbar[j] * pd[j];

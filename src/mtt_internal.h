@@ -185,7 +185,7 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
                 mtt_real x0[][MTT_MAX_STATE], mtt_real P0[][MTT_MAX_STATE][MTT_MAX_STATE]);
 /* μ_j = Λ_j c̄_j / c (§14.1); returns c = Σ_j Λ_j c̄_j, which is the IPDA L
  * of the existence update (§14.2).  c not positive and finite: μ = c̄,
- * returns 0. */
+ * returns 0; r out of range: returns 0, μ untouched. */
 mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real lam[], mtt_real mu[]);
 /* Combined 4-D estimate Σ μ_j x_j,c and its covariance with the spread
  * term (§14.1); the extras are not part of it.  Returns 0 or -1 (r). */
@@ -194,7 +194,8 @@ int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
                     mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON]);
 /* Model-mixed detection probability PD* = Σ c̄_j PD_j (into *pd_mix) and
  * model-mixed likelihood of one measurement p* = Σ c̄_j PD_j p_j / PD*
- * (p_j: its gate-normalised likelihood under model j; 0 when PD* = 0).
+ * (p_j: its gate-normalised likelihood under model j; 0 when PD* = 0 or
+ * r is out of range).
  * Every association mode runs on (PD*, p*) in place of (PD, p). */
 mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[], const mtt_real p[],
                           mtt_real *pd_mix);

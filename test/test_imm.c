@@ -157,6 +157,10 @@ static void test_bad_arguments(void)
     TV_ASSERT_REAL(0.0, mtt_imm_mode_update(2, cbar, lam0, muk));
     TV_ASSERT_REAL(0.78, muk[0]);
     TV_ASSERT_REAL(0.22, muk[1]);
+    /* r out of range: nothing read, PD* = p* = 0 */
+    muk[0] = MTT_R(1.0);
+    TV_ASSERT_REAL(0.0, mtt_imm_meas_mix(MTT_MAX_MODELS + 1, cbar, lam0, lam0, &muk[0]));
+    TV_ASSERT_REAL(0.0, muk[0]);
 }
 
 /* ---- CV (4) and CA (6) mixed: scripts/imm_vectors.py "IMM mixing" ---- */
