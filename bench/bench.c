@@ -88,14 +88,17 @@ static double median(double *v, size_t n)
  * with one measurement (its predicted position shifted by a fixed offset).
  * Works on copies: the tracker is not changed.  Not inlined, so callgrind
  * reports it as a function of its own. */
-static mtt_real fx[MTT_MAX_TRACKS][4], fP[MTT_MAX_TRACKS][4][4];
+static mtt_state fx[MTT_MAX_TRACKS];
+static mtt_cov fP[MTT_MAX_TRACKS];
 
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static mtt_real floor_run(const mtt_tracker *t, mtt_real dt)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], nu[1][2], beta[1] = {MTT_R(1.0)};
+    mtt_state xp;
+    mtt_cov Pp;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], nu[1][2], beta[1] = {MTT_R(1.0)};
     mtt_real sink = MTT_R(0.0);
     uint16_t i;
     for (i = 0; i < t->n_tracks; ++i) {

@@ -36,6 +36,12 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
  * single-measurement update of ALGORITHMS.md §7.4, and with m = 0, beta0 = 0 it is
  * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
+/* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                       mtt_real *det, mtt_real K[][2]);
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                      const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                      mtt_real beta0, mtt_state x, mtt_cov P);
 void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
@@ -91,6 +97,10 @@ void mtt_ihpda_select_frame(mtt_tracker *trk);
 /* Final recomputation (ALGORITHMS.md §10.3) of every assigned track's row over G
  * minus the measurements assigned to other tracks, when that set changed. */
 void mtt_ihpda_final_frame(mtt_tracker *trk);
+
+/* ---- params.c ---- */
+/* docs/FORMATS.md's defaults of the IMM keys (imm_models from process_psd). */
+void mtt_params_imm_default(mtt_params *p);
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
@@ -173,6 +183,7 @@ typedef struct mtt_mode {
     uint8_t lm;                           /* LM clutter densities (ALGORITHMS.md §8) */
     uint8_t update;                       /* MTT_UPDATE_* */
     uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
+    uint8_t imm;                          /* runs with motion = imm (ALGORITHMS.md §14.2) */
 } mtt_mode;
 extern const mtt_mode mtt_modes[MTT_ASSOC_COUNT];
 /* Clusters, then the mode's association; PDA modes mark every gated
@@ -264,6 +275,23 @@ void mtt_ca_model(mtt_real dt, mtt_real q, mtt_real F[][MTT_MAX_STATE], mtt_real
 #define MTT_CT_N 5
 void mtt_ct_f(mtt_real dt, const mtt_real x[MTT_CT_N], mtt_real xp[MTT_CT_N], mtt_real F[][MTT_MAX_STATE]);
 void mtt_ct_q(mtt_real dt, mtt_real sw, mtt_real sw_turn, mtt_real Q[][MTT_MAX_STATE]);
+/* imm_track.c: the IMM stages of track ti (motion = imm). */
+/* Mixing, every model's prediction and innovation, the combined
+ * prediction in tf.xp/Pp/S/Si/K; returns 1 when every S is valid. */
+int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt);
+/* Half-widths of the window around tf.xp that holds every model's gate. */
+void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_real *wy);
+/* min_j d_j^2 of a measurement (the union gate tests it against gamma). */
+mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy);
+/* The model-mixed likelihood p* of a measurement (ALGORITHMS.md §14.2). */
+mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy);
+/* Split the track's association result (m pairs from `first`, their beta,
+ * beta0) into mode probabilities and per-model betas, update every model,
+ * combine into t.x, t.P (ALGORITHMS.md §14.2). */
+void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,
+                          const mtt_real beta[], mtt_real beta0);
+/* Model states of a new track from its 4-D x, P; dt the two-point interval. */
+void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt);
 #endif /* MTT_WITH_IMM */
 
 #endif /* MTT_INTERNAL_H */

@@ -8,6 +8,70 @@
 #include "mtt_internal.h"
 #include "params_table.h"
 
+/* docs/FORMATS.md's IMM defaults: [cv with process_psd, ca with 10 process_psd]
+ * (both models exist only with MTT_MAX_MODELS >= 2), 0.95 on the diagonal
+ * of the transition matrix, the rest of each row spread evenly, and every
+ * track starting in model 0. */
+void mtt_params_imm_default(mtt_params *p)
+{
+    uint8_t i, j, r = (MTT_MAX_MODELS >= 2) ? 2u : 1u;
+    p->imm_n_models = r;
+    for (i = 0; i < MTT_MAX_MODELS; ++i) {
+        p->imm_model[i] = (i == 1u) ? MTT_MODEL_CA : MTT_MODEL_CV;
+        p->imm_psd[i] = (i == 1u) ? MTT_R(10.0) * p->process_psd : p->process_psd;
+        p->imm_initial[i] = (i == 0u) ? MTT_R(1.0) : MTT_R(0.0);
+        for (j = 0; j < MTT_MAX_MODELS; ++j) {
+            p->imm_transition[i][j] = (i == j) ? MTT_R(0.95) : ((r > 1u) ? MTT_R(0.05) / (mtt_real)(r - 1u) : MTT_R(0.0));
+        }
+    }
+    if (r == 1u) {
+        p->imm_transition[0][0] = MTT_R(1.0);
+    }
+}
+
+/* The IMM keys (ALGORITHMS.md §14): r in [2, MTT_MAX_MODELS], known model
+ * kinds, psd > 0 finite, transition rows and initial probabilities in
+ * [0, 1] summing to 1 within 1e-4 (the decimals of a settings file).
+ * Returns the bad key or NULL.  Checked whatever `motion` is, so a file
+ * is valid or not independently of one switch. */
+static const char *check_imm(const mtt_params *p)
+{
+    const mtt_real tol = MTT_R(1e-4);
+    mtt_real s0 = MTT_R(0.0);
+    uint8_t i, j, r = p->imm_n_models;
+    if (p->motion == MTT_MOTION_CV && r == 1u) {
+        return NULL; /* a build without IMM (MTT_MAX_MODELS 1): nothing to check */
+    }
+    if (r < 2u || r > MTT_MAX_MODELS) {
+        return "imm_models";
+    }
+    for (i = 0; i < r; ++i) {
+        mtt_real s = MTT_R(0.0);
+        if (!((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CA) ||
+            !(p->imm_psd[i] > MTT_R(0.0)) || !mtt_isfinite(p->imm_psd[i])) {
+            return "imm_models";
+        }
+        for (j = 0; j < r; ++j) {
+            const mtt_real v = p->imm_transition[i][j];
+            if (!(v >= MTT_R(0.0) && v <= MTT_R(1.0))) {
+                return "imm_transition";
+            }
+            s += v;
+        }
+        if (!(mtt_fabs(s - MTT_R(1.0)) <= tol)) {
+            return "imm_transition";
+        }
+        if (!(p->imm_initial[i] >= MTT_R(0.0) && p->imm_initial[i] <= MTT_R(1.0))) {
+            return "imm_initial";
+        }
+        s0 += p->imm_initial[i];
+    }
+    if (!(mtt_fabs(s0 - MTT_R(1.0)) <= tol)) {
+        return "imm_initial";
+    }
+    return NULL;
+}
+
 mtt_status mtt_params_default(mtt_params *p)
 {
     if (p == NULL) {
@@ -45,6 +109,8 @@ mtt_status mtt_params_default(mtt_params *p)
     p->nnjpda_threshold = MTT_R(0.0);
     p->adaptive_jpda_distance = MTT_R(9.0);
     p->adaptive_jpda_shrink = MTT_R(3.0);
+    p->motion = MTT_MOTION_CV;
+    mtt_params_imm_default(p);
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;
@@ -125,6 +191,16 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         if (!mtt_params_rule_ok(p, k, 1)) {
             bad = rules[k].name;
         }
+    }
+    if (bad == NULL && !((int)p->motion == (int)MTT_MOTION_CV || (int)p->motion == (int)MTT_MOTION_IMM)) {
+        bad = "motion";
+    }
+    if (bad == NULL) {
+        bad = check_imm(p);
+    }
+    if (bad == NULL && p->motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[p->association].imm)) {
+        bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
+        st = MTT_ERR_UNSUPPORTED;
     }
     if (bad == NULL) {
         return MTT_OK;

@@ -109,6 +109,13 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
         return MTT_ERR_FULL;
     }
     mtt_sym(trk->tracks[idx].P);
+#if MTT_WITH_IMM
+    if (trk->par.motion == MTT_MOTION_IMM) {
+        /* [CHOICE] ALGORITHMS.md §14.2: a seeded track's CA acceleration
+         * variance is q_CA times one time unit (no interval is known) */
+        mtt_imm_seed_track(trk, (uint16_t)idx, MTT_R(1.0));
+    }
+#endif
     if (id != NULL) {
         *id = trk->tracks[idx].id;
     }
@@ -150,5 +157,14 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;
+    memset(view->mu, 0, sizeof view->mu);
+    view->n_models = 1u;
+    view->mu[0] = MTT_R(1.0);
+#if MTT_WITH_IMM
+    if (trk->par.motion == MTT_MOTION_IMM) {
+        view->n_models = trk->par.imm_n_models;
+        memcpy(view->mu, t->mu, sizeof view->mu);
+    }
+#endif
     return MTT_OK;
 }

@@ -88,6 +88,19 @@ typedef enum mtt_assoc {
     MTT_ASSOC_COUNT
 } mtt_assoc;
 
+/** Motion model of every track (docs/FORMATS.md `motion`, ALGORITHMS.md §2, §14). */
+typedef enum mtt_motion {
+    MTT_MOTION_CV = 0,  /**< one constant-velocity filter (ALGORITHMS.md §2) */
+    MTT_MOTION_IMM = 1  /**< interacting multiple models imm_model[] (ALGORITHMS.md §14); needs MTT_WITH_IMM
+                             and lm-ihpda, ihpda, lm-ipda, ipda or jipda, else MTT_ERR_UNSUPPORTED */
+} mtt_motion;
+
+/** A model of an IMM track (docs/FORMATS.md `imm_models`). */
+typedef enum mtt_model_kind {
+    MTT_MODEL_CV = 0,   /**< nearly constant velocity, white-noise acceleration, psd length²/time³ */
+    MTT_MODEL_CA = 1    /**< nearly constant acceleration, white-noise jerk, psd length²/time⁵ */
+} mtt_model_kind;
+
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
 typedef enum mtt_init_gate {
     MTT_INIT_GATE_VMAX = 0,     /**< |z_k - z_{k-1}| <= vmax * dT */
@@ -140,6 +153,12 @@ typedef struct mtt_params {
     mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta */
     mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas */
     mtt_real adaptive_jpda_shrink;  /**< gate shrink factor */
+    mtt_motion motion;              /**< cv, or imm (ALGORITHMS.md §14) */
+    uint8_t imm_n_models;           /**< r: models of an IMM track, 2..MTT_MAX_MODELS */
+    mtt_model_kind imm_model[MTT_MAX_MODELS]; /**< model j (imm_models[j].model) */
+    mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd) */
+    mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
+    mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
@@ -186,6 +205,9 @@ typedef struct mtt_track_view {
     mtt_real existence;   /**< P(target exists | Z^k) in [0, 1] */
     uint32_t age;         /**< frames since birth */
     int32_t meas;         /**< input index of the measurement used this frame, or -1 */
+    uint8_t n_models;     /**< 1 (motion = cv), or r of motion = imm */
+    mtt_real mu[MTT_MAX_MODELS]; /**< model probabilities after this frame's update, imm_models
+                                      order, sum 1 (ALGORITHMS.md §14.1); mu[0] = 1 with cv */
 } mtt_track_view;
 
 /** Event counters (one frame, or cumulative). */
