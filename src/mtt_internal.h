@@ -99,8 +99,8 @@ void mtt_ihpda_select_frame(mtt_tracker *trk);
 void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* ---- params.c ---- */
-/* docs/FORMATS.md's defaults of the IMM keys (imm_models from process_psd). */
-void mtt_params_imm_default(mtt_params *p);
+/* imm_transition and imm_initial: docs/FORMATS.md's defaults for r models. */
+void mtt_params_imm_reset(mtt_params *p, uint8_t r);
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their

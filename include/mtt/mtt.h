@@ -167,7 +167,12 @@ typedef struct mtt_params {
 typedef enum mtt_param_type {
     MTT_PARAM_REAL = 0, /**< count mtt_real values */
     MTT_PARAM_BOOL,     /**< one value, 0 or 1 (a JSON boolean) */
-    MTT_PARAM_ENUM      /**< one value, the index of one of names[] */
+    MTT_PARAM_ENUM,     /**< one value, the index of one of names[] */
+    MTT_PARAM_MODELS    /**< imm_models: a list of up to count {model, process_psd}.  mtt_params_set/get
+                             take 1 + 2 count values: r, then (model index into names[], psd) for each
+                             of count slots (slots from r on are ignored by set, zero from get); psd
+                             within lo, hi.  Setting it resets imm_transition and imm_initial to their
+                             defaults for r models */
 } mtt_param_type;
 
 /** One settings key of mtt_params: the table behind mtt_params_check,
@@ -183,6 +188,9 @@ typedef struct mtt_param_info {
     uint8_t lo_open, hi_open; /**< 1 = bound excluded */
     const char *const *names; /**< MTT_PARAM_ENUM: the spellings, index = value; else NULL */
     uint8_t n_names;
+    uint8_t per_model;        /**< 0; 1: one value per IMM model (count = MTT_MAX_MODELS slots, the
+                                   first r used, the rest 0); 2: an r x r matrix in MTT_MAX_MODELS^2
+                                   slots, row-major with row length MTT_MAX_MODELS */
     const char *cross;        /**< rule against other values that only mtt_params_check
                                    applies ("below confirm_threshold"); NULL if none */
     const char *text;         /**< one-line meaning */

@@ -47,7 +47,8 @@ TRACKER_KEYS = {
     "snr_rho", "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
     "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
-    "adaptive_jpda_distance", "adaptive_jpda_shrink", "initial_tracks",
+    "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
+    "imm_initial", "initial_tracks",
 }
 
 ASSOC_MODES = (
