@@ -50,11 +50,16 @@ static void check(mtt_status st, const char *what)
 
 /* 1 when mode a is built into this library (its default parameters pass
  * mtt_params_check); *name receives its docs/FORMATS.md name. */
+/* --motion: cv (default), or imm with the default models of
+ * docs/FORMATS.md (CV + CA); modes that refuse IMM are skipped. */
+static mtt_motion g_motion = MTT_MOTION_CV;
+
 static int mode_built(mtt_assoc a, const char **name)
 {
     mtt_params p;
     check(mtt_params_default(&p), "mtt_params_default");
     p.association = a;
+    p.motion = g_motion;
     check(mtt_assoc_name(a, name), "mtt_assoc_name");
     return mtt_params_check(&p, NULL) == MTT_OK;
 }
@@ -259,6 +264,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     }
     check(mtt_params_default(&p), "mtt_params_default");
     p.association = mode;
+    p.motion = g_motion;
     p.clutter_density = (mtt_real)(2.0 * n / (side * side));
     p.snr_rho = MTT_R(3.0);
     p.vmax = MTT_R(8.0);
@@ -316,6 +322,9 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
         return -1;
     }
     s.params.association = mode;
+    if (g_motion == MTT_MOTION_IMM) {
+        s.params.motion = MTT_MOTION_IMM; /* the settings file's imm_models, or the defaults */
+    }
     s.params.cycle_counter = ns_counter;
     /* pass 1: find the busiest frame */
     for (i = 0; i < 2; ++i) {
@@ -372,6 +381,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: mtt-bench [--frames N] [--dense N,N,...] [--modes m,m,...]\n"
             "                 [--det D.det.csv --config S.json] [--json OUT.json]\n"
+            "                 [--motion cv|imm]\n"
             "\n"
             "Per-frame cost of each association mode against load, beside a floor of\n"
             "bare Kalman predict+update on the same tracks.\n"
@@ -382,6 +392,8 @@ static void usage(FILE *f)
             "  --det/--config  also replay a detections file and time its busiest frame\n"
             "  --json F     write the results as JSON\n"
             "  --list-modes print the modes built into this library and exit\n"
+            "  --motion M   cv (default) or imm (the default CV + CA models, or the\n"
+            "               --config file's imm_models); modes without IMM are skipped\n"
             "Columns: tracks, pairs = mean per timed frame; med/worst/floor in us;\n"
             "ratio = median / floor median; ns/(t+p) = median ns per (track + gated pair);\n"
             "then the share of each stage (cycle-counter callback).\n");
@@ -418,6 +430,9 @@ int main(int argc, char **argv)
             cfg = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
+        } else if (i + 1 < argc && !strcmp(argv[i], "--motion") &&
+                   (!strcmp(argv[i + 1], "cv") || !strcmp(argv[i + 1], "imm"))) {
+            g_motion = !strcmp(argv[++i], "imm") ? MTT_MOTION_IMM : MTT_MOTION_CV;
         } else {
             fprintf(stderr, "mtt-bench: unknown or incomplete option '%s'\n", argv[i]);
             usage(stderr);

@@ -36,8 +36,10 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
     mtt_sym(Pp);
 }
 
-int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                       mtt_real *det, mtt_real K[][2])
+/* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
+ * build without IMM, so the firmware code is the fixed-size one. */
+static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                   mtt_real *det, mtt_real K[][2])
 {
     mtt_real d;
     int i;
@@ -62,17 +64,25 @@ int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mt
 int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
                      mtt_real K[][2])
 {
-    return mtt_kalman_innov_n(MTT_STATE_N, Pp, R, S, Si, det, K);
+    return innov_n(MTT_STATE_N, Pp, R, S, Si, det, K);
 }
+
+#if MTT_WITH_IMM
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                       mtt_real *det, mtt_real K[][2])
+{
+    return innov_n(n, Pp, R, S, Si, det, K);
+}
+#endif
 
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
 {
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
 }
 
-void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
-                      const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
-                      mtt_real beta0, mtt_state x, mtt_cov P)
+static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                  const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                  mtt_real beta0, mtt_state x, mtt_cov P)
 {
     mtt_cov AP;
     mtt_real A[MTT_MAX_STATE][2];
@@ -151,8 +161,17 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P)
 {
-    mtt_kalman_pda_n(MTT_STATE_N, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
+    pda_n(MTT_STATE_N, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
 }
+
+#if MTT_WITH_IMM
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                      const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                      mtt_real beta0, mtt_state x, mtt_cov P)
+{
+    pda_n(n, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
+}
+#endif
 
 /* A = L D L' (unit lower L) without square roots: cheap on soft float.
  * Returns 0, or -1 when a pivot d_i is not positive and finite. */

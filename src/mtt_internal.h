@@ -36,12 +36,14 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
  * single-measurement update of ALGORITHMS.md §7.4, and with m = 0, beta0 = 0 it is
  * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
+#if MTT_WITH_IMM
 /* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
 int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
                        mtt_real *det, mtt_real K[][2]);
 void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                       const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                       mtt_real beta0, mtt_state x, mtt_cov P);
+#endif
 void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
@@ -99,8 +101,10 @@ void mtt_ihpda_select_frame(mtt_tracker *trk);
 void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* ---- params.c ---- */
+#if MTT_WITH_IMM
 /* imm_transition and imm_initial: docs/FORMATS.md's defaults for r models. */
 void mtt_params_imm_reset(mtt_params *p, uint8_t r);
+#endif
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their

@@ -8,6 +8,7 @@
 #include "mtt_internal.h"
 #include "params_table.h"
 
+#if MTT_WITH_IMM
 /* docs/FORMATS.md's IMM defaults for r models: 0.95 on the diagonal of the
  * transition matrix, the rest of each row spread evenly, every track
  * starting in model 0; the slots beyond r are 0. */
@@ -81,6 +82,7 @@ static const char *check_imm(const mtt_params *p)
     }
     return NULL;
 }
+#endif /* MTT_WITH_IMM */
 
 mtt_status mtt_params_default(mtt_params *p)
 {
@@ -120,7 +122,9 @@ mtt_status mtt_params_default(mtt_params *p)
     p->adaptive_jpda_distance = MTT_R(9.0);
     p->adaptive_jpda_shrink = MTT_R(3.0);
     p->motion = MTT_MOTION_CV;
+#if MTT_WITH_IMM
     imm_default(p);
+#endif
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;
@@ -204,9 +208,11 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
             bad = rules[k].name;
         }
     }
+#if MTT_WITH_IMM
     if (bad == NULL) {
         bad = check_imm(p);
     }
+#endif
     if (bad == NULL && p->motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[p->association].imm)) {
         bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
         st = MTT_ERR_UNSUPPORTED;

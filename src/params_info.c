@@ -111,6 +111,7 @@ static void set_int(mtt_params *p, const info_row *r, int value)
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, SET_FLAG, SET_ENUM)
 }
 
+#if MTT_WITH_IMM
 /* imm_models: v = r, then (model, psd) per slot; slots from r on keep
  * their values.  A new r resets imm_transition and imm_initial to their
  * defaults for r models (so a settings file that sets only imm_models is
@@ -141,6 +142,7 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
     *p = q;
     return MTT_OK;
 }
+#endif
 
 mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
 {
@@ -151,9 +153,11 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     if (st != MTT_OK) {
         return st;
     }
+#if MTT_WITH_IMM
     if (r->info.type == MTT_PARAM_MODELS) {
         return set_models(p, r, v);
     }
+#endif
     if (r->info.type != MTT_PARAM_REAL) {
         /* an index in [0, hi]: whole, and compared before the conversion */
         if (!(v[0] >= 0.0 && v[0] <= r->info.hi && v[0] == (double)(int)v[0])) {

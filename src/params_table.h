@@ -48,6 +48,22 @@ extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_motion_names[2];
 extern const char *const mtt_model_names[2];
 
+/* The IMM rows (ALGORITHMS.md §14): only in a build with MTT_WITH_IMM; without
+ * it only `motion` is a key (and `imm` is refused). */
+#if MTT_WITH_IMM
+#define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                      \
+    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL,           \
+         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³) or `ca` (constant acceleration, white-noise jerk, q in length²/time⁵); not given: cv with process_psd and ca with 10·process_psd (§14.1)") \
+    REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
+         "r rows of r (r models), each row summing to 1",                                           \
+         "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \
+    REAL("imm_initial", imm_initial, MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL,                         \
+         "one per model, summing to 1",                                                               \
+         "with `imm`: the model probabilities of a new or seeded track (§14.2)")
+#else
+#define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
+#endif
+
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
@@ -99,14 +115,7 @@ extern const char *const mtt_model_names[2];
          "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
     ENUM("motion", motion, mtt_motion, 2, mtt_motion_names,                                        \
          "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda") \
-    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL,           \
-         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³) or `ca` (constant acceleration, white-noise jerk, q in length²/time⁵); not given: cv with process_psd and ca with 10·process_psd (§14.1)") \
-    REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
-         "r rows of r (r models), each row summing to 1",                                           \
-         "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \
-    REAL("imm_initial", imm_initial, MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL,                         \
-         "one per model, summing to 1",                                                               \
-         "with `imm`: the model probabilities of a new or seeded track (§14.2)")
+    MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
 #define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,

@@ -18,7 +18,10 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
         t->dead = 0;
         t->meas = -1;
         if (dt > MTT_R(0.0)) {
-            if (trk->par.motion != MTT_MOTION_IMM) {
+#if MTT_WITH_IMM
+            if (trk->par.motion != MTT_MOTION_IMM)
+#endif
+            {
                 mtt_kalman_predict(dt, trk->par.process_psd, t->x, t->P, tf->xp, tf->Pp);
             }
             tf->ex_pred = mtt_existence_predict(t->existence, trk->par.markov_p11, trk->par.markov_p21);

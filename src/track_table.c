@@ -14,6 +14,7 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
         return -1;
     }
     t = &trk->tracks[trk->n_tracks];
+#if MTT_MAX_STATE > MTT_STATE_N
     /* The model's MTT_STATE_N leading components; the rest of the storage
      * (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal inputs give
      * equal tracker states byte for byte. */
@@ -23,6 +24,11 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
         t->x[i] = x[i];
         memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
     }
+#else
+    (void)i;
+    memcpy(t->x, x, sizeof t->x);
+    memcpy(t->P, P, sizeof t->P);
+#endif
     t->existence = existence;
     t->id = trk->next_id++;
     t->age = 0;

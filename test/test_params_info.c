@@ -36,7 +36,11 @@ static void test_table_lists_the_settings_keys(void)
         "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
         "intensity_gate.f1", "intensity_gate.f2", "intensity_gate.blend", "jpda_bias",
         "jpda_star_threshold", "nnjpda_threshold", "adaptive_jpda_distance",
-        "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition", "imm_initial"};
+        "adaptive_jpda_shrink", "motion"
+#if MTT_WITH_IMM
+        , "imm_models", "imm_transition", "imm_initial"
+#endif
+    };
     const mtt_param_info *info = NULL;
     size_t k, i;
     TEST_ASSERT_EQUAL_UINT(sizeof keys / sizeof keys[0], n_keys());
@@ -100,8 +104,10 @@ static void test_get_set_round_trip(void)
     p.init_gate = MTT_INIT_GATE_INTENSITY;
     p.initiate = 0;
     p.motion = MTT_MOTION_IMM;
+#if MTT_WITH_IMM
     p.imm_psd[0] = MTT_R(3.0);
     p.imm_transition[0][0] = MTT_R(0.5);
+#endif
     for (k = 0; mtt_params_info(k, &info) == MTT_OK; ++k) {
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_get(&def, info->key, v, n_values(info)));
         TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_OK, mtt_params_set(&p, info->key, v, n_values(info)),
