@@ -39,39 +39,41 @@ static void sym_n(uint8_t n, mtt_cov P)
     }
 }
 
-/* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1 for CA). */
+/* Row (or column) c of F applied to a CA state vector v: F is per axis
+ * [[1, T, T^2/2], [0, 1, T], [0, 0, 1]] with components (p, v, a) at
+ * (ax, 2 + ax, 4 + ax), so row c adds T times component c + 2 (positions
+ * and velocities) and T^2/2 times component c + 4 (positions). */
+static mtt_real ca_row(uint8_t c, mtt_real t, mtt_real h, mtt_real v0, mtt_real v2, mtt_real v4)
+{
+    return (c < 2u) ? v0 + t * v2 + h * v4 : ((c < 4u) ? v0 + t * v2 : v0);
+}
+
+/* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1
+ * for CA: F's sparsity used, 3 terms per element instead of a 6x6 product). */
 static void model_predict(mtt_model_kind k, mtt_real dt, mtt_real q, const mtt_state x, mtt_cov P,
                           mtt_state xp, mtt_cov Pp)
 {
     mtt_cov F, Q, FP;
-    uint8_t i, j, l;
+    const mtt_real h = MTT_R(0.5) * dt * dt;
+    uint8_t i, j;
     if (k == MTT_MODEL_CV) {
         mtt_motion_predict(dt, q, x, P, xp, Pp);
         sym_n(MTT_STATE_N, Pp);
         return;
     }
     mtt_ca_model(dt, q, F, Q);
+    /* components beyond 5 do not exist in CA: index them as 0 (weight 0) */
     for (i = 0; i < MTT_CA_N; ++i) {
-        mtt_real s = MTT_R(0.0);
-        for (l = 0; l < MTT_CA_N; ++l) {
-            s += F[i][l] * x[l];
-        }
-        xp[i] = s;
+        const uint8_t i2 = (uint8_t)((i + 2u < MTT_CA_N) ? i + 2u : i), i4 = (uint8_t)((i + 4u < MTT_CA_N) ? i + 4u : i);
+        xp[i] = ca_row(i, dt, h, x[i], x[i2], x[i4]);
         for (j = 0; j < MTT_CA_N; ++j) {
-            mtt_real t = MTT_R(0.0);
-            for (l = 0; l < MTT_CA_N; ++l) {
-                t += F[i][l] * P[l][j];
-            }
-            FP[i][j] = t;
+            FP[i][j] = ca_row(i, dt, h, P[i][j], P[i2][j], P[i4][j]);
         }
     }
     for (i = 0; i < MTT_CA_N; ++i) {
         for (j = 0; j < MTT_CA_N; ++j) {
-            mtt_real t = Q[i][j];
-            for (l = 0; l < MTT_CA_N; ++l) {
-                t += FP[i][l] * F[j][l];
-            }
-            Pp[i][j] = t;
+            const uint8_t j2 = (uint8_t)((j + 2u < MTT_CA_N) ? j + 2u : j), j4 = (uint8_t)((j + 4u < MTT_CA_N) ? j + 4u : j);
+            Pp[i][j] = ca_row(j, dt, h, FP[i][j], FP[i][j2], FP[i][j4]) + Q[i][j];
         }
     }
     sym_n(MTT_CA_N, Pp);
@@ -83,8 +85,7 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t r = p->imm_n_models;
-    mtt_real mix[MTT_MAX_MODELS][MTT_MAX_MODELS], S[3], xc[MTT_IMM_COMMON];
-    mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON];
+    mtt_real mix[MTT_MAX_MODELS][MTT_MAX_MODELS], S[3];
     uint8_t n[MTT_MAX_MODELS], j, a;
     int ok = 1;
     for (j = 0; j < r; ++j) {
@@ -111,28 +112,37 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     }
     tf->vgm = MTT_R(0.0);
     for (j = 0; j < r && ok; ++j) {
-        mtt_real det = MTT_R(0.0), vg;
+        mtt_real det = MTT_R(0.0), Si[3], vg;
         ok = mtt_state_finite(tf->xpm[j]) &&
-             mtt_kalman_innov_n(n[j], tf->Ppm[j], trk->R, S, tf->Sim[j], &det, tf->Km[j]) == 0;
+             mtt_kalman_innov_n(n[j], tf->Ppm[j], trk->R, S, Si, &det, tf->Km[j]) == 0;
         if (ok) {
+            memcpy(tf->Sim[j], Si, sizeof Si);
             tf->peakm[j] = mtt_gate_likelihood(MTT_R(0.0), det, p->pg);
             tf->wm[j][0] = mtt_sqrt(trk->gamma * S[0]);
             tf->wm[j][1] = mtt_sqrt(trk->gamma * S[2]);
             vg = mtt_gate_volume(trk->gamma, det);
             tf->vgm = (vg > tf->vgm) ? vg : tf->vgm;
+            if (j == 0u) {
+                /* the single-filter fields, read by gate.c before its IMM branch */
+                memcpy(tf->S, S, sizeof tf->S);
+                memcpy(tf->Si, Si, sizeof tf->Si);
+                tf->det_s = det;
+            }
         }
     }
-    /* The combined prediction (c̄-weighted): the gate's centre and the
-     * 4-D predicted estimate the other stages read. */
-    (void)mtt_imm_combine(r, tf->cbar, tf->xpm, tf->Ppm, xc, Pc);
+    /* The gate's centre: the c̄-weighted predicted position and velocity
+     * (as differences to model 0: no cancellation on large coordinates).
+     * No stage reads a combined predicted covariance of an IMM track: the
+     * gate uses every model's own S (ALGORITHMS.md §14.2). */
     memset(tf->xp, 0, sizeof tf->xp);
-    memset(tf->Pp, 0, sizeof tf->Pp);
     for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        tf->xp[a] = xc[a];
-        memcpy(tf->Pp[a], Pc[a], sizeof Pc[a]);
+        mtt_real d = MTT_R(0.0);
+        for (j = 1; j < r; ++j) {
+            d += tf->cbar[j] * (tf->xpm[j][a] - tf->xpm[0][a]);
+        }
+        tf->xp[a] = tf->xpm[0][a] + d;
     }
-    return ok && mtt_state_finite(tf->xp) &&
-           mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K) == 0;
+    return ok && mtt_state_finite(tf->xp);
 }
 
 void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_real *wy)
