@@ -9,6 +9,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -18,23 +19,6 @@ void tearDown(void) {}
 
 #define S MTT_MAX_STATE
 
-
-/* mtt_ipda_betas over plain arrays (the library's form reads pairs). */
-static void ipda_betas(mtt_real pd, mtt_real pg, const mtt_real *p, const mtt_real *lam, uint16_t m,
-                       mtt_real *beta, mtt_real *beta0, mtt_real *L)
-{
-    mtt_pair pp[MTT_MAX_GATED];
-    uint16_t j;
-    memset(pp, 0, sizeof pp);
-    for (j = 0; j < m; ++j) {
-        pp[j].p = p[j];
-        pp[j].lam = lam[j];
-    }
-    mtt_ipda_betas(pd, pg, pp, m, beta0, L);
-    for (j = 0; j < m; ++j) {
-        beta[j] = pp[j].beta;
-    }
-}
 
 static mtt_real g_Pi[MTT_MAX_MODELS][MTT_MAX_MODELS];
 static mtt_real g_x[MTT_MAX_MODELS][S], g_P[MTT_MAX_MODELS][S][S];
@@ -275,7 +259,7 @@ static void test_ipda_split(void)
     }
     TV_ASSERT_REAL(0.9, pdm);
     /* Track-level IPDA on the mixed quantities: L is §14.2's Σ c̄_j Λ_j. */
-    ipda_betas(pdm, G_PG, pm, lamc, 3, beta, &beta0, &L);
+    tv_ipda_betas(pdm, G_PG, pm, lamc, 3, beta, &beta0, &L);
     TV_ASSERT_REAL(20.392615, L);
     for (j = 0; j < 2; ++j) {
         e0[j] = MTT_R(1.0) - g_pd[j] * G_PG;
@@ -381,7 +365,7 @@ static void test_identical_cv_models(void)
             nu[i][1] = z[f][i][1] - xp[1];
             p[i] = mtt_gate_likelihood(mtt_mahal2(Si, nu[i][0], nu[i][1]), det, pg);
         }
-        ipda_betas(pd, pg, p, lamc, M, beta, &beta0, &L);
+        tv_ipda_betas(pd, pg, p, lamc, M, beta, &beta0, &L);
         mtt_kalman_pda(xp, Pp, K, Si, R3, M, nu, beta, beta0, x, P);
 
         TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(R, g_Pi, mu, cbar, g_mix));
@@ -427,7 +411,7 @@ static void test_identical_cv_models(void)
             TV_ASSERT_REAL(pd, pdm);
             TV_ASSERT_REAL(p[i], pm[i]);
         }
-        ipda_betas(pd, pg, pm, lamc, M, b_imm, &b0_imm, &L_imm);
+        tv_ipda_betas(pd, pg, pm, lamc, M, b_imm, &b0_imm, &L_imm);
         TV_ASSERT_REAL(L, L_imm);
         TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(R, cbar, M, b0_imm, b_imm, e0, e, mu, b0j, bj));
         for (j = 0; j < R; ++j) {
