@@ -43,6 +43,9 @@ static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_re
 {
     mtt_real d;
     int i;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return -1; /* not a model of motion.h (folded away for a constant n) */
+    }
     S[0] = Pp[0][0] + R[0];
     S[1] = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
     S[2] = Pp[1][1] + R[2];
@@ -92,6 +95,9 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
     uint16_t j;
     int i, k;
     mtt_real bsum = MTT_R(0.0);
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return; /* not a model of motion.h (folded away for a constant n) */
+    }
     for (j = 0; j < m; ++j) {
         cx += beta[j] * nu[j][0];
         cy += beta[j] * nu[j][1];
