@@ -201,8 +201,10 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t r = trk->par.imm_n_models;
-    mtt_real e0[MTT_MAX_MODELS], e[MTT_MAX_GATED][MTT_MAX_MODELS];
-    mtt_real b0j[MTT_MAX_MODELS], bj[MTT_MAX_MODELS][MTT_MAX_GATED];
+    mtt_real e0[MTT_MAX_MODELS], b0j[MTT_MAX_MODELS];
+    /* in the tracker's row scratch, not on the stack */
+    mtt_real(*e)[MTT_MAX_MODELS] = trk->row.imm_e;
+    mtt_real(*bj)[MTT_MAX_GATED] = trk->row.imm_beta;
     mtt_real(*nu)[2] = trk->row.nu;
     mtt_real xc[MTT_IMM_COMMON], Pc[MTT_IMM_COMMON][MTT_IMM_COMMON];
     uint16_t i;

@@ -105,6 +105,12 @@ typedef struct mtt_row_scratch {
     mtt_real L[MTT_MAX_GATED];
     mtt_real nu[MTT_MAX_GATED][2];
     uint8_t rank[MTT_MAX_GATED];
+#if MTT_WITH_IMM
+    /* IMM split of one track (ALGORITHMS.md §14.2): p_i^j per pair and
+     * model, and each model's betas. */
+    mtt_real imm_e[MTT_MAX_GATED][MTT_MAX_MODELS];
+    mtt_real imm_beta[MTT_MAX_MODELS][MTT_MAX_GATED];
+#endif
 } mtt_row_scratch;
 
 /** Columns of the optimal 2-D assignment: the measurements one cluster can
