@@ -50,11 +50,16 @@ static void check(mtt_status st, const char *what)
 
 /* 1 when mode a is built into this library (its default parameters pass
  * mtt_params_check); *name receives its docs/FORMATS.md name. */
+/* --motion: cv (default), or imm with the default models of
+ * docs/FORMATS.md (CV + CA); modes that refuse IMM are skipped. */
+static mtt_motion g_motion = MTT_MOTION_CV;
+
 static int mode_built(mtt_assoc a, const char **name)
 {
     mtt_params p;
     check(mtt_params_default(&p), "mtt_params_default");
     p.association = a;
+    p.motion = g_motion;
     check(mtt_assoc_name(a, name), "mtt_assoc_name");
     return mtt_params_check(&p, NULL) == MTT_OK;
 }
@@ -88,14 +93,17 @@ static double median(double *v, size_t n)
  * with one measurement (its predicted position shifted by a fixed offset).
  * Works on copies: the tracker is not changed.  Not inlined, so callgrind
  * reports it as a function of its own. */
-static mtt_real fx[MTT_MAX_TRACKS][4], fP[MTT_MAX_TRACKS][4][4];
+static mtt_state fx[MTT_MAX_TRACKS];
+static mtt_cov fP[MTT_MAX_TRACKS];
 
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static mtt_real floor_run(const mtt_tracker *t, mtt_real dt)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], nu[1][2], beta[1] = {MTT_R(1.0)};
+    mtt_state xp;
+    mtt_cov Pp;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], nu[1][2], beta[1] = {MTT_R(1.0)};
     mtt_real sink = MTT_R(0.0);
     uint16_t i;
     for (i = 0; i < t->n_tracks; ++i) {
@@ -259,6 +267,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     }
     check(mtt_params_default(&p), "mtt_params_default");
     p.association = mode;
+    p.motion = g_motion;
     p.clutter_density = (mtt_real)(2.0 * n / (side * side));
     p.snr_rho = MTT_R(3.0);
     p.vmax = MTT_R(8.0);
@@ -319,6 +328,9 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
         return -1;
     }
     s.params.association = mode;
+    if (g_motion == MTT_MOTION_IMM) {
+        s.params.motion = MTT_MOTION_IMM; /* the settings file's imm_models, or the defaults */
+    }
     s.params.cycle_counter = ns_counter;
     if (variant >= 0) {
         s.params.lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
@@ -378,6 +390,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: mtt-bench [--frames N] [--dense N,N,...] [--modes m,m,...]\n"
             "                 [--det D.det.csv --config S.json] [--json OUT.json]\n"
+            "                 [--motion cv|imm]\n"
             "\n"
             "Per-frame cost of each association mode against load, beside a floor of\n"
             "bare Kalman predict+update on the same tracks.\n"
@@ -390,6 +403,8 @@ static void usage(FILE *f)
             "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
             "               (default: s0 for dense, the config's for the replay)\n"
             "  --list-modes print the modes built into this library and exit\n"
+            "  --motion M   cv (default) or imm (the default CV + CA models, or the\n"
+            "               --config file's imm_models); modes without IMM are skipped\n"
             "Columns: tracks, pairs = mean per timed frame; med/worst/floor in us;\n"
             "ratio = median / floor median; ns/(t+p) = median ns per (track + gated pair);\n"
             "then the share of each stage (cycle-counter callback).\n");
@@ -434,6 +449,9 @@ int main(int argc, char **argv)
             }
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
+        } else if (i + 1 < argc && !strcmp(argv[i], "--motion") &&
+                   (!strcmp(argv[i + 1], "cv") || !strcmp(argv[i + 1], "imm"))) {
+            g_motion = !strcmp(argv[++i], "imm") ? MTT_MOTION_IMM : MTT_MOTION_CV;
         } else {
             fprintf(stderr, "mtt-bench: unknown or incomplete option '%s'\n", argv[i]);
             usage(stderr);

@@ -342,7 +342,7 @@ static int run(const options *o)
         rc = EXIT_FAIL;
         goto done;
     }
-    fputs(MTT_IO_TRACKS_HEADER "\n", out);
+    mtt_io_write_tracks_header(out, &settings.params);
 
     for (k = 0; k < det.n_scans; ++k) {
         const mtt_io_scan *sc = &det.scans[k];

@@ -189,6 +189,10 @@ void mtt_io_seed_key(size_t i, const char *member, char *buf, size_t size);
 /** The header line of a tracks file. */
 #define MTT_IO_TRACKS_HEADER "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy"
 
+/** The header line for parameters p: with motion = imm the trailing
+ *  columns mu_0 .. mu_{r-1} (docs/FORMATS.md). */
+void mtt_io_write_tracks_header(FILE *out, const mtt_params *p);
+
 /** Write the rows of trk's live tracks after scan sc (confirmed ones only
  *  if confirmed_only), the time as the detections file gave it; adds the
  *  rows written to *rows.  Returns the first failing mtt_status. */

@@ -23,6 +23,9 @@ static const char *const seed_keys[] = {"x", "y", "vx", "vy", "P"};
 #define N_SEED_KEYS (sizeof seed_keys / sizeof seed_keys[0])
 
 #define KEY_MAX 160 /* longest key path in a message */
+/* Values of one key through mtt_params_set/get: imm_transition's
+ * MTT_MAX_MODELS^2 slots, imm_models' 1 + 2 MTT_MAX_MODELS. */
+#define VALS_MAX (MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS + 3)
 
 typedef struct sctx {
     const char *file;
@@ -273,11 +276,11 @@ static int report_range(const sctx *c, const mtt_param_info *info, const char *k
                         const double *v)
 {
     char sub[KEY_MAX + 32], range[96], val[64];
-    double w[3];
+    double w[VALS_MAX];
     size_t e;
 
     range_text(info, range, sizeof range);
-    for (e = 0; e < info->count && info->count > 1; ++e) {
+    for (e = 0; e < info->count && info->count > 1 && info->type == MTT_PARAM_REAL; ++e) {
         mtt_params q = c->s->params;
         if (mtt_params_get(&q, info->key, w, info->count) != MTT_OK)
             break;
@@ -290,20 +293,124 @@ static int report_range(const sctx *c, const mtt_param_info *info, const char *k
         }
     }
     values_text(v, info->count, format_bound, val, sizeof val);
-    mtt_io_error_key(c->file, key, "must be %s, found %s", range, val);
+    mtt_io_error_key(c->file, key, "must be %s, found %s", range,
+                     info->type == MTT_PARAM_MODELS ? "a model out of range" : val);
     return MTT_IO_EINPUT;
+}
+
+/* imm_models: a list of 2 to MTT_MAX_MODELS objects {"model": M, "process_psd": q}. */
+static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *j, const char *key,
+                        double *v)
+{
+    char sub[KEY_MAX + 48], list[64];
+    const cJSON *e, *m;
+    size_t i = 0, a;
+    int rc, n = cJSON_IsArray(j) ? cJSON_GetArraySize(j) : -1;
+
+    if (n < 2 || n > (int)info->count) {
+        mtt_io_error_key(c->file, key, "must be a list of 2 to %u objects {\"model\": M, "
+                         "\"process_psd\": q}, found %s", (unsigned)info->count,
+                         n < 0 ? json_type(j) : (n < 2 ? "fewer" : "more"));
+        return MTT_IO_EINPUT;
+    }
+    memset(v, 0, VALS_MAX * sizeof v[0]);
+    v[0] = (double)n;
+    cJSON_ArrayForEach(e, j)
+    {
+        snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)i);
+        if (!cJSON_IsObject(e)) {
+            mtt_io_error_key(c->file, sub, "must be an object {\"model\": M, \"process_psd\": q}, "
+                             "found %s", json_type(e));
+            return MTT_IO_EINPUT;
+        }
+        cJSON_ArrayForEach(m, e)
+        {
+            if (strcmp(m->string, "model") != 0 && strcmp(m->string, "process_psd") != 0) {
+                snprintf(sub, sizeof sub, "%s[%lu].%s", key, (unsigned long)i, m->string);
+                mtt_io_error_key(c->file, sub, "unknown key (expected model, process_psd)");
+                return MTT_IO_EINPUT;
+            }
+        }
+        m = cJSON_GetObjectItemCaseSensitive(e, "model");
+        snprintf(sub, sizeof sub, "%s[%lu].model", key, (unsigned long)i);
+        name_list(list, sizeof list, info, 0);
+        if (!cJSON_IsString(m)) {
+            mtt_io_error_key(c->file, sub, "must be one of: %s", list);
+            return MTT_IO_EINPUT;
+        }
+        for (a = 0; a < info->n_names && strcmp(m->valuestring, info->names[a]) != 0; ++a)
+            ;
+        if (a == info->n_names) {
+            mtt_io_error_key(c->file, sub, "unknown model '%s' (expected one of: %s)",
+                             m->valuestring, list);
+            return MTT_IO_EINPUT;
+        }
+        v[1 + 2 * i] = (double)a;
+        m = cJSON_GetObjectItemCaseSensitive(e, "process_psd");
+        snprintf(sub, sizeof sub, "%s[%lu].process_psd", key, (unsigned long)i);
+        if (m == NULL) {
+            mtt_io_error_key(c->file, sub, "missing");
+            return MTT_IO_EINPUT;
+        }
+        if ((rc = get_number(c, m, sub, &v[2 + 2 * i])) != MTT_IO_OK)
+            return rc;
+        if (!(v[2 + 2 * i] > 0.0)) {
+            mtt_io_error_key(c->file, sub, "must be > 0, found %g", v[2 + 2 * i]);
+            return MTT_IO_EINPUT;
+        }
+        ++i;
+    }
+    return MTT_IO_OK;
+}
+
+/* A per-model key: r numbers (per_model 1) or r rows of r numbers
+ * (per_model 2), r <= MTT_MAX_MODELS, into the MTT_MAX_MODELS slots (the
+ * rest 0); mtt_params_check then holds r against imm_models. */
+static int parse_per_model(const sctx *c, const mtt_param_info *info, const cJSON *j,
+                           const char *key, double *v)
+{
+    char sub[KEY_MAX + 32];
+    const cJSON *e;
+    size_t i = 0;
+    int rc, n = cJSON_IsArray(j) ? cJSON_GetArraySize(j) : -1;
+
+    if (n < 1 || n > MTT_MAX_MODELS) {
+        mtt_io_error_key(c->file, key, "must be %s, one per model of imm_models (at most %d), "
+                         "found %s", info->per_model == 2 ? "an array of rows" : "an array of numbers",
+                         MTT_MAX_MODELS, n < 0 ? json_type(j) : "more");
+        return MTT_IO_EINPUT;
+    }
+    memset(v, 0, VALS_MAX * sizeof v[0]);
+    if (info->per_model == 1)
+        return get_numbers(c, j, key, (size_t)n, v);
+    cJSON_ArrayForEach(e, j)
+    {
+        snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)i);
+        if ((rc = get_numbers(c, e, sub, (size_t)n, v + i * MTT_MAX_MODELS)) != MTT_IO_OK)
+            return rc;
+        ++i;
+    }
+    return MTT_IO_OK;
 }
 
 /* Read the value of table key `info` into the parameters. */
 static int parse_param(const sctx *c, const mtt_param_info *info, const cJSON *j, const char *key)
 {
-    double v[3];
-    size_t a;
+    double v[VALS_MAX];
+    size_t a, n = info->count;
     int rc;
 
     switch (info->type) {
+    case MTT_PARAM_MODELS:
+        if ((rc = parse_models(c, info, j, key, v)) != MTT_IO_OK)
+            return rc;
+        n = 1u + 2u * info->count;
+        break;
     case MTT_PARAM_REAL:
-        rc = info->count == 1 ? get_number(c, j, key, v) : get_numbers(c, j, key, info->count, v);
+        if (info->per_model != 0)
+            rc = parse_per_model(c, info, j, key, v);
+        else
+            rc = info->count == 1 ? get_number(c, j, key, v) : get_numbers(c, j, key, info->count, v);
         if (rc != MTT_IO_OK)
             return rc;
         break;
@@ -331,7 +438,7 @@ static int parse_param(const sctx *c, const mtt_param_info *info, const cJSON *j
         v[0] = (double)a;
         break;
     }
-    if (mtt_params_set(&c->s->params, info->key, v, info->count) != MTT_OK)
+    if (mtt_params_set(&c->s->params, info->key, v, n) != MTT_OK)
         return report_range(c, info, key, v);
     return MTT_IO_OK;
 }
@@ -474,6 +581,15 @@ static int parse_object(const sctx *c, const cJSON *obj, const char *prefix)
     size_t row = 0;
     int rc;
 
+    /* imm_models first: it sets r, and resets imm_transition and
+     * imm_initial to their defaults for r models (whatever the key order). */
+    j = prefix[0] == '\0' ? cJSON_GetObjectItemCaseSensitive(obj, "imm_models") : NULL;
+    if (j != NULL && classify(prefix, j->string, &row, NULL) == NAME_KEY) {
+        if (mtt_params_info(row, &info) != MTT_OK)
+            return MTT_IO_ESYS;
+        if ((rc = parse_param(c, info, j, j->string)) != MTT_IO_OK)
+            return rc;
+    }
     cJSON_ArrayForEach(j, obj)
     {
         suggestion sg = {j->string, (size_t)-1, ""};
@@ -493,7 +609,8 @@ static int parse_object(const sctx *c, const cJSON *obj, const char *prefix)
         } else if (kind == NAME_KEY) {
             if (mtt_params_info(row, &info) != MTT_OK)
                 return MTT_IO_ESYS;
-            rc = parse_param(c, info, j, key);
+            rc = (prefix[0] == '\0' && strcmp(j->string, "imm_models") == 0) ? MTT_IO_OK
+                                                                           : parse_param(c, info, j, key);
         } else {
             char sub[KEY_MAX + 2], list[KEY_MAX * 2];
             size_t i, len = 0, plen;
@@ -523,8 +640,8 @@ static int check_params(const sctx *c)
 {
     const char *bad = NULL, *text = "?";
     const mtt_param_info *info = NULL;
-    char list[512], val[96], range[96];
-    double v[3];
+    char list[512], val[256], range[96];
+    double v[VALS_MAX];
     size_t row;
     mtt_status st = mtt_params_check(&c->s->params, &bad);
 
@@ -534,8 +651,16 @@ static int check_params(const sctx *c)
     case MTT_ERR_PARAM:
         if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
             mtt_params_info(row, &info) != MTT_OK ||
-            mtt_params_get(&c->s->params, bad, v, info->count) != MTT_OK) {
+            mtt_params_get(&c->s->params, bad, v,
+                           info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count) != MTT_OK) {
             mtt_io_error_key(c->file, bad != NULL ? bad : "?", "rejected by mtt_params_check");
+            return MTT_IO_EINPUT;
+        }
+        if (info->type == MTT_PARAM_MODELS || info->per_model != 0) {
+            /* the IMM keys: r models, and the lists that must match them */
+            mtt_io_error_key(c->file, bad, "must be %s (with %d models in imm_models)",
+                             info->cross != NULL ? info->cross : "2 or more models",
+                             (int)c->s->params.imm_n_models);
             return MTT_IO_EINPUT;
         }
         values_text(v, info->count, format_bound, val, sizeof val);
@@ -555,6 +680,13 @@ static int check_params(const sctx *c)
             return MTT_IO_EINPUT;
         }
         name_list(list, sizeof list, info, 1);
+        if (strcmp(bad, "motion") == 0) {
+            mtt_io_error_key(c->file, bad, "motion = imm needs association lm-ihpda, ihpda, lm-ipda, "
+                             "ipda or jipda, and a build with MTT_WITH_IMM (association is %s)",
+                             mtt_params_info(0, &info) == MTT_OK
+                                 ? info->names[(size_t)c->s->params.association] : "?");
+            return MTT_IO_EINPUT;
+        }
         mtt_io_error_key(c->file, bad, "%s '%s' is not implemented in this version (available: %s)",
                          bad, info->names[(size_t)v[0]], list);
         return MTT_IO_EINPUT;
@@ -571,18 +703,61 @@ void mtt_io_list_settings(FILE *out)
 {
     const mtt_param_info *info;
     mtt_params def;
-    double v[3];
-    char type[32], range[512], deflt[128];
+    double v[VALS_MAX];
+    char type[32], range[512], deflt[256];
     size_t i, k, len;
 
     if (mtt_params_default(&def) != MTT_OK)
         return;
     fputs("| key | type | range | default | meaning |\n|---|---|---|---|---|\n", out);
     for (i = 0; mtt_params_info(i, &info) == MTT_OK; ++i) {
-        if (mtt_params_get(&def, info->key, v, info->count) != MTT_OK)
+        if (mtt_params_get(&def, info->key, v,
+                           info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count) != MTT_OK)
             return;
         switch (info->type) {
+        case MTT_PARAM_MODELS:
+            snprintf(type, sizeof type, "list of objects");
+            len = (size_t)snprintf(range, sizeof range, "2 to %u entries; `model` one of ",
+                                   (unsigned)info->count);
+            for (k = 0; k < info->n_names; ++k)
+                len += (size_t)snprintf(range + len, sizeof range - len, "%s`%s`",
+                                        k == 0 ? "" : ", ", info->names[k]);
+            len += (size_t)snprintf(range + len, sizeof range - len, "; `process_psd` ");
+            range_text(info, range + len, sizeof range - len);
+            len = 0;
+            deflt[0] = '\0';
+            for (k = 0; k < (size_t)v[0]; ++k) {
+                char num[32];
+                format_real(v[2 + 2 * k], num, sizeof num);
+                len += (size_t)snprintf(deflt + len, sizeof deflt - len,
+                                        "%s{\"model\": \"%s\", \"process_psd\": %s}", k == 0 ? "`[" : ", ",
+                                        info->names[(size_t)v[1 + 2 * k]], num);
+            }
+            snprintf(deflt + len, sizeof deflt - len, "]`");
+            break;
         case MTT_PARAM_REAL:
+            if (info->per_model != 0) {
+                size_t r = def.imm_n_models, i2;
+                snprintf(type, sizeof type, info->per_model == 2 ? "r rows of r numbers" : "r numbers");
+                len = (size_t)snprintf(range, sizeof range, "each ");
+                range_text(info, range + len, sizeof range - len);
+                len = strlen(range);
+                if (info->cross != NULL)
+                    snprintf(range + len, sizeof range - len, "; %s", info->cross);
+                if (info->per_model == 1) {
+                    values_text(v, r, format_real, deflt, sizeof deflt);
+                } else {
+                    len = (size_t)snprintf(deflt, sizeof deflt, "[");
+                    for (i2 = 0; i2 < r; ++i2) {
+                        char rowt[96];
+                        values_text(v + i2 * MTT_MAX_MODELS, r, format_real, rowt, sizeof rowt);
+                        len += (size_t)snprintf(deflt + len, sizeof deflt - len, "%s%s",
+                                                i2 == 0 ? "" : ", ", rowt);
+                    }
+                    snprintf(deflt + len, sizeof deflt - len, "]");
+                }
+                break;
+            }
             if (info->count == 1)
                 snprintf(type, sizeof type, "number");
             else
@@ -616,6 +791,26 @@ void mtt_io_list_settings(FILE *out)
           "that exist from the first scan: confirmed, existence 1, identities 0, 1, ... in list "
           "order; without `\"P\"` the two-point covariance of the first scan interval |\n",
           out);
+}
+
+/* imm_models not given: docs/FORMATS.md's default follows process_psd,
+ * [cv with process_psd, ca with 10 process_psd], keeping imm_transition
+ * and imm_initial as read (r stays 2). */
+static int default_models(const sctx *c)
+{
+    mtt_params *p = &c->s->params;
+    uint8_t i;
+    if (p->imm_n_models < 2u)
+        return MTT_IO_OK; /* a build without IMM */
+    for (i = 0; i < 2u; ++i) {
+        p->imm_psd[i] = (i == 1u) ? MTT_R(10.0) * p->process_psd : p->process_psd;
+        if (!(p->imm_psd[i] <= MTT_REAL_MAX)) {
+            mtt_io_error_key(c->file, "process_psd", "10 x process_psd (the default CA model of "
+                             "imm_models) does not fit the tracker's real type");
+            return MTT_IO_EINPUT;
+        }
+    }
+    return MTT_IO_OK;
 }
 
 /* cJSON stops just past the offending token: report the line of the last
@@ -695,6 +890,8 @@ int mtt_io_read_settings(const char *path, mtt_io_settings *s)
         rc = MTT_IO_EINPUT;
     } else {
         rc = parse_object(&c, root, "");
+        if (rc == MTT_IO_OK && cJSON_GetObjectItemCaseSensitive(root, "imm_models") == NULL)
+            rc = default_models(&c);
         if (rc == MTT_IO_OK)
             rc = check_params(&c);
     }

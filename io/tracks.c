@@ -17,7 +17,7 @@ mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_s
                                int confirmed_only, unsigned long *rows)
 {
     char time_str[32];
-    size_t n, i;
+    size_t n, i, k;
     mtt_status st;
 
     if ((st = mtt_tracker_count(trk, &n)) != MTT_OK)
@@ -31,11 +31,24 @@ mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_s
             continue;
         fprintf(out,
                 "%lu,%s,%" PRIu32 ",%s," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT
-                "," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT "\n",
+                "," REAL_FMT "," REAL_FMT "," REAL_FMT "," REAL_FMT,
                 sc->scan, time_str, v.id, v.confirmed ? "confirmed" : "tentative", (double)v.x[0],
                 (double)v.x[1], (double)v.x[2], (double)v.x[3], (double)v.existence,
                 (double)v.P[0][0], (double)v.P[0][1], (double)v.P[1][1]);
+        /* motion = imm: the model probabilities, imm_models order */
+        for (k = 0; v.n_models > 1u && k < v.n_models; ++k)
+            fprintf(out, "," REAL_FMT, (double)v.mu[k]);
+        fputc('\n', out);
         ++*rows;
     }
     return MTT_OK;
+}
+
+void mtt_io_write_tracks_header(FILE *out, const mtt_params *p)
+{
+    uint8_t k;
+    fputs(MTT_IO_TRACKS_HEADER, out);
+    for (k = 0; p->motion == MTT_MOTION_IMM && k < p->imm_n_models; ++k)
+        fprintf(out, ",mu_%u", (unsigned)k);
+    fputc('\n', out);
 }

@@ -90,20 +90,21 @@ const char *const mtt_assoc_names[MTT_ASSOC_COUNT] = {
     "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"};
 
 /* One row per mode, in mtt_assoc order: association routine, LM
- * densities, update kind, baseline. */
+ * densities, update kind, baseline, IMM (ALGORITHMS.md §14.2: the modes whose
+ * event likelihoods are linear in each track's detection factors). */
 const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
-    {MTT_ASSOCIATE_MMR, 1, ONE, 0},
-    {MTT_ASSOCIATE_SELECT, 0, ONE, 0},
-    {MTT_ASSOCIATE_IPDA, 1, PDA, 0},
-    {MTT_ASSOCIATE_IPDA, 0, PDA, 0},
-    {MTT_ASSOCIATE_ASSIGN_2D, 0, ONE, 1},
-    {MTT_ASSOCIATE_JIPDA, 0, PDA, 1},
-    {MTT_ASSOCIATE_JPDA, 0, PDA, 1},
-    {MTT_ASSOCIATE_CHEAP_JPDA, 0, PDA, 1},
-    {MTT_ASSOCIATE_SUBOPT_JPDA, 0, PDA, 1},
-    {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1},
-    {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1},
-    {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1},
+    {MTT_ASSOCIATE_MMR, 1, ONE, 0, 1},
+    {MTT_ASSOCIATE_SELECT, 0, ONE, 0, 1},
+    {MTT_ASSOCIATE_IPDA, 1, PDA, 0, 1},
+    {MTT_ASSOCIATE_IPDA, 0, PDA, 0, 1},
+    {MTT_ASSOCIATE_ASSIGN_2D, 0, ONE, 1, 0},
+    {MTT_ASSOCIATE_JIPDA, 0, PDA, 1, 1},
+    {MTT_ASSOCIATE_JPDA, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_CHEAP_JPDA, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_SUBOPT_JPDA, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1, 0},
+    {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 0},
 };
 
 void mtt_associate_frame(mtt_tracker *trk)

@@ -75,6 +75,9 @@ void mtt_gate_frame(mtt_tracker *trk)
     mtt_real cd[MTT_MAX_GATED];
     uint16_t i, k;
     int resort = 0;
+#if MTT_WITH_IMM
+    const int imm = trk->par.motion == MTT_MOTION_IMM;
+#endif
 
     for (i = 0; i < n; ++i) {
         trk->order[i] = i;
@@ -96,6 +99,13 @@ void mtt_gate_frame(mtt_tracker *trk)
         tf->vg = mtt_gate_volume(gamma, tf->det_s);
         wx = mtt_sqrt(gamma * tf->S[0]);
         wy = mtt_sqrt(gamma * tf->S[2]);
+#if MTT_WITH_IMM
+        if (imm) {
+            /* the union of the model gates (ALGORITHMS.md §14.2) */
+            tf->vg = tf->vgm;
+            mtt_imm_gate_window(trk, i, &wx, &wy);
+        }
+#endif
         for (k = lower_bound_x(trk, zx - wx); k < n; ++k) {
             uint16_t j = trk->order[k];
             mtt_real dx = trk->meas[j].x - zx, dy = trk->meas[j].y - zy, d2;
@@ -105,7 +115,11 @@ void mtt_gate_frame(mtt_tracker *trk)
             if (mtt_fabs(dy) > wy) {
                 continue;
             }
+#if MTT_WITH_IMM
+            d2 = imm ? mtt_imm_gate_d2(trk, i, trk->meas[j].x, trk->meas[j].y) : mtt_mahal2(tf->Si, dx, dy);
+#else
             d2 = mtt_mahal2(tf->Si, dx, dy);
+#endif
             if (!(d2 <= gamma)) {
                 continue;
             }
@@ -147,6 +161,11 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.track = i;
             np.meas = cm[a];
             np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
+#if MTT_WITH_IMM
+            if (imm) {
+                np.p = mtt_imm_gate_p(trk, i, trk->meas[cm[a]].x, trk->meas[cm[a]].y);
+            }
+#endif
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);
             np.beta = MTT_R(0.0);

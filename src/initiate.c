@@ -148,9 +148,15 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
                 if (!birth_ok(x, P)) {
                     continue;
                 }
-                if (mtt_track_append(trk, x, P, trk->par.existence_init, 0, 1) < 0) {
+                int ni = mtt_track_append(trk, x, P, trk->par.existence_init, 0, 1);
+                if (ni < 0) {
                     trk->stats.last.births_dropped++;
                 } else {
+#if MTT_WITH_IMM
+                    if (trk->par.motion == MTT_MOTION_IMM) {
+                        mtt_imm_seed_track(trk, (uint16_t)ni, dt);
+                    }
+#endif
                     trk->stats.last.births++;
                     started = 1;
                 }

@@ -36,11 +36,16 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
     mtt_sym(Pp);
 }
 
-int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
-                     mtt_real K[][2])
+/* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
+ * build without IMM, so the firmware code is the fixed-size one. */
+static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                   mtt_real *det, mtt_real K[][2])
 {
     mtt_real d;
     int i;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return -1; /* not a model of motion.h (folded away for a constant n) */
+    }
     S[0] = Pp[0][0] + R[0];
     S[1] = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
     S[2] = Pp[1][1] + R[2];
@@ -52,21 +57,35 @@ int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si
     Si[0] = S[2] / d;
     Si[1] = -S[1] / d;
     Si[2] = S[0] / d;
-    for (i = 0; i < MTT_STATE_N; ++i) {
+    for (i = 0; i < n; ++i) {
         K[i][0] = Pp[i][0] * Si[0] + Pp[i][1] * Si[1];
         K[i][1] = Pp[i][0] * Si[1] + Pp[i][1] * Si[2];
     }
     return 0;
 }
 
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
+                     mtt_real K[][2])
+{
+    return innov_n(MTT_STATE_N, Pp, R, S, Si, det, K);
+}
+
+#if MTT_WITH_IMM
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                       mtt_real *det, mtt_real K[][2])
+{
+    return innov_n(n, Pp, R, S, Si, det, K);
+}
+#endif
+
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
 {
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
 }
 
-void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
-                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
-                    mtt_real beta0, mtt_state x, mtt_cov P)
+static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                  const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                  mtt_real beta0, mtt_state x, mtt_cov P)
 {
     mtt_cov AP;
     mtt_real A[MTT_MAX_STATE][2];
@@ -76,6 +95,9 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
     uint16_t j;
     int i, k;
     mtt_real bsum = MTT_R(0.0);
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return; /* not a model of motion.h (folded away for a constant n) */
+    }
     for (j = 0; j < m; ++j) {
         cx += beta[j] * nu[j][0];
         cy += beta[j] * nu[j][1];
@@ -98,7 +120,7 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
         sxy += bsum * cx * cy;
         syy += bsum * cy * cy;
     }
-    for (i = 0; i < MTT_STATE_N; ++i) {
+    for (i = 0; i < n; ++i) {
         x[i] = xp[i] + K[i][0] * cx + K[i][1] * cy;
     }
     /* P = beta0 Pp + (1 - beta0) P_c + K (sum beta nu nu' - nu_c nu_c') K'
@@ -117,22 +139,22 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
     A[0][1] = R[0] * Si[1] + R[1] * Si[2];
     A[1][0] = R[1] * Si[0] + R[2] * Si[1];
     A[1][1] = R[1] * Si[1] + R[2] * Si[2];
-    for (i = MTT_MEAS_DIM; i < MTT_STATE_N; ++i) {
+    for (i = MTT_MEAS_DIM; i < n; ++i) {
         A[i][0] = -K[i][0];
         A[i][1] = -K[i][1];
     }
     /* A Pp: A differs from I only in columns 0 and 1. */
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        for (k = 0; k < MTT_STATE_N; ++k) {
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
             AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= MTT_MEAS_DIM) ? Pp[i][k] : MTT_R(0.0));
         }
     }
     /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
      * symmetric by construction. */
-    for (i = 0; i < MTT_STATE_N; ++i) {
+    for (i = 0; i < n; ++i) {
         const mtt_real a = K[i][0] * m11 + K[i][1] * m12;
         const mtt_real b = K[i][0] * m12 + K[i][1] * m22;
-        for (k = i; k < MTT_STATE_N; ++k) {
+        for (k = i; k < n; ++k) {
             const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= MTT_MEAS_DIM) ? AP[i][k] : MTT_R(0.0));
             const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
             P[i][k] = v;
@@ -140,6 +162,22 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
         }
     }
 }
+
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                    mtt_real beta0, mtt_state x, mtt_cov P)
+{
+    pda_n(MTT_STATE_N, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
+}
+
+#if MTT_WITH_IMM
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+                      const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                      mtt_real beta0, mtt_state x, mtt_cov P)
+{
+    pda_n(n, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
+}
+#endif
 
 /* A = L D L' (unit lower L) without square roots: cheap on soft float.
  * Returns 0, or -1 when a pivot d_i is not positive and finite. */

@@ -8,6 +8,82 @@
 #include "mtt_internal.h"
 #include "params_table.h"
 
+#if MTT_WITH_IMM
+/* docs/FORMATS.md's IMM defaults for r models: 0.95 on the diagonal of the
+ * transition matrix, the rest of each row spread evenly, every track
+ * starting in model 0; the slots beyond r are 0. */
+void mtt_params_imm_reset(mtt_params *p, uint8_t r)
+{
+    uint8_t i, j;
+    p->imm_n_models = r;
+    for (i = 0; i < MTT_MAX_MODELS; ++i) {
+        p->imm_initial[i] = (i == 0u) ? MTT_R(1.0) : MTT_R(0.0);
+        for (j = 0; j < MTT_MAX_MODELS; ++j) {
+            mtt_real v = MTT_R(0.0);
+            if (i < r && j < r) {
+                v = (r == 1u) ? MTT_R(1.0) : ((i == j) ? MTT_R(0.95) : MTT_R(0.05) / (mtt_real)(r - 1u));
+            }
+            p->imm_transition[i][j] = v;
+        }
+    }
+}
+
+/* imm_models' default: [cv with process_psd, ca with 10 process_psd] (one
+ * cv model in a build with MTT_MAX_MODELS 1); unused slots cv with
+ * process_psd. */
+static void imm_default(mtt_params *p)
+{
+    uint8_t i;
+    for (i = 0; i < MTT_MAX_MODELS; ++i) {
+        p->imm_model[i] = (i == 1u) ? MTT_MODEL_CA : MTT_MODEL_CV;
+        p->imm_psd[i] = (i == 1u) ? MTT_R(10.0) * p->process_psd : p->process_psd;
+    }
+    mtt_params_imm_reset(p, (MTT_MAX_MODELS >= 2) ? 2u : 1u);
+}
+
+/* The cross rules of the IMM keys (ALGORITHMS.md §14): r in
+ * [2, MTT_MAX_MODELS] with known model kinds; the first r rows of
+ * imm_transition and the first r entries of imm_initial sum to 1 within
+ * 1e-4 (the decimals of a settings file), every slot beyond them 0 (so a
+ * matrix or list of another size than imm_models is caught).  The element
+ * ranges are the table's rules.  Returns the bad key or NULL. */
+static const char *check_imm(const mtt_params *p)
+{
+    const mtt_real tol = MTT_R(1e-4);
+    mtt_real s0 = MTT_R(0.0);
+    uint8_t i, j, r = p->imm_n_models;
+    if (p->motion == MTT_MOTION_CV && r == 1u) {
+        return NULL; /* a build without IMM (MTT_MAX_MODELS 1): nothing to check */
+    }
+    if (r < 2u || r > MTT_MAX_MODELS) {
+        return "imm_models";
+    }
+    for (i = 0; i < MTT_MAX_MODELS; ++i) {
+        mtt_real s = MTT_R(0.0);
+        if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CA)) {
+            return "imm_models";
+        }
+        for (j = 0; j < MTT_MAX_MODELS; ++j) {
+            if ((i >= r || j >= r) && p->imm_transition[i][j] != MTT_R(0.0)) {
+                return "imm_transition";
+            }
+            s += p->imm_transition[i][j];
+        }
+        if (i < r && !(mtt_fabs(s - MTT_R(1.0)) <= tol)) {
+            return "imm_transition";
+        }
+        if (i >= r && p->imm_initial[i] != MTT_R(0.0)) {
+            return "imm_initial";
+        }
+        s0 += p->imm_initial[i];
+    }
+    if (!(mtt_fabs(s0 - MTT_R(1.0)) <= tol)) {
+        return "imm_initial";
+    }
+    return NULL;
+}
+#endif /* MTT_WITH_IMM */
+
 mtt_status mtt_params_default(mtt_params *p)
 {
     if (p == NULL) {
@@ -48,6 +124,10 @@ mtt_status mtt_params_default(mtt_params *p)
     p->nnjpda_threshold = MTT_R(0.0);
     p->adaptive_jpda_distance = MTT_R(9.0);
     p->adaptive_jpda_shrink = MTT_R(3.0);
+    p->motion = MTT_MOTION_CV;
+#if MTT_WITH_IMM
+    imm_default(p);
+#endif
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;
@@ -71,6 +151,8 @@ static const range_rule rules[MTT_RULE_COUNT] = {
 
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
 const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
+const char *const mtt_motion_names[2] = {"cv", "imm"};
+const char *const mtt_model_names[2] = {"cv", "ca"};
 
 mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
 {
@@ -129,6 +211,20 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         if (!mtt_params_rule_ok(p, k, 1)) {
             bad = rules[k].name;
         }
+    }
+#if MTT_WITH_IMM
+    if (bad == NULL) {
+        bad = check_imm(p);
+    }
+#endif
+    if (bad == NULL && p->motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[p->association].imm)) {
+        bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
+        st = MTT_ERR_UNSUPPORTED;
+    }
+    if (bad == NULL && p->motion == MTT_MOTION_IMM && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST &&
+        p->association == MTT_ASSOC_LM_IHPDA) {
+        bad = "lm_ihpda_variant"; /* the contest update has no IMM form yet (ALGORITHMS.md §10.4) */
+        st = MTT_ERR_UNSUPPORTED;
     }
     if (bad == NULL) {
         return MTT_OK;

@@ -19,13 +19,15 @@ typedef struct info_row {
 } info_row;
 
 #define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
-    {{key, MTT_PARAM_REAL, count, (double)(lo), (double)(hi), ((flags) & PF_OPEN_LO) != 0,                     \
-      ((flags) & PF_OPEN_HI) != 0, NULL, 0, cross, text},                                          \
+    {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
+      ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
+      ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 2 : 0,                 \
+      ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
      MTT_RULE_##member},
 #define INFO_FLAG(key, member, text)                                                               \
-    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, NULL, text}, MTT_RULE_COUNT},
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT},
 #define INFO_ENUM(key, member, type, n_names, names, text)                                         \
-    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, NULL, text},     \
+    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text},  \
      MTT_RULE_COUNT},
 
 static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
@@ -73,7 +75,7 @@ static mtt_status row_of(const void *p, const char *key, const void *v, size_t n
     if (st != MTT_OK) {
         return st;
     }
-    if (n != rows[k].info.count) {
+    if (n != ((rows[k].info.type == MTT_PARAM_MODELS) ? 1u + 2u * rows[k].info.count : rows[k].info.count)) {
         return MTT_ERR_RANGE;
     }
     *r = &rows[k];
@@ -109,6 +111,39 @@ static void set_int(mtt_params *p, const info_row *r, int value)
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, SET_FLAG, SET_ENUM)
 }
 
+#if MTT_WITH_IMM
+/* imm_models: v = r, then (model, psd) per slot; slots from r on keep
+ * their values.  A new r resets imm_transition and imm_initial to their
+ * defaults for r models (so a settings file that sets only imm_models is
+ * valid). */
+static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
+{
+    mtt_params q = *p;
+    size_t k, m;
+    if (!(v[0] >= 2.0 && v[0] <= (double)MTT_MAX_MODELS && v[0] == (double)(int)v[0])) {
+        return MTT_ERR_PARAM;
+    }
+    m = (size_t)v[0];
+    for (k = 0; k < m; ++k) {
+        const double kind = v[1 + 2 * k], psd = v[2 + 2 * k];
+        if (!(kind >= 0.0 && kind < (double)r->info.n_names && kind == (double)(int)kind) ||
+            !(psd > 0.0 && psd <= (double)MTT_REAL_MAX)) {
+            return MTT_ERR_PARAM;
+        }
+        q.imm_model[k] = (mtt_model_kind)(int)kind;
+        q.imm_psd[k] = (mtt_real)psd;
+    }
+    if (!mtt_params_rule_ok(&q, r->rule, 0)) {
+        return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
+    }
+    if (m != q.imm_n_models) {
+        mtt_params_imm_reset(&q, (uint8_t)m);
+    }
+    *p = q;
+    return MTT_OK;
+}
+#endif
+
 mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
 {
     const info_row *r = NULL;
@@ -118,6 +153,11 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     if (st != MTT_OK) {
         return st;
     }
+#if MTT_WITH_IMM
+    if (r->info.type == MTT_PARAM_MODELS) {
+        return set_models(p, r, v);
+    }
+#endif
     if (r->info.type != MTT_PARAM_REAL) {
         /* an index in [0, hi]: whole, and compared before the conversion */
         if (!(v[0] >= 0.0 && v[0] <= r->info.hi && v[0] == (double)(int)v[0])) {
@@ -149,6 +189,15 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
     mtt_status st = row_of(p, key, v, n, &r);
     if (st != MTT_OK) {
         return st;
+    }
+    if (r->info.type == MTT_PARAM_MODELS) {
+        v[0] = (double)p->imm_n_models;
+        for (k = 0; k < MTT_MAX_MODELS; ++k) {
+            const int used = k < p->imm_n_models;
+            v[1 + 2 * k] = used ? (double)p->imm_model[k] : 0.0;
+            v[2 + 2 * k] = used ? (double)p->imm_psd[k] : 0.0;
+        }
+        return MTT_OK;
     }
     if (r->info.type != MTT_PARAM_REAL) {
         v[0] = (double)get_int(p, r);

@@ -21,8 +21,9 @@
  *   ENUM(key, member, type, n_names, names, text)
  *        enum member of `type`, value in [0, n_names); names[] spells them
  *
- * Not yet here, and their place is after adaptive_jpda_shrink: the motion
- * model keys (motion, imm_models, imm_transition, imm_initial) and split.
+ * imm_models is a REAL row over the psd slots with PF_MODELS: its public
+ * type is MTT_PARAM_MODELS, and params_info.c sets and gets the model kinds
+ * and r with it.  Not yet here: split (ALGORITHMS.md §14.3).
  * initial_tracks is not a parameter (it seeds the tracker): mtt-track reads
  * it itself. */
 #ifndef MTT_PARAMS_TABLE_H
@@ -35,19 +36,40 @@ enum {
     PF_OPEN_LO = 1,        /* lo excluded */
     PF_OPEN_HI = 2,        /* hi excluded */
     PF_BELOW_CONFIRM = 4,  /* cross rule: v < confirm_threshold */
-    PF_ASCENDING = 8       /* cross rule: each element > the one before */
+    PF_ASCENDING = 8,      /* cross rule: each element > the one before */
+    PF_MODELS = 16,        /* imm_models: public type MTT_PARAM_MODELS over the psd slots */
+    PF_PER_MODEL = 32,     /* one value per IMM model (MTT_MAX_MODELS slots) */
+    PF_PER_MODEL2 = 64     /* an r x r matrix of IMM models (MTT_MAX_MODELS^2 slots) */
 };
 
 /* The spellings of the enum keys, index = value (params.c). */
 extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
 extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_lm_ihpda_variant_names[2];
+extern const char *const mtt_motion_names[2];
+extern const char *const mtt_model_names[2];
+
+/* The IMM rows (ALGORITHMS.md §14): only in a build with MTT_WITH_IMM; without
+ * it only `motion` is a key (and `imm` is refused). */
+#if MTT_WITH_IMM
+#define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                      \
+    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL,           \
+         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³) or `ca` (constant acceleration, white-noise jerk, q in length²/time⁵); not given: cv with process_psd and ca with 10·process_psd (§14.1)") \
+    REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
+         "r rows of r (r models), each row summing to 1",                                           \
+         "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \
+    REAL("imm_initial", imm_initial, MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL,                         \
+         "one per model, summing to 1",                                                               \
+         "with `imm`: the model probabilities of a new or seeded track (§14.2)")
+#else
+#define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
+#endif
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
     ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, \
-         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6)") \
+         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6; not with motion imm)") \
     REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                  \
          "lm_ihpda_variant contest: a measurement that two tracks give an LM-IPDA β >= this is contested (§10.4)") \
     REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                            \
@@ -97,7 +119,10 @@ extern const char *const mtt_lm_ihpda_variant_names[2];
     REAL("adaptive_jpda_distance", adaptive_jpda_distance, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,      \
          "adaptive JPDA: tracks closer than this many measurement sigmas overlap (§13.7)")                 \
     REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL,                   \
-         "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")
+         "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
+    ENUM("motion", motion, mtt_motion, 2, mtt_motion_names,                                        \
+         "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda") \
+    MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
 #define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,

@@ -18,7 +18,12 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
         t->dead = 0;
         t->meas = -1;
         if (dt > MTT_R(0.0)) {
-            mtt_kalman_predict(dt, trk->par.process_psd, t->x, t->P, tf->xp, tf->Pp);
+#if MTT_WITH_IMM
+            if (trk->par.motion != MTT_MOTION_IMM)
+#endif
+            {
+                mtt_kalman_predict(dt, trk->par.process_psd, t->x, t->P, tf->xp, tf->Pp);
+            }
             tf->ex_pred = mtt_existence_predict(t->existence, trk->par.markov_p11, trk->par.markov_p21);
             t->age++;
         } else {
@@ -32,6 +37,13 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
         tf->shrink = 0;
         tf->pair_first = 0;
         tf->pair_count = 0;
+#if MTT_WITH_IMM
+        if (trk->par.motion == MTT_MOTION_IMM) {
+            /* IMM (ALGORITHMS.md §14.1): replaces the single-model prediction above */
+            tf->valid = (uint8_t)mtt_imm_predict_track(trk, i, dt);
+            continue;
+        }
+#endif
         tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&
                               mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K) == 0);
     }

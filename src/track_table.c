@@ -9,12 +9,26 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
                      int confirmed, int born)
 {
     mtt_track *t;
+    int i;
     if (trk->n_tracks >= MTT_MAX_TRACKS) {
         return -1;
     }
     t = &trk->tracks[trk->n_tracks];
+#if MTT_MAX_STATE > MTT_STATE_N
+    /* The model's MTT_STATE_N leading components; the rest of the storage
+     * (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal inputs give
+     * equal tracker states byte for byte. */
+    memset(t->x, 0, sizeof t->x);
+    memset(t->P, 0, sizeof t->P);
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        t->x[i] = x[i];
+        memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
+    }
+#else
+    (void)i;
     memcpy(t->x, x, sizeof t->x);
     memcpy(t->P, P, sizeof t->P);
+#endif
     t->existence = existence;
     t->id = trk->next_id++;
     t->age = 0;
@@ -101,6 +115,13 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
         return MTT_ERR_FULL;
     }
     mtt_sym(trk->tracks[idx].P);
+#if MTT_WITH_IMM
+    if (trk->par.motion == MTT_MOTION_IMM) {
+        /* [CHOICE] ALGORITHMS.md §14.2: a seeded track's CA acceleration
+         * variance is q_CA times one time unit (no interval is known) */
+        mtt_imm_seed_track(trk, (uint16_t)idx, MTT_R(1.0));
+    }
+#endif
     if (id != NULL) {
         *id = trk->tracks[idx].id;
     }
@@ -142,5 +163,14 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;
+    memset(view->mu, 0, sizeof view->mu);
+    view->n_models = 1u;
+    view->mu[0] = MTT_R(1.0);
+#if MTT_WITH_IMM
+    if (trk->par.motion == MTT_MOTION_IMM) {
+        view->n_models = trk->par.imm_n_models;
+        memcpy(view->mu, t->mu, sizeof view->mu);
+    }
+#endif
     return MTT_OK;
 }

@@ -98,6 +98,48 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
     t->existence = tf->ex_post;
 }
 
+#if MTT_WITH_IMM
+/* IMM track (ALGORITHMS.md §14.2): the mode's result -- the assigned pair
+ * with beta_s and L_s (ONE), or the beta row, beta_0 and tf.ex_post (PDA) --
+ * split over the models; existence as the mode gives it. */
+static void update_imm(mtt_tracker *trk, uint16_t ti, uint8_t kind)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real *beta = trk->row.beta;
+    uint16_t j, b = 0;
+    if (kind == MTT_UPDATE_ONE) {
+        if (tf->assigned < 0) {
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+            t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+            t->meas = -1;
+        } else {
+            const mtt_pair *pp = &trk->pairs[tf->assigned];
+            beta[0] = pp->beta;
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
+            t->existence = mtt_existence_update(tf->ex_pred, pp->L);
+            t->meas = (int32_t)trk->meas[pp->meas].src;
+        }
+        return;
+    }
+    if (tf->pair_count == 0u) {
+        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+        t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+        t->meas = -1;
+        return;
+    }
+    for (j = 0; j < tf->pair_count; ++j) {
+        beta[j] = trk->pairs[tf->pair_first + j].beta;
+        if (beta[j] > beta[b]) {
+            b = j;
+        }
+    }
+    mtt_imm_update_track(trk, ti, tf->pair_first, tf->pair_count, beta, tf->beta0);
+    t->existence = tf->ex_post;
+    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
+}
+#endif
+
 void mtt_update_frame(mtt_tracker *trk)
 {
     const uint8_t kind = mtt_modes[trk->par.association].update;
@@ -107,6 +149,11 @@ void mtt_update_frame(mtt_tracker *trk)
         if (!tf->valid) {
             continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
+#if MTT_WITH_IMM
+        if (trk->par.motion == MTT_MOTION_IMM) {
+            update_imm(trk, i, kind); /* motion imm refuses the contest variant */
+        } else
+#endif
         if (kind == MTT_UPDATE_ONE && tf->contest != MTT_CONTEST_YES) {
             if (tf->assigned < 0) {
                 keep_prediction(trk, i);

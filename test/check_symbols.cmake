@@ -27,6 +27,8 @@ foreach(_f IN LISTS _math_base)
   list(APPEND _allowed ${_f} ${_f}f ${_f}l)
 endforeach()
 list(APPEND _allowed
+  # GNU sincos: GCC fuses a sin and a cos of the same argument into it (glibc, newlib)
+  sincos sincosf sincosl
   # glibc's out-of-line versions of classification macros and old -ffast-math entry points
   __fpclassify __fpclassifyf __fpclassifyl __isnan __isnanf __isnanl __isinf __isinff
   __isinfl __finite __finitef __finitel __signbit __signbitf __signbitl

@@ -16,10 +16,10 @@ void tearDown(void) {}
 /* TV2 prediction and R (TV3 uses S and z_hat of TV2). */
 static const mtt_real tv2_R[3] = {MTT_R(1.0), MTT_R(0.3), MTT_R(2.0)};
 
-static void tv2_pred(mtt_real xp[4], mtt_real Pp[4][4])
+static void tv2_pred(mtt_state xp, mtt_cov Pp)
 {
-    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
-    mtt_real P0[4][4] = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
+    const mtt_state x0 = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+    mtt_cov P0 = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(1.0), MTT_R(4.0), MTT_R(0.0), MTT_R(1.0)},
                          {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)}};
@@ -37,7 +37,9 @@ static const double tv3_p[5] = {0.01517412536, 0.005719835949, 0.003383802596, 0
 
 static void test_tv3_gamma_volume_det(void)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], gamma;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], gamma;
+    mtt_state xp;
+    mtt_cov Pp;
     tv2_pred(xp, Pp);
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
     gamma = mtt_gate_gamma(MTT_R(0.99));
@@ -48,7 +50,9 @@ static void test_tv3_gamma_volume_det(void)
 
 static void test_tv3_candidates(void)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], gamma;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], gamma;
+    mtt_state xp;
+    mtt_cov Pp;
     int c;
     tv2_pred(xp, Pp);
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
@@ -70,7 +74,8 @@ static void test_tv3_candidates(void)
 static void tv3_tracker(void)
 {
     mtt_params p;
-    mtt_real xp[4], Pp[4][4];
+    mtt_state xp;
+    mtt_cov Pp;
     int c;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.pg = MTT_R(0.99); /* TV3 PG */

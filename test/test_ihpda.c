@@ -149,14 +149,16 @@ static const double tv5_Pupd[16] = {
     -0.5911472809, 2.005445908,   -0.1596150748, 4.723167884};
 
 struct tv5 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], vg;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], vg;
+    mtt_state xp;
+    mtt_cov Pp;
     mtt_cand c[3];
 };
 
 static void tv5_setup(struct tv5 *t)
 {
-    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
-    mtt_real P0[4][4] = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
+    const mtt_state x0 = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+    mtt_cov P0 = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(1.0), MTT_R(4.0), MTT_R(0.0), MTT_R(1.0)},
                          {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)}};
@@ -304,7 +306,9 @@ static void test_tv5_selected_update(void)
     /* Selected z2 (largest beta); x_upd, P_upd through the single-measurement
      * PDA update with beta0 = 1 - beta; existence with L_s. */
     struct tv5 t;
-    mtt_real prank[3], beta[3], L[3], x[4], P[4][4], nu[1][2], b1[1];
+    mtt_real prank[3], beta[3], L[3], nu[1][2], b1[1];
+    mtt_state x;
+    mtt_cov P;
     uint8_t rank[3];
     int j, s = 0;
     tv5_setup(&t);

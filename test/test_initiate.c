@@ -42,15 +42,18 @@ static void test_tv10_two_point_cov(void)
 {
     const mtt_real R1[3] = {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)};
     const mtt_real R2[3] = {MTT_R(4.0), MTT_R(0.0), MTT_R(9.0)};
-    mtt_real P[4][4];
+    mtt_cov P;
     mtt_motion_two_point_cov(R1, MTT_R(1.0), P);
     TV_ASSERT_MAT4(tv10_P1, P); /* TV10 case 1 P_{2|2} */
     mtt_motion_two_point_cov(R2, MTT_R(0.5), P);
     TV_ASSERT_MAT4(tv10_P2, P); /* TV10 case 2 P_{2|2} */
-    /* public wrapper, sigmas (2, 3) */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.5), P));
-    TV_ASSERT_MAT4(tv10_P2, P);
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.0), P));
+    /* public wrapper, sigmas (2, 3): a 4x4 covariance whatever MTT_MAX_STATE */
+    {
+        mtt_real P4[4][4];
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.5), P4));
+        TV_ASSERT_MAT4(tv10_P2, P4);
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(0.0), (mtt_real(*)[4])P));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_init_two_point_cov(MTT_R(2.0), MTT_R(3.0), MTT_R(1.0), NULL));
 }
 
@@ -59,7 +62,7 @@ static void test_tv10_full_R(void)
     /* [[R, R/dT], [R/dT, 2R/dT^2]] with an off-diagonal R term, dT = 0.5 */
     const mtt_real R[3] = {MTT_R(4.0), MTT_R(1.0), MTT_R(9.0)};
     static const double want[16] = {4, 1, 8, 2, 1, 9, 2, 18, 8, 2, 32, 8, 2, 18, 8, 72};
-    mtt_real P[4][4];
+    mtt_cov P;
     mtt_motion_two_point_cov(R, MTT_R(0.5), P);
     TV_ASSERT_MAT4(want, P);
 }

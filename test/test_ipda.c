@@ -42,14 +42,16 @@ static const double tv6h_beta0 = 0.04088901351;
 static const double tv6h_ex = 0.7999451497;
 
 struct tv5 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], vg;
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], vg;
+    mtt_state xp;
+    mtt_cov Pp;
     mtt_real p[3], nu[3][2];
 };
 
 static void tv5_setup(struct tv5 *t)
 {
-    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
-    mtt_real P0[4][4] = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
+    const mtt_state x0 = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+    mtt_cov P0 = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(1.0), MTT_R(4.0), MTT_R(0.0), MTT_R(1.0)},
                          {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
                          {MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)}};
@@ -93,7 +95,9 @@ static void test_tv6_state_update(void)
 {
     struct tv5 t;
     const mtt_real lam[3] = {LAMBDA, LAMBDA, LAMBDA};
-    mtt_real beta[3], beta0, L, x[4], P[4][4];
+    mtt_real beta[3], beta0, L;
+    mtt_state x;
+    mtt_cov P;
     tv5_setup(&t);
     tv_ipda_betas(PD, PG, t.p, lam, 3, beta, &beta0, &L);
     mtt_kalman_pda(t.xp, t.Pp, t.K, t.Si, tv5_R, 3, t.nu, beta, beta0, x, P);

@@ -11,8 +11,8 @@ void setUp(void) {}
 void tearDown(void) {}
 
 /* TV2 inputs */
-static const mtt_real tv2_x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
-static const mtt_real tv2_P0[4][4] = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
+static const mtt_state tv2_x0 = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+static const mtt_cov tv2_P0 = {{MTT_R(4.0), MTT_R(1.0), MTT_R(1.0), MTT_R(0.0)},
                                       {MTT_R(1.0), MTT_R(4.0), MTT_R(0.0), MTT_R(1.0)},
                                       {MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
                                       {MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0)}};
@@ -33,9 +33,9 @@ static const double tv2_Pupd[16] = {
     0.0266216764, 0.8405054832, 0.4559701574, 0.0266216764,  3.870265888,  0.2595613449,
     0.07099113706, 0.8405054832, 0.2595613449, 4.069928461};
 
-static void tv2_predict(mtt_real xp[4], mtt_real Pp[4][4])
+static void tv2_predict(mtt_state xp, mtt_cov Pp)
 {
-    mtt_real P0[4][4];
+    mtt_cov P0;
     memcpy(P0, tv2_P0, sizeof P0);
     mtt_kalman_predict(MTT_R(1.0), MTT_R(5.0), tv2_x0, P0, xp, Pp);
 }
@@ -48,8 +48,9 @@ static void check_F(mtt_real dt, const double F[16])
      * not depend on Sw or P). */
     int k, i;
     for (k = 0; k < 4; ++k) {
-        mtt_real e[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-        mtt_real P[4][4], xp[4], Pp[4][4];
+        mtt_state e = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+        mtt_state xp;
+        mtt_cov P, Pp;
         memset(P, 0, sizeof P);
         e[k] = MTT_R(1.0);
         mtt_kalman_predict(dt, MTT_R(5.0), e, P, xp, Pp);
@@ -65,7 +66,7 @@ static void test_tv1_dt1(void)
     static const double F[16] = {1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1};
     static const double Q[16] = {1.666666667, 0, 2.5, 0, 0, 1.666666667, 0, 2.5,
                                  2.5, 0, 5, 0, 0, 2.5, 0, 5};
-    mtt_real Qa[4][4];
+    mtt_cov Qa;
     mtt_motion_q(MTT_R(1.0), MTT_R(5.0), Qa);
     TV_ASSERT_MAT4(Q, Qa);
     check_F(MTT_R(1.0), F);
@@ -77,7 +78,7 @@ static void test_tv1_dt025(void)
     static const double F[16] = {1, 0, 0.25, 0, 0, 1, 0, 0.25, 0, 0, 1, 0, 0, 0, 0, 1};
     static const double Q[16] = {0.02604166667, 0, 0.15625, 0, 0, 0.02604166667, 0, 0.15625,
                                  0.15625, 0, 1.25, 0, 0, 0.15625, 0, 1.25};
-    mtt_real Qa[4][4];
+    mtt_cov Qa;
     mtt_motion_q(MTT_R(0.25), MTT_R(5.0), Qa);
     TV_ASSERT_MAT4(Q, Qa);
     check_F(MTT_R(0.25), F);
@@ -88,7 +89,8 @@ static void test_tv1_predict_with_zero_P_is_Q(void)
     /* Pp = F 0 F' + Q = Q (TV1 dt = 0.25 Q) */
     static const double Q[16] = {0.02604166667, 0, 0.15625, 0, 0, 0.02604166667, 0, 0.15625,
                                  0.15625, 0, 1.25, 0, 0, 0.15625, 0, 1.25};
-    mtt_real P[4][4], xp[4], Pp[4][4];
+    mtt_state xp;
+    mtt_cov P, Pp;
     memset(P, 0, sizeof P);
     mtt_kalman_predict(MTT_R(0.25), MTT_R(5.0), tv2_x0, P, xp, Pp);
     TV_ASSERT_MAT4(Q, Pp);
@@ -98,7 +100,8 @@ static void test_tv1_predict_with_zero_P_is_Q(void)
 
 static void test_tv2_predict(void)
 {
-    mtt_real xp[4], Pp[4][4];
+    mtt_state xp;
+    mtt_cov Pp;
     tv2_predict(xp, Pp);
     TV_ASSERT_VEC(tv2_xpred, xp, 4); /* TV2 x_pred */
     TV_ASSERT_MAT4(tv2_Ppred, Pp);   /* TV2 P_pred */
@@ -107,7 +110,9 @@ static void test_tv2_predict(void)
 
 static void test_tv2_innovation(void)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2];
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2];
+    mtt_state xp;
+    mtt_cov Pp;
     mtt_real nux, nuy;
     int i;
     tv2_predict(xp, Pp);
@@ -134,7 +139,9 @@ static void test_tv2_innovation(void)
 
 static void test_tv2_joseph_and_standard_form(void)
 {
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], Pc[4][4], x[4];
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2];
+    mtt_state xp, x;
+    mtt_cov Pp, Pc;
     double std_form[16];
     int i, j;
     tv2_predict(xp, Pp);
@@ -156,7 +163,7 @@ static void test_tv2_joseph_and_standard_form(void)
     }
     /* Positive definite: chol succeeds. */
     {
-        const mtt_real b[4] = {MTT_R(1.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+        const mtt_state b = {MTT_R(1.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
         mtt_real d2;
         TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(Pc, b, &d2));
     }
@@ -165,7 +172,9 @@ static void test_tv2_joseph_and_standard_form(void)
 static void test_tv2_update_through_pda(void)
 {
     /* One measurement with beta = 1, beta0 = 0: the ordinary Kalman update. */
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], x[4], P[4][4];
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2];
+    mtt_state xp, x;
+    mtt_cov Pp, P;
     mtt_real nu[1][2];
     const mtt_real beta[1] = {MTT_R(1.0)};
     tv2_predict(xp, Pp);
@@ -181,7 +190,9 @@ static void test_tv2_update_through_pda(void)
 static void test_tv2_pda_no_measurement_keeps_prediction(void)
 {
     /* m = 0, beta0 = 1: x = x_pred, P = P_pred (TV2 x_pred, P_pred). */
-    mtt_real xp[4], Pp[4][4], S[3], Si[3], det, K[4][2], x[4], P[4][4];
+    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2];
+    mtt_state xp, x;
+    mtt_cov Pp, P;
     mtt_real nu[1][2] = {{MTT_R(0.0), MTT_R(0.0)}};
     const mtt_real beta[1] = {MTT_R(0.0)};
     tv2_predict(xp, Pp);
@@ -193,7 +204,8 @@ static void test_tv2_pda_no_measurement_keeps_prediction(void)
 
 static void test_innov_rejects_singular_and_nan(void)
 {
-    mtt_real Pp[4][4], S[3], Si[3], det = MTT_R(-7.0), K[4][2];
+    mtt_cov Pp;
+    mtt_real S[3], Si[3], det = MTT_R(-7.0), K[MTT_MAX_STATE][2];
     const mtt_real Rs[3] = {MTT_R(1.0), MTT_R(1.0), MTT_R(1.0)}; /* det S = 0 */
     memset(Pp, 0, sizeof Pp);
     TEST_ASSERT_EQUAL_INT(-1, mtt_kalman_innov(Pp, Rs, S, Si, &det, K));
@@ -210,7 +222,7 @@ static void test_innov_rejects_singular_and_nan(void)
 
 static void test_sym4(void)
 {
-    mtt_real A[4][4];
+    mtt_cov A;
     int i, j;
     for (i = 0; i < 4; ++i) {
         for (j = 0; j < 4; ++j) {
@@ -231,7 +243,9 @@ static void test_chol4_full_matrix(void)
 {
     /* A = TV2 P_pred (full, not diagonal), b = A e1: b' A^-1 b = e1' A e1 =
      * P_pred[1,1] = 8.666666667 (TV2). */
-    mtt_real xp[4], A[4][4], b[4], d2 = MTT_R(-1.0);
+    mtt_real d2 = MTT_R(-1.0);
+    mtt_state xp, b;
+    mtt_cov A;
     int i;
     tv2_predict(xp, A);
     for (i = 0; i < 4; ++i) {
@@ -250,8 +264,9 @@ static void test_chol4_full_matrix(void)
 static void test_chol4_innovation_block(void)
 {
     /* A = blockdiag(S, I) with S of TV2, b = [nu, 0, 0]: d2 = TV2 d2. */
-    mtt_real A[4][4], d2 = MTT_R(0.0);
-    const mtt_real b[4] = {MTT_R(1.5), MTT_R(-1.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_cov A;
+    mtt_real d2 = MTT_R(0.0);
+    const mtt_state b = {MTT_R(1.5), MTT_R(-1.0), MTT_R(0.0), MTT_R(0.0)};
     memset(A, 0, sizeof A);
     A[0][0] = MTT_R(9.666666667);
     A[0][1] = MTT_R(1.3);
@@ -265,8 +280,9 @@ static void test_chol4_innovation_block(void)
 
 static void test_chol4_rejects_non_pd(void)
 {
-    mtt_real A[4][4], d2 = MTT_R(42.0);
-    const mtt_real b[4] = {MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), MTT_R(1.0)};
+    mtt_cov A;
+    mtt_real d2 = MTT_R(42.0);
+    const mtt_state b = {MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), MTT_R(1.0)};
     memset(A, 0, sizeof A);
     /* indefinite: [[1, 2], [2, 1]] block has eigenvalue -1 */
     A[0][0] = MTT_R(1.0);

@@ -12,11 +12,11 @@ void setUp(void) {}
 void tearDown(void) {}
 
 /* TV11 inputs */
-static const mtt_real xa[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
-static const mtt_real xb1[4] = {MTT_R(100.6), MTT_R(49.7), MTT_R(10.3), MTT_R(-5.2)};
-static const mtt_real xb2[4] = {MTT_R(101.5), MTT_R(49.0), MTT_R(10.3), MTT_R(-5.2)};
+static const mtt_state xa = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
+static const mtt_state xb1 = {MTT_R(100.6), MTT_R(49.7), MTT_R(10.3), MTT_R(-5.2)};
+static const mtt_state xb2 = {MTT_R(101.5), MTT_R(49.0), MTT_R(10.3), MTT_R(-5.2)};
 
-static void set_track(mtt_track *t, const mtt_real x[4], mtt_real pos, mtt_real vel,
+static void set_track(mtt_track *t, const mtt_state x, mtt_real pos, mtt_real vel,
                       mtt_real existence, int confirmed, uint32_t id)
 {
     memset(t, 0, sizeof *t);

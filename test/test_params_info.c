@@ -20,6 +20,14 @@ static size_t n_keys(void)
     return n;
 }
 
+/* Values of a key through mtt_params_set / get (imm_models: r, then a
+ * model and a psd per slot). */
+#define VALS (MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS + 3)
+static size_t n_values(const mtt_param_info *info)
+{
+    return info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count;
+}
+
 static void test_table_lists_the_settings_keys(void)
 {
     static const char *const keys[] = {
@@ -28,7 +36,11 @@ static void test_table_lists_the_settings_keys(void)
         "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
         "intensity_gate.f1", "intensity_gate.f2", "intensity_gate.blend", "jpda_bias",
         "jpda_star_threshold", "nnjpda_threshold", "adaptive_jpda_distance",
-        "adaptive_jpda_shrink"};
+        "adaptive_jpda_shrink", "motion"
+#if MTT_WITH_IMM
+        , "imm_models", "imm_transition", "imm_initial"
+#endif
+    };
     const mtt_param_info *info = NULL;
     size_t k, i;
     TEST_ASSERT_EQUAL_UINT(sizeof keys / sizeof keys[0], n_keys());
@@ -38,7 +50,9 @@ static void test_table_lists_the_settings_keys(void)
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_find(keys[k], &i));
         TEST_ASSERT_EQUAL_UINT(k, i);
         TEST_ASSERT_NOT_NULL(info->text);
-        TEST_ASSERT_TRUE(info->count >= 1 && info->count <= 3);
+        TEST_ASSERT_TRUE(info->count >= 1 && info->count <= (info->per_model == 2 ? MTT_MAX_MODELS * MTT_MAX_MODELS
+                                                              : info->per_model == 1 || info->type == MTT_PARAM_MODELS
+                                                                  ? MTT_MAX_MODELS : 3));
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(4, &info));
     TEST_ASSERT_EQUAL_UINT(2, info->count); /* meas_sigma */
@@ -79,7 +93,7 @@ static void test_get_set_round_trip(void)
 {
     mtt_params def, p;
     const mtt_param_info *info;
-    double v[3];
+    double v[VALS];
     size_t k;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&def));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
@@ -89,9 +103,14 @@ static void test_get_set_round_trip(void)
     p.association = MTT_ASSOC_JPDA;
     p.init_gate = MTT_INIT_GATE_INTENSITY;
     p.initiate = 0;
+    p.motion = MTT_MOTION_IMM;
+#if MTT_WITH_IMM
+    p.imm_psd[0] = MTT_R(3.0);
+    p.imm_transition[0][0] = MTT_R(0.5);
+#endif
     for (k = 0; mtt_params_info(k, &info) == MTT_OK; ++k) {
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_get(&def, info->key, v, info->count));
-        TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_OK, mtt_params_set(&p, info->key, v, info->count),
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_get(&def, info->key, v, n_values(info)));
+        TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_OK, mtt_params_set(&p, info->key, v, n_values(info)),
                                       info->key);
     }
     TEST_ASSERT_EQUAL_MEMORY(&def, &p, sizeof p);
@@ -108,7 +127,7 @@ static void test_get_set_round_trip(void)
 static void try_set(const char *key, size_t elem, double value, mtt_status st)
 {
     mtt_params p, before;
-    double v[3];
+    double v[VALS];
     char msg[96];
     size_t i;
     const mtt_param_info *info;

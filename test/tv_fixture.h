@@ -109,8 +109,8 @@ static inline void tv_init(mtt_tracker *trk, const mtt_params *p)
 
 /* Add track i with prediction xp and covariance Pp (innovation from trk->R).
  * Also copies the prediction into the track itself. */
-static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_real xp[4],
-                                       mtt_real Pp[4][4], mtt_real ex_pred)
+static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_state xp,
+                                       mtt_cov Pp, mtt_real ex_pred)
 {
     uint16_t i = trk->n_tracks++;
     mtt_track_frame *tf = &trk->tf[i];
@@ -138,7 +138,8 @@ static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_real xp[4],
 static inline uint16_t tv_add_track_s(mtt_tracker *trk, mtt_real zx, mtt_real zy, mtt_real s11,
                                       mtt_real s12, mtt_real s22, mtt_real ex_pred)
 {
-    mtt_real xp[4], Pp[4][4];
+    mtt_state xp;
+    mtt_cov Pp;
     memset(Pp, 0, sizeof Pp);
     xp[0] = zx;
     xp[1] = zy;

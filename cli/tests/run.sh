@@ -143,7 +143,7 @@ list_settings)
     stdout_has "| \`terminate_threshold\` | number | in [0, 1); below confirm_threshold | 0.01 | "
     stdout_has "| \`initial_tracks\` | list | "
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 28 ] || fail "expected 28 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 32 ] || fail "expected 32 key rows"
     ;;
 version)
     run --version
@@ -327,6 +327,19 @@ cfg_intensity_subkey)   cfg_fail cfg_intensity_subkey "key 'intensity_gate.f3': 
 cfg_seed_missing_member) cfg_fail cfg_seed_missing_member "key 'initial_tracks[1].vy': missing" ;;
 cfg_seed_bad_cov)
     cfg_fail cfg_seed_bad_cov "key 'initial_tracks[0].P': must be a symmetric positive definite"
+    ;;
+cfg_imm_unsupported)    cfg_fail cfg_imm_unsupported "key 'motion': motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda" ;;
+cfg_imm_transition_size) cfg_fail cfg_imm_transition_size "key 'imm_transition': must be r rows of r (r models), each row summing to 1 (with 2 models in imm_models)" ;;
+cfg_imm_bad_model)      cfg_fail cfg_imm_bad_model "key 'imm_models[0].model': unknown model 'ct' (expected one of: cv, ca)" ;;
+cfg_imm_valid)
+    # motion = imm: the tracks file gains mu_0, mu_1 (docs/FORMATS.md)
+    rm -f "$out"
+    run --config "$data/cfg_imm_valid.json" --detections "$data/valid.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1" ] ||
+        fail "header $(head -n 1 "$out")"
+    awk -F, 'NR > 1 && (NF != 14 || $13 + $14 < 0.9999 || $13 + $14 > 1.0001) { bad = 1 } END { exit bad }' "$out" ||
+        fail "a row without two model probabilities summing to 1"
     ;;
 *)
     echo "run.sh: unknown case '$case'" >&2

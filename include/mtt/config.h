@@ -58,10 +58,34 @@
 #define MTT_MAX_JPDA_EVENTS 2048
 #endif
 
+/* Interacting multiple models (ALGORITHMS.md §14).  MTT_WITH_IMM 1 builds
+ * the IMM stages (src/imm.c) and the extra motion models (src/motion_ca.c,
+ * src/motion_ct.c); 0 leaves them out, so a firmware build keeps one
+ * 4-state CV filter per track, its .text and its RAM, and motion = imm
+ * reports MTT_ERR_UNSUPPORTED.  MTT_MAX_MODELS bounds the models of one
+ * IMM track (r). */
+#ifndef MTT_WITH_IMM
+#define MTT_WITH_IMM 1
+#endif
+#ifndef MTT_MAX_MODELS
+#if MTT_WITH_IMM
+#define MTT_MAX_MODELS 3
+#else
+#define MTT_MAX_MODELS 1
+#endif
+#endif
+
 /* Largest state of a motion model (the track table's x and P); the
- * constant-velocity model needs 4 (x, y, vx, vy). */
+ * constant-velocity model needs 4 (x, y, vx, vy), constant acceleration 6
+ * (x, y, vx, vy, ax, ay), the coordinated turn 5 (x, y, vx, vy, omega).
+ * Every model's first four components are [x y vx vy] (the common subspace
+ * of the IMM mixing, ALGORITHMS.md §14.1). */
 #ifndef MTT_MAX_STATE
+#if MTT_WITH_IMM
+#define MTT_MAX_STATE 6
+#else
 #define MTT_MAX_STATE 4
+#endif
 #endif
 
 /* 1: build the comparison baselines (ihpda-2d, jipda, the JPDA family).
@@ -90,6 +114,18 @@
 
 #if MTT_MAX_STATE < 4 || MTT_MAX_STATE > 9
 #error "MTT_MAX_STATE must be in [4, 9] (the CV model needs 4)"
+#endif
+#if MTT_WITH_IMM != 0 && MTT_WITH_IMM != 1
+#error "MTT_WITH_IMM must be 0 or 1"
+#endif
+#if MTT_MAX_MODELS < 1 || MTT_MAX_MODELS > 8
+#error "MTT_MAX_MODELS must be in [1, 8]"
+#endif
+#if MTT_WITH_IMM && MTT_MAX_MODELS < 2
+#error "MTT_WITH_IMM needs MTT_MAX_MODELS >= 2"
+#endif
+#if MTT_WITH_IMM && MTT_MAX_STATE < 6
+#error "MTT_WITH_IMM needs MTT_MAX_STATE >= 6 (the constant-acceleration model)"
 #endif
 #if MTT_WITH_BASELINES != 0 && MTT_WITH_BASELINES != 1
 #error "MTT_WITH_BASELINES must be 0 or 1"

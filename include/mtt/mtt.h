@@ -41,10 +41,12 @@ extern "C" {
 #define MTT_CONFIG_ID                                                                              \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
-    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                   \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(2166136261u,                                                                   \
         MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
         MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
-        MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real))
+        MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real)), \
+        MTT_WITH_IMM), MTT_MAX_MODELS)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
@@ -85,6 +87,19 @@ typedef enum mtt_assoc {
     MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (ALGORITHMS.md §13.7) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
+
+/** Motion model of every track (docs/FORMATS.md `motion`, ALGORITHMS.md §2, §14). */
+typedef enum mtt_motion {
+    MTT_MOTION_CV = 0,  /**< one constant-velocity filter (ALGORITHMS.md §2) */
+    MTT_MOTION_IMM = 1  /**< interacting multiple models imm_model[] (ALGORITHMS.md §14); needs MTT_WITH_IMM
+                             and lm-ihpda, ihpda, lm-ipda, ipda or jipda, else MTT_ERR_UNSUPPORTED */
+} mtt_motion;
+
+/** A model of an IMM track (docs/FORMATS.md `imm_models`). */
+typedef enum mtt_model_kind {
+    MTT_MODEL_CV = 0,   /**< nearly constant velocity, white-noise acceleration, psd length²/time³ */
+    MTT_MODEL_CA = 1    /**< nearly constant acceleration, white-noise jerk, psd length²/time⁵ */
+} mtt_model_kind;
 
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
 typedef enum mtt_init_gate {
@@ -148,6 +163,12 @@ typedef struct mtt_params {
     mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta */
     mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas */
     mtt_real adaptive_jpda_shrink;  /**< gate shrink factor */
+    mtt_motion motion;              /**< cv, or imm (ALGORITHMS.md §14) */
+    uint8_t imm_n_models;           /**< r: models of an IMM track, 2..MTT_MAX_MODELS */
+    mtt_model_kind imm_model[MTT_MAX_MODELS]; /**< model j (imm_models[j].model) */
+    mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd) */
+    mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
+    mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
@@ -156,7 +177,12 @@ typedef struct mtt_params {
 typedef enum mtt_param_type {
     MTT_PARAM_REAL = 0, /**< count mtt_real values */
     MTT_PARAM_BOOL,     /**< one value, 0 or 1 (a JSON boolean) */
-    MTT_PARAM_ENUM      /**< one value, the index of one of names[] */
+    MTT_PARAM_ENUM,     /**< one value, the index of one of names[] */
+    MTT_PARAM_MODELS    /**< imm_models: a list of up to count {model, process_psd}.  mtt_params_set/get
+                             take 1 + 2 count values: r, then (model index into names[], psd) for each
+                             of count slots (slots from r on are ignored by set, zero from get); psd
+                             within lo, hi.  Setting it resets imm_transition and imm_initial to their
+                             defaults for r models */
 } mtt_param_type;
 
 /** One settings key of mtt_params: the table behind mtt_params_check,
@@ -172,6 +198,9 @@ typedef struct mtt_param_info {
     uint8_t lo_open, hi_open; /**< 1 = bound excluded */
     const char *const *names; /**< MTT_PARAM_ENUM: the spellings, index = value; else NULL */
     uint8_t n_names;
+    uint8_t per_model;        /**< 0; 1: one value per IMM model (count = MTT_MAX_MODELS slots, the
+                                   first r used, the rest 0); 2: an r x r matrix in MTT_MAX_MODELS^2
+                                   slots, row-major with row length MTT_MAX_MODELS */
     const char *cross;        /**< rule against other values that only mtt_params_check
                                    applies ("below confirm_threshold"); NULL if none */
     const char *text;         /**< one-line meaning */
@@ -194,6 +223,9 @@ typedef struct mtt_track_view {
     mtt_real existence;   /**< P(target exists | Z^k) in [0, 1] */
     uint32_t age;         /**< frames since birth */
     int32_t meas;         /**< input index of the measurement used this frame, or -1 */
+    uint8_t n_models;     /**< 1 (motion = cv), or r of motion = imm */
+    mtt_real mu[MTT_MAX_MODELS]; /**< model probabilities after this frame's update, imm_models
+                                      order, sum 1 (ALGORITHMS.md §14.1); mu[0] = 1 with cv */
 } mtt_track_view;
 
 /** Event counters (one frame, or cumulative). */

@@ -19,6 +19,8 @@ typedef double mtt_real;
 #define mtt_exp(x) exp(x)
 #define mtt_log(x) log(x)
 #define mtt_fabs(x) fabs(x)
+#define mtt_sin(x) sin(x)
+#define mtt_cos(x) cos(x)
 #define MTT_REAL_EPS 2.220446049250313e-16
 #define MTT_REAL_MAX 1.7976931348623157e308
 #else
@@ -29,6 +31,8 @@ typedef float mtt_real;
 #define mtt_exp(x) expf(x)
 #define mtt_log(x) logf(x)
 #define mtt_fabs(x) fabsf(x)
+#define mtt_sin(x) sinf(x)
+#define mtt_cos(x) cosf(x)
 #define MTT_REAL_EPS 1.1920929e-7f
 #define MTT_REAL_MAX 3.4028235e38f
 #endif

@@ -25,6 +25,13 @@ typedef struct mtt_track {
     uint8_t confirmed;
     uint8_t born;        /* born in the current frame: no gate yet */
     uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
+#if MTT_WITH_IMM
+    /* motion = imm (ALGORITHMS.md §14): x, P above hold the combined 4-D
+     * estimate; these the model-conditioned ones and the mode probabilities. */
+    mtt_real mu[MTT_MAX_MODELS];
+    mtt_real xm[MTT_MAX_MODELS][MTT_MAX_STATE];
+    mtt_real Pm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
+#endif
 } mtt_track;
 
 /** Per-frame, per-track scratch (prediction, innovation, gate). */
@@ -50,6 +57,19 @@ typedef struct mtt_track_frame {
     uint8_t valid;       /* S positive definite */
     uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (ALGORITHMS.md §13.7) */
     uint8_t contest;     /* lm-ihpda contest: MTT_CONTEST_* (ALGORITHMS.md §10.4) */
+#if MTT_WITH_IMM
+    /* motion = imm: xp, Pp, S, Si, det_s, K above are the combined
+     * prediction (the gate's centre); per model j the predicted mode
+     * probability c̄_j and the model's own prediction and innovation. */
+    mtt_real cbar[MTT_MAX_MODELS];
+    mtt_real xpm[MTT_MAX_MODELS][MTT_MAX_STATE];
+    mtt_real Ppm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real Km[MTT_MAX_MODELS][MTT_MAX_STATE][2];
+    mtt_real Sim[MTT_MAX_MODELS][3];
+    mtt_real peakm[MTT_MAX_MODELS]; /* N(0; 0, S_j) / PG */
+    mtt_real vgm;                   /* largest model gate area: the union's (ALGORITHMS.md §14.2) */
+    mtt_real wm[MTT_MAX_MODELS][2]; /* gate half-widths sqrt(gamma S_j) */
+#endif
 } mtt_track_frame;
 
 /** A gated (track, measurement) pair. */
@@ -88,6 +108,12 @@ typedef struct mtt_row_scratch {
     mtt_real L[MTT_MAX_GATED];
     mtt_real nu[MTT_MAX_GATED][2];
     uint8_t rank[MTT_MAX_GATED];
+#if MTT_WITH_IMM
+    /* IMM split of one track (ALGORITHMS.md §14.2): p_i^j per pair and
+     * model, and each model's betas. */
+    mtt_real imm_e[MTT_MAX_GATED][MTT_MAX_MODELS];
+    mtt_real imm_beta[MTT_MAX_MODELS][MTT_MAX_GATED];
+#endif
 } mtt_row_scratch;
 
 /** Columns of the optimal 2-D assignment: the measurements one cluster can

@@ -56,8 +56,9 @@ static PyObject *info_tuple(const mtt_param_info *in)
         }
         PyTuple_SET_ITEM(names, k, s);
     }
-    row = Py_BuildValue("(siiddiiNzs)", in->key, (int)in->type, (int)in->count, in->lo, in->hi,
-                        (int)in->lo_open, (int)in->hi_open, names, in->cross, in->text);
+    row = Py_BuildValue("(siiddiiNzsi)", in->key, (int)in->type, (int)in->count, in->lo, in->hi,
+                        (int)in->lo_open, (int)in->hi_open, names, in->cross, in->text,
+                        (int)in->per_model);
     return row;
 }
 
@@ -171,12 +172,16 @@ static int numbers(PyObject *seq, double *v, Py_ssize_t n, const char *what)
     return 1;
 }
 
+/* Values of one key: 16 (a 4x4 covariance), imm_transition's
+ * MTT_MAX_MODELS^2, imm_models' 1 + 2 MTT_MAX_MODELS. */
+#define PARAM_VALUES_MAX (16 + MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS)
+
 /* set_param(key, values) -> status of mtt_params_set (before init only) */
 static PyObject *tracker_set_param(CoreTracker *self, PyObject *args)
 {
     const char *key;
     PyObject *seq;
-    double v[16];
+    double v[PARAM_VALUES_MAX];
     Py_ssize_t n;
     if (!PyArg_ParseTuple(args, "sO", &key, &seq))
         return NULL;
@@ -187,7 +192,7 @@ static PyObject *tracker_set_param(CoreTracker *self, PyObject *args)
     n = PySequence_Size(seq);
     if (n < 0)
         return NULL;
-    if (n < 1 || n > 16)
+    if (n < 1 || n > PARAM_VALUES_MAX)
         return PyLong_FromLong((long)MTT_ERR_RANGE);
     if (!numbers(seq, v, n, "set_param"))
         return NULL;
@@ -199,12 +204,12 @@ static PyObject *tracker_get_param(CoreTracker *self, PyObject *args)
 {
     const char *key;
     Py_ssize_t n, i;
-    double v[16];
+    double v[PARAM_VALUES_MAX];
     mtt_status st;
     PyObject *t;
     if (!PyArg_ParseTuple(args, "sn", &key, &n))
         return NULL;
-    if (n < 1 || n > 16)
+    if (n < 1 || n > PARAM_VALUES_MAX)
         return Py_BuildValue("(iO)", (int)MTT_ERR_RANGE, Py_None);
     st = mtt_params_get(&self->par, key, v, (size_t)n);
     if (st != MTT_OK)
@@ -336,9 +341,10 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
 }
 
 /* table() -> bytes: one row of TABLE_COLUMNS float64 per live track, ascending id:
- * id, confirmed, x, y, vx, vy, existence, age, detection, P (16, row-major).
+ * id, confirmed, x, y, vx, vy, existence, age, detection, P (16, row-major),
+ * n_models, mu (MTT_MAX_MODELS; motion = imm: the model probabilities).
  * One call per step instead of one tuple per track (mtt_sim's Monte Carlo). */
-#define TABLE_COLUMNS 25
+#define TABLE_COLUMNS (26 + MTT_MAX_MODELS)
 static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
 {
     size_t n = 0, i;
@@ -372,6 +378,9 @@ static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
         row[8] = (double)tv.meas;
         for (k = 0; k < 16; ++k)
             row[9 + k] = (double)tv.P[k / 4][k % 4];
+        row[25] = (double)tv.n_models;
+        for (k = 0; k < MTT_MAX_MODELS; ++k)
+            row[26 + k] = (double)tv.mu[k];
     }
     return bytes;
 }
@@ -465,7 +474,7 @@ static PyTypeObject TrackerType = {
 
 static PyMethodDef core_methods[] = {
     {"params_info", core_params_info, METH_NOARGS,
-     "params_info() -> list of (key, type, count, lo, hi, lo_open, hi_open, names, cross, text)"},
+     "params_info() -> list of (key, type, count, lo, hi, lo_open, hi_open, names, cross, text, per_model)"},
     {"status_text", core_status_text, METH_VARARGS, "status_text(status) -> text"},
     {"two_point_cov", core_two_point_cov, METH_VARARGS,
      "two_point_cov(sx, sy, dt) -> (status, 16 values) of mtt_init_two_point_cov"},
@@ -497,6 +506,7 @@ PyMODINIT_FUNC PyInit__core(void)
         PyModule_AddStringConstant(m, "REAL", REAL_NAME) < 0 ||
         PyModule_AddObject(m, "REAL_MAX", PyFloat_FromDouble((double)MTT_REAL_MAX)) < 0 ||
         PyModule_AddIntConstant(m, "MAX_TRACKS", MTT_MAX_TRACKS) < 0 ||
+        PyModule_AddIntConstant(m, "MAX_MODELS", MTT_MAX_MODELS) < 0 ||
         PyModule_AddIntConstant(m, "TABLE_COLUMNS", TABLE_COLUMNS) < 0 ||
         PyModule_AddIntConstant(m, "MAX_MEAS", MTT_MAX_MEAS) < 0 ||
         PyModule_AddIntConstant(m, "ERR_TIME", MTT_ERR_TIME) < 0 ||

@@ -24,13 +24,13 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["SettingsError", "Seed", "apply_settings", "load_settings", "params_table"]
+__all__ = ["SettingsError", "Seed", "apply_settings", "load_settings", "n_values", "params_table"]
 
 SEEDS_KEY = "initial_tracks"
 SEED_KEYS = ("x", "y", "vx", "vy", "P")
 
 # mtt_param_type
-REAL, BOOL, ENUM = 0, 1, 2
+REAL, BOOL, ENUM, MODELS = 0, 1, 2, 3
 
 
 class SettingsError(ValueError):
@@ -48,7 +48,8 @@ class SettingsError(ValueError):
 
 
 class _Row:
-    __slots__ = ("key", "type", "count", "lo", "hi", "lo_open", "hi_open", "names", "cross", "text")
+    __slots__ = ("key", "type", "count", "lo", "hi", "lo_open", "hi_open", "names", "cross", "text",
+                 "per_model")
 
     def __init__(self, t):
         for name, v in zip(self.__slots__, t):
@@ -64,6 +65,12 @@ def params_table() -> list:
     if _TABLE is None:
         _TABLE = [_Row(t) for t in _core.params_info()]
     return _TABLE
+
+
+def n_values(r) -> int:
+    """Values of a key through set_param / get_param (imm_models: r, then a
+    model and a psd per slot)."""
+    return 1 + 2 * r.count if r.type == MODELS else r.count
 
 
 class Seed:
@@ -225,8 +232,59 @@ class _Reader:
             out.append(name)
         return ", ".join(out)
 
+    def models(self, r: _Row, v, key) -> list:
+        """imm_models: 2 to count objects {"model": M, "process_psd": q} (io/settings.c parse_models)."""
+        n = len(v) if _is_sequence(v) else -1
+        if n < 2 or n > r.count:
+            found = _json_type(v) if n < 0 else ("fewer" if n < 2 else "more")
+            self.fail(key, f'must be a list of 2 to {r.count} objects {{"model": M, "process_psd": q}}, '
+                      f"found {found}")
+        vals = [0.0] * n_values(r)
+        vals[0] = float(n)
+        names = ", ".join(r.names)
+        for i, e in enumerate(v):
+            sub = f"{key}[{i}]"
+            if not isinstance(e, dict):
+                self.fail(sub, f'must be an object {{"model": M, "process_psd": q}}, found {_json_type(e)}')
+            for m in e:
+                if m not in ("model", "process_psd"):
+                    self.fail(f"{sub}.{m}", "unknown key (expected model, process_psd)")
+            m = e.get("model")
+            if not isinstance(m, str):
+                self.fail(f"{sub}.model", f"must be one of: {names}")
+            if m not in r.names:
+                self.fail(f"{sub}.model", f"unknown model '{m}' (expected one of: {names})")
+            vals[1 + 2 * i] = float(r.names.index(m))
+            if "process_psd" not in e:
+                self.fail(f"{sub}.process_psd", "missing")
+            q = self.number(e["process_psd"], f"{sub}.process_psd")
+            if not q > 0.0:
+                self.fail(f"{sub}.process_psd", f"must be > 0, found {_c_g(q)}")
+            vals[2 + 2 * i] = q
+        return vals
+
+    def per_model(self, r: _Row, v, key) -> list:
+        """r numbers, or r rows of r numbers, into the MAX_MODELS slots (io/settings.c parse_per_model)."""
+        mm = _core.MAX_MODELS
+        n = len(v) if _is_sequence(v) else -1
+        if n < 1 or n > mm:
+            what = "an array of rows" if r.per_model == 2 else "an array of numbers"
+            found = _json_type(v) if n < 0 else "more"
+            self.fail(key, f"must be {what}, one per model of imm_models (at most {mm}), found {found}")
+        vals = [0.0] * r.count
+        if r.per_model == 1:
+            vals[:n] = self.numbers(v, key, n)
+        else:
+            for i, row in enumerate(v):
+                vals[i * mm:i * mm + n] = self.numbers(row, f"{key}[{i}]", n)
+        return vals
+
     def param(self, r: _Row, v, key):
-        if r.type == REAL:
+        if r.type == MODELS:
+            vals = self.models(r, v, key)
+        elif r.type == REAL and r.per_model:
+            vals = self.per_model(r, v, key)
+        elif r.type == REAL:
             vals = [self.number(v, key)] if r.count == 1 else self.numbers(v, key, r.count)
         elif r.type == BOOL:
             if not _is_bool(v):
@@ -245,6 +303,8 @@ class _Reader:
         """mtt_params_set refused vals: name the element that is out of range
         on its own (the others as they are), and the range."""
         rng = _range_text(r)
+        if r.type == MODELS:
+            self.fail(key, f"must be {rng}, found a model out of range")
         if r.count > 1:
             _, cur = self.core.get_param(r.key, r.count)
             for e in range(r.count):
@@ -258,12 +318,19 @@ class _Reader:
         """A _core.Tracker with the parameters set so far."""
         q = _core.Tracker()
         for row in params_table():
-            _, cur = self.core.get_param(row.key, row.count)
+            _, cur = self.core.get_param(row.key, n_values(row))
             q.set_param(row.key, cur)
         return q
 
     def obj(self, d: dict, prefix: str):
+        if prefix == "" and "imm_models" in d:
+            # first, whatever the key order: it sets r and resets imm_transition, imm_initial
+            kind, row = self.classify("", "imm_models")
+            if kind == "key":
+                self.param(row, d["imm_models"], "imm_models")
         for name, v in d.items():
+            if prefix == "" and name == "imm_models" and self.classify("", name)[0] == "key":
+                continue
             if not isinstance(name, str):
                 self.fail(repr(name), "keys must be strings")
             kind, row = self.classify(prefix, name)
@@ -323,6 +390,26 @@ class _Reader:
                     self.fail(f"{tkey}.{SEED_KEYS[k]}", "missing: every initial track needs x, y, vx and vy")
             self.seeds.append(Seed(x, P))
 
+    @staticmethod
+    def _row(key):
+        return next(r for r in params_table() if r.key == key)
+
+    def default_models(self, settings: dict):
+        """imm_models not given: the default follows process_psd (io/settings.c default_models)."""
+        if "imm_models" in settings:
+            return
+        row = self._row("imm_models")
+        _, v = self.core.get_param(row.key, n_values(row))
+        if int(v[0]) < 2:
+            return  # a build without IMM
+        _, p = self.core.get_param("process_psd", 1)
+        if 10.0 * p[0] > _core.REAL_MAX:
+            self.fail("process_psd", "10 x process_psd (the default CA model of imm_models) does not fit "
+                      "the tracker's real type")
+        w = list(v)
+        w[2], w[4] = p[0], 10.0 * p[0]
+        self.core.set_param(row.key, tuple(w))
+
     def check(self):
         st, bad = self.core.check()
         if st == 0:
@@ -331,9 +418,18 @@ class _Reader:
         if st == _core.ERR_PARAM:
             if row is None:
                 self.fail(bad or "?", "rejected by mtt_params_check")
+            if row.type == MODELS or row.per_model:
+                _, v = self.core.get_param("imm_models", n_values(self._row("imm_models")))
+                what = row.cross if row.cross else "2 or more models"
+                self.fail(bad, f"must be {what} (with {int(v[0])} models in imm_models)")
             _, v = self.core.get_param(bad, row.count)
             val = _values_text(v)
             self.fail(bad, f"must be {row.cross if row.cross else _range_text(row)}, found {val}")
+        if st == _core.ERR_UNSUPPORTED and bad == "motion":
+            assoc = self._row("association")
+            _, a = self.core.get_param("association", 1)
+            self.fail(bad, "motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda, and a "
+                      f"build with MTT_WITH_IMM (association is {assoc.names[int(a[0])]})")
         if st == _core.ERR_UNSUPPORTED and row is not None and row.type == ENUM:
             _, v = self.core.get_param(bad, 1)
             self.fail(bad, f"{bad} '{row.names[int(v[0])]}' is not implemented in this version "
@@ -393,5 +489,6 @@ def apply_settings(core, settings, source: str = "settings") -> list:
         raise SettingsError(source, None, f"the settings must be a JSON object, found {_json_type(settings)}")
     r = _Reader(source, core)
     r.obj(settings, "")
+    r.default_models(settings)
     r.check()
     return r.seeds

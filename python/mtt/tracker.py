@@ -24,7 +24,8 @@ __all__ = ["Tracker", "Track", "SettingsError", "TABLE_COLUMNS"]
 
 #: Columns of Tracker.track_table(): one row per live track.
 TABLE_COLUMNS = ("id", "confirmed", "x", "y", "vx", "vy", "existence", "age", "detection",
-                 *(f"P{i}{j}" for i in range(4) for j in range(4)))
+                 *(f"P{i}{j}" for i in range(4) for j in range(4)), "n_models",
+                 *(f"mu{j}" for j in range(_core.MAX_MODELS)))
 
 
 class Track:
@@ -34,8 +35,9 @@ class Track:
     (numpy (4,): x, y, vx, vy), ``covar`` (numpy (4, 4)), ``existence``
     (float in [0, 1]), ``age`` (scans since birth), ``detection`` (index of
     the detection of this step that updated it, or -1), and
-    ``model_probabilities``: None (the constant-velocity model alone; with an
-    IMM motion model it will hold the model probabilities).
+    ``model_probabilities``: None with ``motion`` = ``cv``; with ``imm`` a
+    read-only array of the r model probabilities after this step, in
+    ``imm_models`` order (summing to 1; ALGORITHMS.md §14.1).
     """
 
     __slots__ = ("id", "confirmed", "state", "covar", "existence", "age", "detection",
@@ -59,7 +61,12 @@ class Track:
         covar = r[9:25].reshape(4, 4).copy()
         state.flags.writeable = False
         covar.flags.writeable = False
-        return cls(r[0], r[1] != 0.0, state, covar, r[6], r[7], r[8])
+        mu = None
+        nm = int(r[25])
+        if nm > 1:
+            mu = r[26:26 + nm].copy()
+            mu.flags.writeable = False
+        return cls(r[0], r[1] != 0.0, state, covar, r[6], r[7], r[8], mu)
 
     def __repr__(self) -> str:
         x, y, vx, vy = (float(v) for v in self.state)
@@ -155,12 +162,14 @@ class Tracker:
 
     def param(self, key: str):
         """The value of a settings key as the tracker holds it (tuple of floats;
-        an enum as its index, a boolean as 0 / 1)."""
-        from .settings import params_table
+        an enum as its index, a boolean as 0 / 1; imm_models as r, then a
+        model index and a psd per slot; the per-model keys in their
+        MTT_MAX_MODELS slots)."""
+        from .settings import n_values, params_table
         row = next((r for r in params_table() if r.key == key), None)
         if row is None:
             raise KeyError(key)
-        _, v = self._core.get_param(key, row.count)
+        _, v = self._core.get_param(key, n_values(row))
         return v
 
     @property
@@ -171,9 +180,10 @@ class Tracker:
         return list(self._tracks)
 
     def track_table(self) -> np.ndarray:
-        """The live tracks as one float64 array (n, 25), ascending id; the columns
-        are ``mtt.tracker.TABLE_COLUMNS``: id, confirmed (0/1), x, y, vx, vy,
-        existence, age, detection (-1: none), then the covariance row-major.
+        """The live tracks as one float64 array (n, 26 + MAX_MODELS), ascending id;
+        the columns are ``mtt.tracker.TABLE_COLUMNS``: id, confirmed (0/1), x, y,
+        vx, vy, existence, age, detection (-1: none), the covariance row-major,
+        n_models (1 with motion = cv) and the model probabilities mu0, mu1, ...
         Cheaper than ``tracks`` for many steps (no object per track)."""
         a = np.frombuffer(self._core.table(), dtype=np.float64).reshape(-1, _core.TABLE_COLUMNS)
         return a

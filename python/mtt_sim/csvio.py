@@ -208,35 +208,62 @@ def _track_row(p, n, f):
             _num(p, n, "track", f[2], integer=True), status == "confirmed",
             _num(p, n, "x", f[4]), _num(p, n, "y", f[5]), _num(p, n, "vx", f[6]), _num(p, n, "vy", f[7]),
             _num(p, n, "existence", f[8], empty_ok=True),
-            _num(p, n, "pxx", f[9]), _num(p, n, "pxy", f[10]), _num(p, n, "pyy", f[11]))
+            _num(p, n, "pxx", f[9]), _num(p, n, "pxy", f[10]), _num(p, n, "pyy", f[11]),
+            tuple(_num(p, n, f"mu_{j}", v) for j, v in enumerate(f[12:])))
 
 
-def _tracks_table(rows):
+def _tracks_header_models(name, header: str) -> int:
+    """Number r of trailing model-probability columns mu_0..mu_{r-1}
+    (motion = imm, docs/FORMATS.md), 0 without them."""
+    h = header.strip()
+    if h == TRACKS_HEADER:
+        return 0
+    extra = h[len(TRACKS_HEADER):].split(",")[1:] if h.startswith(TRACKS_HEADER + ",") else None
+    if not extra or extra != [f"mu_{j}" for j in range(len(extra))]:
+        raise FormatError(f"{name}:1: header must be '{TRACKS_HEADER}' (with motion = imm followed by "
+                          f"mu_0, mu_1, ...), got '{h}'")
+    return len(extra)
+
+
+def _tracks_table(rows, r: int = 0):
     if not rows:
-        return empty_tracks()
+        out = empty_tracks()
+        if r:
+            out["mu"] = np.zeros((0, r))
+        return out
     a = list(zip(*rows))
     keys = ["scan", "time", "track", "confirmed", "x", "y", "vx", "vy", "existence", "pxx", "pxy", "pyy"]
     out = {}
     for k, col in zip(keys, a):
         dt = int if k in ("scan", "track") else bool if k == "confirmed" else float
         out[k] = np.array(col, dt)
+    if r:
+        out["mu"] = np.array(a[12], float).reshape(len(rows), r)  # model probabilities per row
     return out
 
 
+def _parse_track_lines(name, lines) -> dict:
+    """lines: (line number, text) with the header first."""
+    if not lines:
+        raise FormatError(f"{name}: empty file (no header)")
+    r = _tracks_header_models(name, lines[0][1])
+    ncol = 12 + r
+    rows = []
+    for n, line in lines[1:]:
+        f = [a.strip() for a in line.split(",")]
+        if len(f) != ncol:
+            raise FormatError(f"{name}:{n}: expected {ncol} fields, got {len(f)}")
+        rows.append(_track_row(name, n, f))
+    return _tracks_table(rows, r)
+
+
 def read_tracks(path: str) -> dict:
-    """Read a tracks CSV written by mtt-track."""
-    return _tracks_table(_read(path, TRACKS_HEADER, _track_row))
+    """Read a tracks CSV written by mtt-track (with motion = imm: its mu_j
+    columns as out["mu"], rows x r)."""
+    return _parse_track_lines(path, list(_lines(path)))
 
 
 def parse_tracks(text: str, name: str = "<tracks>") -> dict:
     """Parse tracks CSV text (same rules as :func:`read_tracks`)."""
-    rows = []
     lines = [(n, ln) for n, ln in enumerate(text.splitlines(), 1) if ln.strip() and not ln.lstrip().startswith("#")]
-    if not lines or lines[0][1].strip() != TRACKS_HEADER:
-        raise FormatError(f"{name}:1: header must be '{TRACKS_HEADER}'")
-    for n, line in lines[1:]:
-        f = [a.strip() for a in line.split(",")]
-        if len(f) != 12:
-            raise FormatError(f"{name}:{n}: expected 12 fields, got {len(f)}")
-        rows.append(_track_row(name, n, f))
-    return _tracks_table(rows)
+    return _parse_track_lines(name, lines)

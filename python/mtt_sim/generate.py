@@ -2,7 +2,13 @@
 
 Model (every number comes from the scenario, see scenarios/README.md):
 
-- Targets move with the constant-velocity model of docs/ALGORITHMS.md §2.  With
+- Targets move with the constant-velocity model of docs/ALGORITHMS.md §2, except during
+  their ``manoeuvres``: a coordinated turn {"scan": k0, "scans": n, "g": a}
+  turns the velocity at constant speed over the n propagation steps from
+  scan k0 to scan k0 + n, with turn rate w = a G0 / |v| (lateral
+  acceleration a in standard gravities G0 = 9.80665 m/s^2, so metres and
+  seconds; positive turns left, counter-clockwise) or a given ``turn_rate``
+  w in rad per time unit; each step is the exact circular arc.  With
   ``truth_process_psd`` Sw > 0, each scan adds w ~ N(0, Q) with
   Q = Sw [[dt^3/3, dt^2/2], [dt^2/2, dt]] per axis (continuous white-noise
   acceleration, the tracker's own model); with Sw = 0 the motion is exact.
@@ -77,6 +83,28 @@ def _random_targets(scn, rng, nscan, times):
              "t_ref": t_ref, "first_scan": fs, "last_scan": ls, "pd": pd} for i in range(n)]
 
 
+def _turn_rate(t, k, s):
+    """Turn rate of target t on the step from scan k to k + 1 (0: straight)."""
+    for m in t.get("manoeuvres", ()):
+        k0 = int(m["scan"])
+        if k0 <= k < k0 + int(m["scans"]):
+            if "turn_rate" in m:
+                return float(m["turn_rate"])
+            speed = math.hypot(s[2], s[3])
+            return float(m["g"]) * scnmod.G0 / speed if speed > 0 else 0.0
+    return 0.0
+
+
+def _turn(s, w, dt):
+    """Exact coordinated-turn step of state s = [x, y, vx, vy] in place."""
+    sn, cs = math.sin(w * dt), math.cos(w * dt)
+    vx, vy = s[2], s[3]
+    s[0] += (sn * vx - (1.0 - cs) * vy) / w
+    s[1] += ((1.0 - cs) * vx + sn * vy) / w
+    s[2] = cs * vx - sn * vy
+    s[3] = sn * vx + cs * vy
+
+
 def _truth(scn, rng, times):
     """Return (truth table, per-scan list of (id, x, y, pd) present)."""
     nscan = len(times)
@@ -106,8 +134,12 @@ def _truth(scn, rng, times):
                 state[tid] = np.array([t["x"] + t["vx"] * tau, t["y"] + t["vy"] * tau, t["vx"], t["vy"]])
             else:
                 s = state[tid]
-                s[0] += dt * s[2]
-                s[1] += dt * s[3]
+                w = _turn_rate(t, k - 1, s)
+                if w == 0.0:
+                    s[0] += dt * s[2]
+                    s[1] += dt * s[3]
+                else:
+                    _turn(s, w, dt)
                 if chol is not None:
                     w = chol @ rng.standard_normal((2, 2))  # columns: x axis, y axis
                     s[0] += w[0, 0]
@@ -126,7 +158,7 @@ def _truth(scn, rng, times):
             p[2] += float(sp["dv_parent"][0])
             p[3] += float(sp["dv_parent"][1])
             state[cid] = c
-            byid[cid] = dict(byid[pid], id=cid, first_scan=k)
+            byid[cid] = dict(byid[pid], id=cid, first_scan=k, manoeuvres=[])  # the child flies straight
             order = sorted(byid)
         # 3. record targets in the field
         pres = []

@@ -26,6 +26,11 @@ Conventions used throughout
   alpha = 2 and cut-off c, per scan, exact assignment.
 * **CLEAR-MOT** (Bernardin and Stiefelhagen 2008) with match threshold
   ``d_a``; see :func:`clear_mot` for the exact correspondence rule.
+* **RMSE on straight legs and in turns** (:func:`rmse_legs`, scenarios with
+  manoeuvres): the same squared errors pooled over two disjoint sets of
+  (target, scan): the scans inside a target's manoeuvre windows
+  (``scenario.manoeuvre_windows``: scans k0 + 1 .. k0 + n of a turn from
+  scan k0 lasting n scans) and all the others.
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ from .assign import linear_assignment
 __all__ = [
     "distances", "match", "confirmed_true_false", "gospa", "clear_mot",
     "seeded_outcome", "counts_per_scan", "time_per_frame", "frames", "score_run",
+    "turn_mask", "rmse_legs",
 ]
 
 
@@ -218,6 +224,40 @@ def seeded_outcome(seeded_targets, truth_ids, truth_xy, track_ids, track_xy, cut
     lost = any(a is None for a in on)
     return {"on": on, "coalescence": coalescence, "switch": switch, "lost": lost,
             "failed": coalescence or switch or lost}
+
+
+def turn_mask(windows, nscan: int) -> np.ndarray:
+    """Boolean array over scans 0..nscan-1: True inside any (first, last) window (inclusive)."""
+    mask = np.zeros(nscan, bool)
+    for first, last in windows:
+        mask[max(int(first), 0):min(int(last), nscan - 1) + 1] = True
+    return mask
+
+
+def rmse_legs(sq_sums: dict, windows: dict, nscan: int) -> dict:
+    """Position RMSE split into straight legs and turns.
+
+    ``sq_sums``: {target id: (sum of squared errors per scan, number of
+    matched runs per scan)} (arrays of length nscan, as the Monte Carlo
+    aggregate keeps them); ``windows``: {target id: [(first, last), ...]}
+    manoeuvre windows (a target without an entry is straight throughout).
+    Returns {"straight": rmse, "turn": rmse, "straight_n": count,
+    "turn_n": count}; an RMSE over no matched scan is NaN.
+    """
+    acc = {"straight": [0.0, 0.0], "turn": [0.0, 0.0]}
+    for tid, (ss, cc) in sq_sums.items():
+        ss = np.asarray(ss, float)
+        cc = np.asarray(cc, float)
+        m = turn_mask(windows.get(int(tid), ()), nscan)
+        acc["turn"][0] += float(ss[m].sum())
+        acc["turn"][1] += float(cc[m].sum())
+        acc["straight"][0] += float(ss[~m].sum())
+        acc["straight"][1] += float(cc[~m].sum())
+    out = {}
+    for k, (s, c) in acc.items():
+        out[k] = math.sqrt(s / c) if c else math.nan
+        out[k + "_n"] = int(c)
+    return out
 
 
 def counts_per_scan(track_scan, track_confirmed, nscan: int) -> tuple[np.ndarray, np.ndarray]:

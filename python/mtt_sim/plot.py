@@ -5,6 +5,8 @@
     PYTHONPATH=python python3 -m mtt_sim.plot scene --det D.det.csv --truth D.truth.csv --tracks D.tracks.csv \
         [--scenario scenarios/crossing3.json] [--settings D.settings.json] \
         [--scans 12 13 14 15] --out scene.png
+    PYTHONPATH=python python3 -m mtt_sim.plot models --truth D.truth.csv --tracks D.tracks.csv \
+        --scenario scenarios/manoeuvre.json --out models.png     # IMM: model probabilities
 """
 
 import argparse
@@ -31,8 +33,25 @@ def main(argv=None):
     c.add_argument("--scans", type=int, nargs="*", help="scans for the zoomed gate panels")
     c.add_argument("--title", default="")
     c.add_argument("--out", required=True)
+    mo = sub.add_parser("models", help="IMM: model probabilities of one run over time")
+    mo.add_argument("--truth", required=True)
+    mo.add_argument("--tracks", required=True)
+    mo.add_argument("--scenario", required=True, help="scenario JSON (turn windows, match distance)")
+    mo.add_argument("--names", nargs="*", help="model names (default: imm_models of the scenario)")
+    mo.add_argument("--title", default="")
+    mo.add_argument("--out", required=True)
     a = ap.parse_args(argv)
     try:
+        if a.cmd == "models":
+            scn = scenario.load(a.scenario)
+            models = scn["tracker"].get("imm_models") or []
+            names = a.names or [f"{m['model']} (q {m['process_psd']:g})" for m in models] or None
+            plots.model_probabilities(csvio.read_tracks(a.tracks), csvio.read_truth(a.truth),
+                                      scenario.manoeuvre_windows(scn), a.out, names=names,
+                                      match_distance=scn.get("metrics", {}).get("match_distance", 75.0),
+                                      title=a.title)
+            print(a.out)
+            return 0
         if a.cmd == "summary":
             with open(a.summary, encoding="utf-8") as f:
                 summ = json.load(f)

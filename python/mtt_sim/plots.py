@@ -250,3 +250,50 @@ def plot_all(summary: dict, base_dir: str, out_dir: str | None = None) -> list[s
               title=f"{name}, run 0 (seed {summary['seed0']}), {m}", units=summary.get("units"))
         paths.append(p)
     return paths
+
+
+def model_probabilities(tracks: dict, truth: dict, windows: dict, out_png: str, *, names=None,
+                        match_distance: float = 75.0, title: str = ""):
+    """One run of an IMM tracker: per target, the model probabilities over
+    time of the confirmed track that follows it (the track nearest to the
+    target in most scans, within match_distance), with the target's turn
+    windows shaded (scenario manoeuvres).  ``tracks`` needs the mu columns
+    (motion = imm)."""
+    import matplotlib.pyplot as plt
+
+    if "mu" not in tracks:
+        raise ValueError("the tracks file has no model probabilities (motion = imm writes mu_0, mu_1, ...)")
+    r = tracks["mu"].shape[1]
+    names = names or [f"model {j}" for j in range(r)]
+    targets = sorted(set(int(t) for t in truth["target"]))
+    fig, axes = plt.subplots(len(targets), 1, figsize=(8, 1.9 * len(targets) + 0.6), sharex=True, squeeze=False)
+    conf = tracks["confirmed"]
+    for ax, tid in zip(axes[:, 0], targets):
+        sel = truth["target"] == tid
+        best = {}
+        for k, x, y in zip(truth["scan"][sel], truth["x"][sel], truth["y"][sel]):
+            m = conf & (tracks["scan"] == k)
+            if not m.any():
+                continue
+            d = np.hypot(tracks["x"][m] - x, tracks["y"][m] - y)
+            i = int(np.argmin(d))
+            if d[i] <= match_distance:
+                t = int(tracks["track"][m][i])
+                best[t] = best.get(t, 0) + 1
+        for a, b in windows.get(tid, []):
+            ax.axvspan(a - 0.5, b + 0.5, color="0.85", lw=0)
+        if best:
+            t = max(best, key=best.get)
+            m = conf & (tracks["track"] == t)
+            for j in range(r):
+                ax.plot(tracks["scan"][m], tracks["mu"][m, j], lw=1.2, label=names[j])
+            ax.set_ylabel(f"target {tid}\ntrack {t}", fontsize=8)
+        ax.set_ylim(-0.02, 1.02)
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(loc="upper right", fontsize=8, ncol=r)
+    axes[-1, 0].set_xlabel("scan (grey: the target turns)")
+    fig.suptitle(title or "model probabilities of the confirmed tracks", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out_png, dpi=110)
+    plt.close(fig)
+    return out_png

@@ -133,6 +133,9 @@ def table_summary(s: dict) -> str:
         ["confirmed false tracks per scan"] + [_fmt(R[m]["totals"]["confirmed_false_per_scan"]) for m in modes],
         ["position RMSE, all targets"] + [_fmt(R[m]["totals"]["rmse_all"]) for m in modes],
     ]
+    if any("rmse_turn" in R[m]["totals"] for m in modes):  # scenarios with manoeuvres only
+        rows.append(["  on straight legs"] + [_fmt(R[m]["totals"].get("rmse_straight")) for m in modes])
+        rows.append(["  in turns"] + [_fmt(R[m]["totals"].get("rmse_turn")) for m in modes])
     tids = sorted({t for m in modes for t in R[m]["totals"]["rmse_per_target"]}, key=int)
     if len(tids) <= 16:
         for t in tids:

@@ -244,8 +244,9 @@ class Aggregate:
     PER_SCAN = ("n_truth", "conf_true", "conf_false", "n_tentative", "n_confirmed",
                 "gospa", "gospa_loc", "gospa_missed", "gospa_false", "idsw")
 
-    def __init__(self, nscan: int):
+    def __init__(self, nscan: int, windows: dict | None = None):
         self.nscan = nscan
+        self.windows = windows or {}  # manoeuvre windows: RMSE split into straight legs and turns
         self.ok = 0
         self.failures: list[dict] = []
         self.sums = {k: np.zeros(nscan) for k in self.PER_SCAN}
@@ -324,6 +325,10 @@ class Aggregate:
             "peak": {"scan": peak, "tentative_mean": float(s["n_tentative"][peak] / n),
                      "confirmed_mean": float(s["n_confirmed"][peak] / n)},
         }
+        if self.windows:
+            legs = metrics.rmse_legs(self.sq, self.windows, self.nscan)
+            totals["rmse_straight"] = legs["straight"]
+            totals["rmse_turn"] = legs["turn"]
         if self.run0 is not None:
             t0 = np.array(self.run0["tentative"]) + np.array(self.run0["confirmed"])
             k = int(np.argmax(t0))
@@ -375,7 +380,8 @@ def monte_carlo(scn: dict, modes, runs: int, exe: str, jobs: int | None = None, 
     nscan = int(scn["scans"]["count"])
     jobs = jobs or os.cpu_count() or 1
     items = [(m, r, seed0 + r) for r in range(runs) for m in modes]
-    aggs = {m: Aggregate(nscan) for m in modes}
+    windows = scnmod.manoeuvre_windows(scn)
+    aggs = {m: Aggregate(nscan, windows) for m in modes}
     t0 = time.monotonic()
     done = 0
     if jobs <= 1:

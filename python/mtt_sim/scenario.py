@@ -28,6 +28,7 @@ __all__ = [
     "apply_overrides",
     "validate",
     "expand_targets",
+    "manoeuvre_windows",
     "scan_times",
     "area_size",
     "seeded_targets",
@@ -46,7 +47,8 @@ TRACKER_KEYS = {
     "pg", "clutter_density", "snr_rho", "amplitude_eta", "markov_p11", "markov_p21",
     "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
-    "adaptive_jpda_distance", "adaptive_jpda_shrink", "initial_tracks",
+    "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
+    "imm_initial", "initial_tracks",
 }
 
 ASSOC_MODES = (
@@ -66,7 +68,9 @@ _AREA_KEYS = {"x", "y"}
 _SCAN_KEYS = {"count", "dt", "t0"}
 _CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
 _AMP_KEYS = {"rho"}
-_TARGET_KEYS = {"id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "rho"}
+_TARGET_KEYS = {"id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "rho", "manoeuvres"}
+_MANOEUVRE_KEYS = {"scan", "scans", "g", "turn_rate"}
+G0 = 9.80665  # standard gravity, m/s^2: a manoeuvre's "g" assumes metres and seconds
 _GROUP_KEYS = {"first_id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "offsets"}
 _RANDOM_KEYS = {"count", "first_id", "speed", "margin", "first_scan", "last_scan", "pd"}
 _SPLIT_KEYS = {"parent", "child", "scan", "dv_parent", "dv_child"}
@@ -216,6 +220,28 @@ def _kinematics(obj, source, where):
     _num(obj, "rho", source, where, lo=0, required=False)
 
 
+def _manoeuvres(t, source, where):
+    """``manoeuvres``: coordinated turns, each {"scan", "scans", "g" | "turn_rate"}, not overlapping."""
+    mans = t.get("manoeuvres")
+    if mans is None:
+        return
+    if not isinstance(mans, list):
+        _err(source, where + ".manoeuvres", "must be a list")
+    end = -1
+    for j, m in enumerate(mans):
+        w = f"{where}.manoeuvres[{j}]"
+        _check_keys(m, _MANOEUVRE_KEYS, source, w)
+        k0 = _num(m, "scan", source, w, lo=0, integer=True)
+        _num(m, "scans", source, w, lo=1, integer=True)
+        if ("g" in m) == ("turn_rate" in m):
+            _err(source, w, "needs exactly one of 'g' (lateral acceleration) or 'turn_rate' (rad per time unit)")
+        _num(m, "g", source, w, lo=-100, hi=100, required=False)
+        _num(m, "turn_rate", source, w, required=False)
+        if k0 < end:
+            _err(source, w + ".scan", "manoeuvres must be in scan order and must not overlap")
+        end = int(k0) + int(m["scans"])
+
+
 def validate(scn: dict, source: str = "<string>") -> None:
     """Raise ScenarioError naming the first bad key; return None if valid."""
     _check_keys(scn, _TOP_KEYS, source, "")
@@ -259,6 +285,7 @@ def validate(scn: dict, source: str = "<string>") -> None:
         _check_keys(t, _TARGET_KEYS, source, w)
         _num(t, "id", source, w, lo=0, integer=True)
         _kinematics(t, source, w)
+        _manoeuvres(t, source, w)
         if t["id"] in ids:
             _err(source, w + ".id", "duplicate target id")
         ids.add(int(t["id"]))
@@ -383,6 +410,7 @@ def expand_targets(scn: dict):
             "last_scan": int(src.get("last_scan", nscan - 1)),
             "pd": float(src.get("pd", pd)),
             "rho": (float(src["rho"]) if "rho" in src else None),
+            "manoeuvres": [dict(m) for m in src.get("manoeuvres", [])],
         }
 
     for t in scn.get("targets", []):
@@ -391,6 +419,21 @@ def expand_targets(scn: dict):
         for j, (dx, dy) in enumerate(g["offsets"]):
             out.append(one(int(g["first_id"]) + j, g, float(dx), float(dy)))
     out.sort(key=lambda d: d["id"])
+    return out
+
+
+def manoeuvre_windows(scn: dict):
+    """Turn windows of the explicit targets: {target id: [(first, last) scan, ...]}.
+
+    A manoeuvre {"scan": k0, "scans": n} turns the motion from scan k0 to
+    scan k0 + n, so the scans whose true state it changes while it lasts are
+    k0 + 1 .. k0 + n (inclusive); the window is that range.
+    """
+    out = {}
+    for t in scn.get("targets", []):
+        w = [(int(m["scan"]) + 1, int(m["scan"]) + int(m["scans"])) for m in t.get("manoeuvres", [])]
+        if w:
+            out[int(t["id"])] = w
     return out
 
 

@@ -201,11 +201,85 @@ class TestFormats(unittest.TestCase):
         self.assertEqual(generate.generate(make(), 0, "ipda")["settings"]["association"], "ipda")
 
 
+class TestManoeuvres(unittest.TestCase):
+    G0 = 9.80665
+
+    def turn_run(self, man, **kw):
+        scn = make(area={"x": [-5000, 5000], "y": [-5000, 5000]}, scans={"count": 12, "dt": 1.0},
+                   targets=[dict({"id": 0, "x": 0.0, "y": 0.0, "vx": 100.0, "vy": 0.0, "manoeuvres": man}, **kw)])
+        return scn, generate.generate(scn, 0)["truth"]
+
+    def test_coordinated_turn_geometry(self):
+        # 2 g left at 100 m/s from scan 2 for 5 scans: w = 2 G0 / 100 = 0.196 rad/s,
+        # radius 100 / w = 509.9 m, centre (200, 509.9) (left of the east-bound
+        # target at scan 2); scans 3..7 lie on that circle, the heading turns
+        # by 5 w = 0.98 rad, then the motion is straight again at 100 m/s.
+        _, t = self.turn_run([{"scan": 2, "scans": 5, "g": 2.0}])
+        w = 2.0 * self.G0 / 100.0
+        r = 100.0 / w
+        np.testing.assert_allclose(t["x"][:3], [0.0, 100.0, 200.0])
+        np.testing.assert_allclose(t["y"][:3], 0.0, atol=1e-12)
+        np.testing.assert_allclose(np.hypot(t["x"][3:8] - 200.0, t["y"][3:8] - r), r, rtol=1e-12)
+        np.testing.assert_allclose(np.hypot(t["vx"], t["vy"]), 100.0, rtol=1e-12)
+        heading = np.arctan2(t["vy"], t["vx"])
+        np.testing.assert_allclose(heading[:3], 0.0, atol=1e-15)
+        np.testing.assert_allclose(heading[3:8], w * np.arange(1, 6), rtol=1e-12)
+        np.testing.assert_allclose(heading[8:], 5 * w, rtol=1e-12)
+        np.testing.assert_allclose(np.diff(t["x"][7:]), 100.0 * math.cos(5 * w), rtol=1e-12)
+
+    def test_turn_rate_right(self):
+        # turn_rate -0.1 rad/s for 4 scans from scan 0: heading -0.4 rad from scan 4 on
+        _, t = self.turn_run([{"scan": 0, "scans": 4, "turn_rate": -0.1}])
+        np.testing.assert_allclose(np.arctan2(t["vy"], t["vx"])[4:], -0.4, rtol=1e-12)
+        self.assertTrue(np.all(t["y"][1:] < 0))
+
+    def test_no_manoeuvre_same_bytes(self):
+        a = generate.generate(make(), 4)
+        b = generate.generate(make(["targets.0.manoeuvres=[]"]), 4)
+        self.assertEqual(csvio.format_det(a["det"], a["times"]), csvio.format_det(b["det"], b["times"]))
+        self.assertEqual(csvio.format_truth(a["truth"]), csvio.format_truth(b["truth"]))
+
+    def test_windows(self):
+        scn, _ = self.turn_run([{"scan": 2, "scans": 5, "g": 2.0}, {"scan": 8, "scans": 1, "g": -1.0}])
+        self.assertEqual(scenario.manoeuvre_windows(scn), {0: [(3, 7), (9, 9)]})
+        self.assertEqual(scenario.manoeuvre_windows(make()), {})
+
+    def test_validation(self):
+        bad = [
+            ([{"scan": 2, "scans": 5}], "exactly one of"),
+            ([{"scan": 2, "scans": 5, "g": 1, "turn_rate": 0.1}], "exactly one of"),
+            ([{"scan": 2, "scans": 0, "g": 1}], "scans"),
+            ([{"scan": 2, "scans": 5, "g": 1}, {"scan": 6, "scans": 1, "g": 1}], "overlap"),
+            ([{"scan": 2, "scans": 5, "gee": 1}], "gee"),
+            ({"scan": 2}, "must be a list"),
+        ]
+        for man, msg in bad:
+            with self.subTest(man=man), self.assertRaisesRegex(scenario.ScenarioError, msg):
+                self.turn_run(man)
+
+    def test_manoeuvre_scenario_geometry(self):
+        # scenarios/manoeuvre.json without truth noise: constant speeds, the
+        # crossings of its _comment_targets (40 m apart at scans 33, 36, 75).
+        scn = scenario.load(os.path.join(REPO, "scenarios", "manoeuvre.json"), ["truth_process_psd=0"])
+        t = generate.generate(scn, 0)["truth"]
+        self.assertEqual(len(t["x"]), 4 * 90)
+        pos = {i: np.column_stack([t["x"][t["target"] == i], t["y"][t["target"] == i]]) for i in range(4)}
+        for i, v in enumerate([200.0, 180.0, 160.0, math.hypot(170.0, 100.0)]):
+            m = t["target"] == i
+            np.testing.assert_allclose(np.hypot(t["vx"][m], t["vy"][m]), v, rtol=1e-9)
+        for a, b, k in ((0, 3, 33), (1, 2, 36), (2, 3, 75)):
+            d = np.hypot(*(pos[a] - pos[b]).T)
+            self.assertEqual(int(np.argmin(d)), k)
+            self.assertLess(d[k], 45.0)
+        self.assertEqual(scenario.manoeuvre_windows(scn),
+                         {0: [(21, 32), (46, 57)], 1: [(23, 32), (33, 42)], 2: [(29, 42), (63, 72)], 3: [(41, 50)]})
+
+
 class TestScenarioFiles(unittest.TestCase):
     def test_shipped_scenarios(self):
         files = sorted(glob.glob(os.path.join(REPO, "scenarios", "*.json")))
         names = {os.path.basename(f)[:-5] for f in files}
-        self.assertTrue({"crossing3", "formations", "coalesce3", "split", "dense"} <= names, names)
+        self.assertTrue({"crossing3", "formations", "coalesce3", "split", "dense", "manoeuvre"} <= names, names)
         for path in files:
             with self.subTest(path=path):
                 with open(path) as f:

@@ -1,12 +1,13 @@
 """Metrics on small cases whose answers are worked out by hand in the comments."""
 
+import math
 import os
 import sys
 import unittest
 
 import numpy as np
 
-from mtt_sim import assign, metrics
+from mtt_sim import assign, metrics, report, runner
 
 
 class TestAssignment(unittest.TestCase):
@@ -217,6 +218,50 @@ class TestCountsAndTime(unittest.TestCase):
 
     def test_time_per_frame(self):
         self.assertAlmostEqual(metrics.time_per_frame(0.5, 100), 0.005)
+
+
+class TestRmseLegs(unittest.TestCase):
+    def test_turn_mask(self):
+        m = metrics.turn_mask([(1, 2), (5, 5)], 7)
+        self.assertEqual(m.tolist(), [False, True, True, False, False, True, False])
+        # windows beyond the run are clipped
+        self.assertEqual(metrics.turn_mask([(5, 9)], 6).tolist(), [False] * 5 + [True])
+
+    def test_split(self):
+        # target 0 turns in scans 1-2: squared errors 1, 4, 9, - (scan 3 unmatched);
+        # target 1 has no manoeuvre: 16 at scan 0.
+        # straight: (1 + 16) / 2 -> sqrt(8.5); turn: (4 + 9) / 2 -> sqrt(6.5).
+        sq = {0: (np.array([1.0, 4.0, 9.0, 0.0]), np.array([1, 1, 1, 0])),
+              1: (np.array([16.0, 0.0, 0.0, 0.0]), np.array([1, 0, 0, 0]))}
+        r = metrics.rmse_legs(sq, {0: [(1, 2)]}, 4)
+        self.assertAlmostEqual(r["straight"], math.sqrt(8.5))
+        self.assertAlmostEqual(r["turn"], math.sqrt(6.5))
+        self.assertEqual((r["straight_n"], r["turn_n"]), (2, 2))
+        # no window at all: everything is straight, the turn RMSE is NaN
+        r = metrics.rmse_legs(sq, {}, 4)
+        self.assertAlmostEqual(r["straight"], math.sqrt(30.0 / 4))
+        self.assertTrue(math.isnan(r["turn"]))
+
+    def test_report_rows_only_with_manoeuvres(self):
+        # One target at (0, 0) for 3 scans, one confirmed track 3 m off at scans
+        # 0 and 2 and 4 m off at scan 1 (the turn window): straight RMSE 3, turn 4.
+        truth = {"scan": np.array([0, 1, 2]), "target": np.array([0, 0, 0]),
+                 "x": np.zeros(3), "y": np.zeros(3)}
+        tracks = {"scan": np.array([0, 1, 2]), "track": np.array([5, 5, 5]), "confirmed": np.ones(3, bool),
+                  "x": np.array([3.0, 4.0, 3.0]), "y": np.zeros(3)}
+        sc = metrics.score_run(truth, tracks, 3, 10.0, 10.0)
+        res = {"ok": True, "run": 0, "seed": 0, "score": sc, "time_per_frame": 0.001}
+        summaries = {}
+        for name, windows in (("turns", {0: [(1, 1)]}), ("straight", None)):
+            agg = runner.Aggregate(3, windows)
+            agg.add(res)
+            summaries[name] = {"modes": ["m"], "results": {"m": agg.result()}, "metrics": {"gospa_c": 10.0}}
+        tot = summaries["turns"]["results"]["m"]["totals"]
+        self.assertAlmostEqual(tot["rmse_straight"], 3.0)
+        self.assertAlmostEqual(tot["rmse_turn"], 4.0)
+        self.assertNotIn("rmse_turn", summaries["straight"]["results"]["m"]["totals"])
+        self.assertIn("in turns", report.table_summary(summaries["turns"]))
+        self.assertNotIn("in turns", report.table_summary(summaries["straight"]))
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@ printed precision) on the bundled scenarios, the same settings errors, and
 bad input that raises and changes nothing."""
 
 import glob
+import json
 import math
 import os
 
@@ -103,6 +104,45 @@ def test_reproduces_mtt_track_seeded(mtt_track, tmp_path):
     got, _ = python_rows(settings, det)
     assert got == expect
     assert any(r.split(",")[1] == "0" for r in got)
+
+
+def test_imm_reproduces_mtt_track_with_model_probabilities(mtt_track, scenario_run, tmp_path):
+    """motion = imm: Track.model_probabilities are the mu_j columns of mtt-track's tracks file."""
+    scn, run, files = scenario_run("manoeuvre", 1)
+    settings = dict(run["settings"], motion="imm",
+                    imm_models=[{"model": "cv", "process_psd": 1.0}, {"model": "ca", "process_psd": 400.0}])
+    path = str(tmp_path / "imm.json")
+    with open(path, "w") as f:
+        json.dump(settings, f)
+    out = str(tmp_path / "t.csv")
+    p = run_mtt_track(mtt_track, path, files["det"], out)
+    assert p.returncode == 0, p.stderr
+    with open(out) as f:
+        lines = f.read().splitlines()
+    assert lines[0] == "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1"
+    expect = [",".join(ln.split(",")[:1] + ln.split(",")[2:]) for ln in lines[1:]]
+    from mtt_sim import csvio
+    det, times = csvio.read_det(files["det"])
+    scans = sorted(times)
+    trk = mtt.Tracker(settings, interval=times[scans[1]] - times[scans[0]])
+    got = []
+    for k in scans:
+        sel = det["scan"] == k
+        z = np.column_stack([det["x"][sel], det["y"][sel], det["amp"][sel]])
+        for t in trk.step(times[k] - times[scans[0]], z):
+            assert t.model_probabilities is not None and len(t.model_probabilities) == 2
+            assert abs(float(sum(t.model_probabilities)) - 1.0) < 1e-4
+            vals = [*t.state, t.existence, t.covar[0, 0], t.covar[0, 1], t.covar[1, 1],
+                    *t.model_probabilities]
+            got.append(",".join([str(k), str(t.id), "confirmed" if t.confirmed else "tentative",
+                                 *(REAL_FMT % v for v in vals)]))
+    assert len(expect) > 100
+    assert got == expect
+    # the reader of mtt_sim takes the mu columns
+    tab = csvio.read_tracks(out)
+    assert tab["mu"].shape == (len(expect), 2)
+    # a CV tracker has none
+    assert all(t.model_probabilities is None for t in mtt.Tracker({}).step(0.0, [[1.0, 2.0]]))
 
 
 BAD_CONFIGS = sorted(glob.glob(os.path.join(CLI_TESTS or "", "cfg_*.json")))

@@ -1,0 +1,254 @@
+/* imm.c - interacting multiple model (IMM) arithmetic of one track.
+ *
+ * ALGORITHMS.md §14.1: mixing (c̄_j, μ_{i|j}, x_0j, P_0j), the mode-probability
+ * update from per-model likelihoods, the combined estimate; ALGORITHMS.md
+ * §14.2: the model-mixed detection probability and measurement likelihood,
+ * and the split of a track-level association result (β_0, β_i) into mode
+ * probabilities and per-model association probabilities, which is how every
+ * association mode (IPDA, LM-IPDA, IHPDA, LM-IHPDA with MMR, JIPDA) drives
+ * the per-model updates.  Plain functions over arrays: r <= MTT_MAX_MODELS
+ * models, model j has n[j] state components (4 <= n[j] <= MTT_MAX_STATE),
+ * the first four are [x y vx vy] in every model.
+ *
+ * Unequal state sizes (ALGORITHMS.md §14.1 CHOICE): models mix in the
+ * common 4-D subspace; the extra components e of model j (n[j] > 4) keep
+ * their own mode-conditioned values.  Precisely, for the mixed start of
+ * model j:
+ *   common c:  x_0j,c = Σ_i μ_{i|j} x_i,c
+ *              P_0j,cc = Σ_i μ_{i|j} [P_i,cc + d_i d_i'],  d_i = x_i,c - x_0j,c
+ *   extras e:  x_0j,e = x_j,e,   P_0j,ee = P_j,ee       (not mixed)
+ *   cross:     P_0j,ce = μ_{j|j} P_j,ce
+ * This is the exact mean and covariance of the mixture in which every other
+ * model i's estimate is extended by model j's own extra components,
+ * uncorrelated with model i's common part (model i carries no information
+ * on them).  A mixture of positive semi-definite terms, so P_0j stays
+ * positive semi-definite; keeping P_j,ce unscaled would not.  The extras
+ * of a model never leave it: two models with extras do not mix them.
+ * The combined estimate is 4-D: only the common components, Σ_j μ_j x_j,c
+ * with the spread term; the extras reach it only through their model's own
+ * update of the common components.
+ *
+ * Weighted sums are formed as differences to one reference model
+ * (x_ref + Σ_i w_i (x_i - x_ref), the same value in exact arithmetic since
+ * Σ_i w_i = 1): no cancellation on large coordinates in float, and r equal
+ * models reproduce their common estimate bit for bit. */
+#include "mtt_internal.h"
+
+#if MTT_WITH_IMM
+
+int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real mu[],
+                        mtt_real cbar[], mtt_real mix[][MTT_MAX_MODELS])
+{
+    uint8_t i, j;
+    if (r < 1u || r > MTT_MAX_MODELS) {
+        return -1;
+    }
+    for (j = 0; j < r; ++j) {
+        mtt_real c = MTT_R(0.0);
+        for (i = 0; i < r; ++i) {
+            c += Pi[i][j] * mu[i];
+        }
+        cbar[j] = c;
+        for (i = 0; i < r; ++i) {
+            /* c̄_j = 0: no model can be in mode j; let model j start from
+             * its own estimate (its weight μ_j will be 0 anyway). */
+            mix[i][j] = (c > MTT_R(0.0)) ? Pi[i][j] * mu[i] / c : ((i == j) ? MTT_R(1.0) : MTT_R(0.0));
+        }
+    }
+    return 0;
+}
+
+/* Moment-matched mixture of the common parts of r models with weights w
+ * (Σ w = 1), as differences to model ref (see the header):
+ *   xo = x_ref + Σ_{i≠ref} w_i (x_i - x_ref)
+ *   Po = P_ref + Σ_i w_i [d_i d_i' + (P_i - P_ref)],  d_i = x_i - xo
+ * Po symmetric by construction (upper triangle mirrored). */
+static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MTT_MAX_STATE],
+                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xo[MTT_IMM_COMMON],
+                     mtt_real Po[MTT_IMM_COMMON][MTT_IMM_COMMON])
+{
+    mtt_real d[MTT_MAX_MODELS][MTT_IMM_COMMON];
+    uint8_t i, a, b;
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        mtt_real s = MTT_R(0.0);
+        for (i = 0; i < r; ++i) {
+            if (i != ref) {
+                s += w[i] * (x[i][a] - x[ref][a]);
+            }
+        }
+        xo[a] = x[ref][a] + s;
+    }
+    for (i = 0; i < r; ++i) {
+        for (a = 0; a < MTT_IMM_COMMON; ++a) {
+            d[i][a] = x[i][a] - xo[a];
+        }
+    }
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        for (b = a; b < MTT_IMM_COMMON; ++b) {
+            mtt_real s = MTT_R(0.0);
+            for (i = 0; i < r; ++i) {
+                mtt_real t = d[i][a] * d[i][b];
+                if (i != ref) {
+                    t += P[i][a][b] - P[ref][a][b];
+                }
+                s += w[i] * t;
+            }
+            Po[a][b] = P[ref][a][b] + s;
+            Po[b][a] = Po[a][b];
+        }
+    }
+}
+
+int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
+                mtt_real x[][MTT_MAX_STATE], mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE],
+                mtt_real x0[][MTT_MAX_STATE], mtt_real P0[][MTT_MAX_STATE][MTT_MAX_STATE])
+{
+    uint8_t i, j, a, b;
+    if (r < 1u || r > MTT_MAX_MODELS) {
+        return -1;
+    }
+    for (j = 0; j < r; ++j) {
+        if (n[j] < MTT_IMM_COMMON || n[j] > MTT_MAX_STATE) {
+            return -1;
+        }
+    }
+    for (j = 0; j < r; ++j) {
+        mtt_real w[MTT_MAX_MODELS], xo[MTT_IMM_COMMON], Po[MTT_IMM_COMMON][MTT_IMM_COMMON];
+        for (i = 0; i < r; ++i) {
+            w[i] = mix[i][j];
+        }
+        /* Common part: the mixture with reference model j. */
+        mixture4(r, j, w, x, P, xo, Po);
+        for (a = 0; a < MTT_IMM_COMMON; ++a) {
+            x0[j][a] = xo[a];
+            for (b = 0; b < MTT_IMM_COMMON; ++b) {
+                P0[j][a][b] = Po[a][b];
+            }
+        }
+        /* Extras of model j: own mean and block, cross terms scaled by μ_{j|j}. */
+        for (a = MTT_IMM_COMMON; a < n[j]; ++a) {
+            x0[j][a] = x[j][a];
+            for (b = 0; b < MTT_IMM_COMMON; ++b) {
+                mtt_real v = mix[j][j] * MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
+                P0[j][a][b] = v;
+                P0[j][b][a] = v;
+            }
+            for (b = a; b < n[j]; ++b) {
+                mtt_real v = MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
+                P0[j][a][b] = v;
+                P0[j][b][a] = v;
+            }
+        }
+    }
+    return 0;
+}
+
+mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real lam[], mtt_real mu[])
+{
+    mtt_real c = MTT_R(0.0);
+    uint8_t j;
+    if (r < 1u || r > MTT_MAX_MODELS) {
+        return MTT_R(0.0);
+    }
+    for (j = 0; j < r; ++j) {
+        c += lam[j] * cbar[j];
+    }
+    if (!(c > MTT_R(0.0)) || !mtt_isfinite(c)) {
+        /* No usable likelihood: the predicted mode probabilities stand. */
+        for (j = 0; j < r; ++j) {
+            mu[j] = cbar[j];
+        }
+        return MTT_R(0.0);
+    }
+    for (j = 0; j < r; ++j) {
+        mu[j] = lam[j] * cbar[j] / c;
+    }
+    return c;
+}
+
+int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
+                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[MTT_IMM_COMMON],
+                    mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON])
+{
+    if (r < 1u || r > MTT_MAX_MODELS) {
+        return -1;
+    }
+    mixture4(r, 0, mu, x, P, xc, Pc);
+    return 0;
+}
+
+mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[], const mtt_real p[],
+                          mtt_real *pd_mix)
+{
+    mtt_real w = MTT_R(0.0), s = MTT_R(0.0);
+    uint8_t j;
+    if (r > MTT_MAX_MODELS) {
+        r = 0; /* out of range: PD* = 0, p* = 0 */
+    }
+    for (j = 0; j < r; ++j) {
+        w += cbar[j] * pd[j];
+        s += cbar[j] * pd[j] * p[j];
+    }
+    *pd_mix = w;
+    return (w > MTT_R(0.0)) ? s / w : MTT_R(0.0);
+}
+
+int mtt_imm_split(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
+                  const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
+                  mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
+{
+    mtt_real E0 = MTT_R(0.0), sum = MTT_R(0.0);
+    uint16_t i;
+    uint8_t j;
+    if (r < 1u || r > MTT_MAX_MODELS || m > MTT_MAX_GATED) {
+        return -1;
+    }
+    for (j = 0; j < r; ++j) {
+        E0 += cbar[j] * e0[j];
+        mu[j] = MTT_R(0.0);
+    }
+    /* Joint P(θ_0, M_j) = β_0 c̄_j e0_j / Σ_k c̄_k e0_k, kept in beta0_j
+     * until μ_j is known; the same for P(θ_i, M_j) in beta_j. */
+    for (j = 0; j < r; ++j) {
+        mtt_real v = (E0 > MTT_R(0.0)) ? beta0 * cbar[j] * e0[j] / E0 : MTT_R(0.0);
+        beta0_j[j] = v;
+        mu[j] += v;
+    }
+    for (i = 0; i < m; ++i) {
+        mtt_real Ei = MTT_R(0.0);
+        for (j = 0; j < r; ++j) {
+            Ei += cbar[j] * e[i][j];
+        }
+        for (j = 0; j < r; ++j) {
+            mtt_real v = (Ei > MTT_R(0.0)) ? beta[i] * cbar[j] * e[i][j] / Ei : MTT_R(0.0);
+            beta_j[j][i] = v;
+            mu[j] += v;
+        }
+    }
+    for (j = 0; j < r; ++j) {
+        sum += mu[j];
+    }
+    for (j = 0; j < r; ++j) {
+        if (mu[j] > MTT_R(0.0)) {
+            const mtt_real inv = MTT_R(1.0) / mu[j];
+            beta0_j[j] *= inv;
+            for (i = 0; i < m; ++i) {
+                beta_j[j][i] *= inv;
+            }
+        } else {
+            /* A model of no weight: any valid distribution; take the track's. */
+            beta0_j[j] = beta0;
+            for (i = 0; i < m; ++i) {
+                beta_j[j][i] = beta[i];
+            }
+        }
+    }
+    /* Σ_j μ_j = β_0 + Σ_i β_i = 1 in exact arithmetic; renormalise the
+     * round-off (and a β_0 that no model can explain, e0 = 0). */
+    for (j = 0; j < r; ++j) {
+        mu[j] = (sum > MTT_R(0.0)) ? mu[j] / sum : cbar[j];
+    }
+    return 0;
+}
+
+#endif /* MTT_WITH_IMM */

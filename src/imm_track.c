@@ -1,0 +1,261 @@
+/* imm_track.c - the IMM stages of one track in the pipeline
+ * (ALGORITHMS.md §14.1, §14.2): mixing and the per-model prediction,
+ * the union gate with the model-mixed likelihood p*, the model split of
+ * the association result with the per-model PDA updates, and the start of
+ * an IMM track.  The arithmetic is imm.c's; this file sequences it over
+ * the track table.
+ *
+ * Why the association stages need no change: every association mode with
+ * IMM (lm-ihpda, ihpda, lm-ipda, ipda, jipda) sees a track as one filter
+ * whose likelihood of measurement i is p*_i = Σ_j c̄_j p_i^j (one PD for
+ * all models), ALGORITHMS.md §14.2.  The gate writes p* into pair.p, so
+ * the LM weights, IHPDA selection, MMR, JIPDA events and the existence
+ * update run unchanged; the update stage then splits their result into
+ * mode probabilities and per-model betas (mtt_imm_split).  With one PD the
+ * "no measurement" factor (1 - PD PG for the PDA modes, C_s for the IHPDA
+ * modes) is the same for every model and cancels in the split, so e0_j = 1
+ * and e_ij = p_i^j. */
+#include <string.h>
+
+#include "mtt_internal.h"
+
+#if MTT_WITH_IMM
+
+/* State size of a model kind. */
+static uint8_t model_n(mtt_model_kind k)
+{
+    return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : (uint8_t)MTT_STATE_N;
+}
+
+static void sym_n(uint8_t n, mtt_cov P)
+{
+    uint8_t i, j;
+    for (i = 0; i < n; ++i) {
+        for (j = (uint8_t)(i + 1u); j < n; ++j) {
+            const mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
+            P[i][j] = s;
+            P[j][i] = s;
+        }
+    }
+}
+
+/* Row (or column) c of F applied to a CA state vector v: F is per axis
+ * [[1, T, T^2/2], [0, 1, T], [0, 0, 1]] with components (p, v, a) at
+ * (ax, 2 + ax, 4 + ax), so row c adds T times component c + 2 (positions
+ * and velocities) and T^2/2 times component c + 4 (positions). */
+static mtt_real ca_row(uint8_t c, mtt_real t, mtt_real h, mtt_real v0, mtt_real v2, mtt_real v4)
+{
+    return (c < 2u) ? v0 + t * v2 + h * v4 : ((c < 4u) ? v0 + t * v2 : v0);
+}
+
+/* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1
+ * for CA: F's sparsity used, 3 terms per element instead of a 6x6 product). */
+static void model_predict(mtt_model_kind k, mtt_real dt, mtt_real q, const mtt_state x, mtt_cov P,
+                          mtt_state xp, mtt_cov Pp)
+{
+    mtt_cov F, Q, FP;
+    const mtt_real h = MTT_R(0.5) * dt * dt;
+    uint8_t i, j;
+    if (k == MTT_MODEL_CV) {
+        mtt_motion_predict(dt, q, x, P, xp, Pp);
+        sym_n(MTT_STATE_N, Pp);
+        return;
+    }
+    mtt_ca_model(dt, q, F, Q);
+    /* components beyond 5 do not exist in CA: index them as 0 (weight 0) */
+    for (i = 0; i < MTT_CA_N; ++i) {
+        const uint8_t i2 = (uint8_t)((i + 2u < MTT_CA_N) ? i + 2u : i), i4 = (uint8_t)((i + 4u < MTT_CA_N) ? i + 4u : i);
+        xp[i] = ca_row(i, dt, h, x[i], x[i2], x[i4]);
+        for (j = 0; j < MTT_CA_N; ++j) {
+            FP[i][j] = ca_row(i, dt, h, P[i][j], P[i2][j], P[i4][j]);
+        }
+    }
+    for (i = 0; i < MTT_CA_N; ++i) {
+        for (j = 0; j < MTT_CA_N; ++j) {
+            const uint8_t j2 = (uint8_t)((j + 2u < MTT_CA_N) ? j + 2u : j), j4 = (uint8_t)((j + 4u < MTT_CA_N) ? j + 4u : j);
+            Pp[i][j] = ca_row(j, dt, h, FP[i][j], FP[i][j2], FP[i][j4]) + Q[i][j];
+        }
+    }
+    sym_n(MTT_CA_N, Pp);
+}
+
+int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
+{
+    const mtt_params *p = &trk->par;
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t r = p->imm_n_models;
+    mtt_real mix[MTT_MAX_MODELS][MTT_MAX_MODELS], S[3];
+    uint8_t n[MTT_MAX_MODELS], j, a;
+    int ok = 1;
+    for (j = 0; j < r; ++j) {
+        n[j] = model_n(p->imm_model[j]);
+    }
+    if (dt > MTT_R(0.0)) {
+        (void)mtt_imm_mix_weights(r, (mtt_real(*)[MTT_MAX_MODELS])p->imm_transition, t->mu, tf->cbar, mix);
+        /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
+        (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
+        for (j = 0; j < r; ++j) {
+            mtt_state x0;
+            mtt_cov P0;
+            memcpy(x0, tf->xpm[j], sizeof x0);
+            memcpy(P0, tf->Ppm[j], sizeof P0);
+            model_predict(p->imm_model[j], dt, p->imm_psd[j], x0, P0, tf->xpm[j], tf->Ppm[j]);
+        }
+    } else {
+        /* First frame: the state is already at this time (seeded tracks). */
+        for (j = 0; j < r; ++j) {
+            tf->cbar[j] = t->mu[j];
+            memcpy(tf->xpm[j], t->xm[j], sizeof tf->xpm[j]);
+            memcpy(tf->Ppm[j], t->Pm[j], sizeof tf->Ppm[j]);
+        }
+    }
+    tf->vgm = MTT_R(0.0);
+    for (j = 0; j < r && ok; ++j) {
+        mtt_real det = MTT_R(0.0), Si[3], vg;
+        ok = mtt_state_finite(tf->xpm[j]) &&
+             mtt_kalman_innov_n(n[j], tf->Ppm[j], trk->R, S, Si, &det, tf->Km[j]) == 0;
+        if (ok) {
+            memcpy(tf->Sim[j], Si, sizeof Si);
+            tf->peakm[j] = mtt_gate_likelihood(MTT_R(0.0), det, p->pg);
+            tf->wm[j][0] = mtt_sqrt(trk->gamma * S[0]);
+            tf->wm[j][1] = mtt_sqrt(trk->gamma * S[2]);
+            vg = mtt_gate_volume(trk->gamma, det);
+            tf->vgm = (vg > tf->vgm) ? vg : tf->vgm;
+            if (j == 0u) {
+                /* the single-filter fields, read by gate.c before its IMM branch */
+                memcpy(tf->S, S, sizeof tf->S);
+                memcpy(tf->Si, Si, sizeof tf->Si);
+                tf->det_s = det;
+            }
+        }
+    }
+    /* The gate's centre: the c̄-weighted predicted position and velocity
+     * (as differences to model 0: no cancellation on large coordinates).
+     * No stage reads a combined predicted covariance of an IMM track: the
+     * gate uses every model's own S (ALGORITHMS.md §14.2). */
+    memset(tf->xp, 0, sizeof tf->xp);
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        mtt_real d = MTT_R(0.0);
+        for (j = 1; j < r; ++j) {
+            d += tf->cbar[j] * (tf->xpm[j][a] - tf->xpm[0][a]);
+        }
+        tf->xp[a] = tf->xpm[0][a] + d;
+    }
+    return ok && mtt_state_finite(tf->xp);
+}
+
+void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_real *wy)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real ax = MTT_R(0.0), ay = MTT_R(0.0);
+    uint8_t j;
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        const mtt_real hx = mtt_fabs(tf->xpm[j][0] - tf->xp[0]) + tf->wm[j][0];
+        const mtt_real hy = mtt_fabs(tf->xpm[j][1] - tf->xp[1]) + tf->wm[j][1];
+        ax = (hx > ax) ? hx : ax;
+        ay = (hy > ay) ? hy : ay;
+    }
+    *wx = ax;
+    *wy = ay;
+}
+
+mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real best = MTT_REAL_MAX;
+    uint8_t j;
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        const mtt_real d2 = mtt_mahal2(tf->Sim[j], zx - tf->xpm[j][0], zy - tf->xpm[j][1]);
+        best = (d2 < best) ? d2 : best;
+    }
+    return best;
+}
+
+/* p_i^j = N(ν_i^j; 0, S_j)/PG of measurement z under every model. */
+static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, mtt_real zx,
+                              mtt_real zy, mtt_real pj[])
+{
+    uint8_t j;
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        const mtt_real d2 = mtt_mahal2(tf->Sim[j], zx - tf->xpm[j][0], zy - tf->xpm[j][1]);
+        pj[j] = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
+    }
+}
+
+mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real pj[MTT_MAX_MODELS], pd[MTT_MAX_MODELS], pdm;
+    uint8_t j;
+    model_likelihoods(trk, tf, zx, zy, pj);
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        pd[j] = trk->par.pd;
+    }
+    return mtt_imm_meas_mix(trk->par.imm_n_models, tf->cbar, pd, pj, &pdm);
+}
+
+void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,
+                          const mtt_real beta[], mtt_real beta0)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t r = trk->par.imm_n_models;
+    mtt_real e0[MTT_MAX_MODELS], b0j[MTT_MAX_MODELS];
+    /* in the tracker's row scratch, not on the stack */
+    mtt_real(*e)[MTT_MAX_MODELS] = trk->row.imm_e;
+    mtt_real(*bj)[MTT_MAX_GATED] = trk->row.imm_beta;
+    mtt_real(*nu)[2] = trk->row.nu;
+    mtt_real xc[MTT_IMM_COMMON], Pc[MTT_IMM_COMMON][MTT_IMM_COMMON];
+    uint16_t i;
+    uint8_t j, a;
+    for (j = 0; j < r; ++j) {
+        e0[j] = MTT_R(1.0);
+    }
+    for (i = 0; i < m; ++i) {
+        const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
+        model_likelihoods(trk, tf, ms->x, ms->y, e[i]);
+    }
+    (void)mtt_imm_split(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
+    for (j = 0; j < r; ++j) {
+        for (i = 0; i < m; ++i) {
+            const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
+            nu[i][0] = ms->x - tf->xpm[j][0];
+            nu[i][1] = ms->y - tf->xpm[j][1];
+        }
+        mtt_kalman_pda_n(model_n(trk->par.imm_model[j]), tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j],
+                         trk->R, m, nu, bj[j], b0j[j], t->xm[j], t->Pm[j]);
+    }
+    (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, xc, Pc);
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        t->x[a] = xc[a];
+        memcpy(t->P[a], Pc[a], sizeof Pc[a]);
+    }
+}
+
+/* [CHOICE] ALGORITHMS.md §14.2: every model starts from the two-point (or
+ * seeded) x, P; CA's acceleration from 0 with variance q_CA dt per axis
+ * (one interval of its own white jerk: two points carry no information on
+ * it); mode probabilities imm_initial. */
+void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
+{
+    mtt_track *t = &trk->tracks[ti];
+    const mtt_params *p = &trk->par;
+    uint8_t j, a;
+    memset(t->xm, 0, sizeof t->xm);
+    memset(t->Pm, 0, sizeof t->Pm);
+    memset(t->mu, 0, sizeof t->mu);
+    for (j = 0; j < p->imm_n_models; ++j) {
+        t->mu[j] = p->imm_initial[j];
+        for (a = 0; a < MTT_STATE_N; ++a) {
+            t->xm[j][a] = t->x[a];
+            memcpy(t->Pm[j][a], t->P[a], MTT_STATE_N * sizeof t->P[a][0]);
+        }
+        if (p->imm_model[j] == MTT_MODEL_CA) {
+            t->Pm[j][4][4] = p->imm_psd[j] * dt;
+            t->Pm[j][5][5] = p->imm_psd[j] * dt;
+        }
+    }
+}
+
+#endif /* MTT_WITH_IMM */
