@@ -142,7 +142,12 @@ int32_t mtt_fx_mulq(int32_t a, int32_t b, int s)
     const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +
                         (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);
     const int k = s - 18;
-    return (int32_t)((uint32_t)(ah * bh) << (32 - s)) + ((mid + ((int32_t)1 << (k - 1))) >> k);
+    /* The high part is exact only modulo 2^32 (its top bits leave the
+     * word); the sum is formed in uint32_t, where wrapping is defined, and
+     * the exact result fits int32_t. */
+    const uint32_t high = (uint32_t)(ah * bh) << (32 - s);
+    const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);
+    return (int32_t)(high + low);
 }
 
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
