@@ -53,10 +53,7 @@ CASES_DIR = os.path.join(ROOT, "test", "differential", "cases")
 # the diagnosis).  A case listed here must still fail (so the list cannot go
 # stale); once the library is fixed, remove it from this list (and the bug from
 # KNOWN_C_BUGS) and it becomes a plain regression.
-EXPECTED_FAILURES = {
-    "meas-at-max-rank-tie.scene": "meas-at-max",
-    "meas-at-max-birth-order.scene": "meas-at-max",
-}
+EXPECTED_FAILURES = {}
 
 
 def _valid(d):
@@ -67,19 +64,10 @@ def _valid(d):
 # The C bugs behind EXPECTED_FAILURES: diagnosis, and the trigger that tells a
 # random scene that disagrees because of this bug (it is then counted under
 # the bug, not failed; any scene without the trigger that disagrees fails).
-KNOWN_C_BUGS = {
-    "meas-at-max": {
-        "diagnosis": (
-            "a frame with exactly MTT_MAX_MEAS (256) valid detections: the library no longer "
-            "keeps them in input order (README 'Limits': nothing is dropped at 256, and the kept "
-            "ones stay in input order; ALGORITHMS.md §15: measurement indices follow the input "
-            "order).  Seen: §7.1's rank tie (equal amplitudes: the lower index ranks stronger) "
-            "picks the higher index, and §12.1's births come out in another order, so track "
-            "identities differ.  255 or 257 valid detections behave correctly (at 257 the cap "
-            "drops one and the rest stay in input order)."),
-        "trigger": lambda scene: any(sum(map(_valid, dets)) == 256 for _, dets in scene.frames),
-    },
-}
+KNOWN_C_BUGS = {}
+# Fixed, kept as regressions: "meas-at-max" (a frame with exactly MTT_MAX_MEAS
+# valid detections lost their input order: the cap's heap was built but not
+# re-sorted; cases meas-at-max-rank-tie.scene, meas-at-max-birth-order.scene).
 
 # Where docs/ALGORITHMS.md is silent or ambiguous and the result depends on it.
 # mtt_ref implements the reading below ("SPEC GAP" in python/mtt_ref/tracker.py),
