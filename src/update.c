@@ -68,6 +68,7 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
 
+#if MTT_WITH_BASELINES
 /* NNJPDA: hard Kalman update with the assigned pair (ALGORITHMS.md §13.5), or the
  * prediction; existence per ALGORITHMS.md §13.2 either way. */
 static void update_nn(mtt_tracker *trk, uint16_t ti)
@@ -87,6 +88,7 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
     }
     t->existence = tf->ex_post;
 }
+#endif
 
 void mtt_update_frame(mtt_tracker *trk)
 {
@@ -105,8 +107,10 @@ void mtt_update_frame(mtt_tracker *trk)
             }
         } else if (tf->pair_count == 0u) {
             keep_prediction(trk, i);
-        } else if (MTT_WITH_BASELINES && kind == MTT_UPDATE_HARD) {
-            update_nn(trk, i); /* constant false without the baselines: not linked */
+#if MTT_WITH_BASELINES
+        } else if (kind == MTT_UPDATE_HARD) {
+            update_nn(trk, i);
+#endif
         } else {
             update_pda(trk, i);
         }
