@@ -73,7 +73,7 @@ KNOWN_C_BUGS = {}
 # python/mtt_ref/tracker.py), now stated in docs/ALGORITHMS.md as [CHOICE]
 # paragraphs; the library and the reference agree with them on every scene.
 # Topic -> (section, a phrase of that section that states it, regression cases
-# or "" when the random scenes cover it).  test_cases checks that each section
+# or "" when the random scenes cover it).  test_regression_cases checks that each section
 # still says it.
 SPEC_GAPS_DOCUMENTED = {
     "birth velocity cap": ("12.1", "Velocity cap.", "birth-velocity-cap.scene"),
