@@ -282,6 +282,46 @@ static void test_lm_pt_clamped(void)
     }
 }
 
+#if MTT_WITH_BASELINES
+/* JPDA* pruning (ALGORITHMS.md §13.6): a threshold that every kept event
+ * fails would drop them all, so none is dropped: the frame equals the one
+ * without pruning, to the last bit. */
+static void run_star(mtt_real threshold, mtt_track_view v[2])
+{
+    mtt_params p;
+    mtt_real P[16];
+    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    const mtt_real xb[4] = {MTT_R(2.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_meas z[2];
+    size_t n;
+    z[0] = meas_at(MTT_R(0.8), MTT_R(0.1));
+    z[1] = meas_at(MTT_R(1.2), MTT_R(-0.1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_JPDA_STAR;
+    p.jpda_star_threshold = threshold;
+    p.initiate = 0;
+    p.merge_threshold = MTT_R(0.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    diag(P, MTT_R(1.0), MTT_R(1.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), z, 2));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    TEST_ASSERT_EQUAL_UINT(2u, (unsigned)n);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v[0]));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v[1]));
+}
+
+static void test_jpda_star_never_prunes_every_event(void)
+{
+    mtt_track_view a[2], b[2];
+    run_star(MTT_R(0.0), a);
+    run_star(MTT_R(0.99), b);
+    TEST_ASSERT_EQUAL_MEMORY(a, b, sizeof a);
+    TEST_ASSERT_TRUE(a[0].x[0] > MTT_R(0.0) && a[1].x[0] < MTT_R(2.0)); /* both updated inwards */
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -295,5 +335,8 @@ int main(void)
     RUN_TEST(test_intensity_gate_decides);
     RUN_TEST(test_birth_velocity_overflow);
     RUN_TEST(test_lm_pt_clamped);
+#if MTT_WITH_BASELINES
+    RUN_TEST(test_jpda_star_never_prunes_every_event);
+#endif
     return UNITY_END();
 }
