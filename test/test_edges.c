@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "mtt_internal.h"
+#include "sim.h"
 #include "unity.h"
 
 static mtt_tracker trk;
@@ -20,16 +21,6 @@ static void diag(mtt_real P[16], mtt_real pos, mtt_real vel)
     P[5] = pos;
     P[10] = vel;
     P[15] = vel;
-}
-
-static mtt_meas meas_at(mtt_real x, mtt_real y)
-{
-    mtt_meas m;
-    m.x = x;
-    m.y = y;
-    m.amplitude = MTT_R(5.0);
-    m.has_amplitude = 1;
-    return m;
 }
 
 /* Every argument that may be NULL is refused, and nothing changes. */
@@ -146,8 +137,8 @@ static void test_invalid_tracks_every_mode(void)
         mtt_track_view v;
         size_t n;
         uint32_t id0;
-        z[0] = meas_at(MTT_R(0.3), MTT_R(0.0));
-        z[1] = meas_at(MTT_R(1000.3), MTT_R(0.0));
+        z[0] = sim_meas(MTT_R(0.3), MTT_R(0.0), MTT_R(5.0), 1);
+        z[1] = sim_meas(MTT_R(1000.3), MTT_R(0.0), MTT_R(5.0), 1);
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
         p.association = (mtt_assoc)mode;
         p.initiate = 0;
@@ -183,7 +174,7 @@ static void test_invalid_tracks_every_mode(void)
  * amplitude amp; returns the births of the second frame. */
 static uint32_t births_of(const mtt_params *p, mtt_real t0, mtt_real t1, mtt_real x2, mtt_real amp)
 {
-    mtt_meas z = meas_at(MTT_R(0.0), MTT_R(0.0));
+    mtt_meas z = sim_meas(MTT_R(0.0), MTT_R(0.0), MTT_R(5.0), 1);
     mtt_stats st;
     z.amplitude = amp;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, p));
@@ -246,6 +237,19 @@ static void test_birth_velocity_overflow(void)
     TEST_ASSERT_EQUAL_UINT32(0u, births_of(&p, MTT_R(0.0), tiny, MTT_R(10.0), MTT_R(100.0)));
 }
 
+/* A tracker with p and two seeded tracks at rest, at the origin and at
+ * (xb, 0), identity covariance. */
+static void init_two(const mtt_params *p, mtt_real xb)
+{
+    mtt_real P[16];
+    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    const mtt_real x2[4] = {xb, MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, p));
+    diag(P, MTT_R(1.0), MTT_R(1.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x2, P, NULL));
+}
+
 /* ALGORITHMS.md §8.1 range guard: with PD = 1, PG = 0.9999999 and P^ = 1
  * (the first frame predicts nothing), a track with one gated measurement has
  * Pt = PD PG above 1 - 1e-6: clamped.  Two such tracks share their one
@@ -255,10 +259,7 @@ static void test_lm_pt_clamped(void)
 {
     const mtt_real pt = MTT_R(1.0) - MTT_R(1e-6);
     mtt_params p;
-    mtt_real P[16];
-    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-    const mtt_real xb[4] = {MTT_R(3.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-    mtt_meas z = meas_at(MTT_R(1.5), MTT_R(0.0));
+    mtt_meas z = sim_meas(MTT_R(1.5), MTT_R(0.0), MTT_R(5.0), 1);
     int k;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.association = MTT_ASSOC_LM_IPDA;
@@ -266,10 +267,7 @@ static void test_lm_pt_clamped(void)
     p.pg = MTT_R(0.9999999);
     p.initiate = 0;
     p.merge_threshold = MTT_R(0.0);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    diag(P, MTT_R(1.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P, NULL));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P, NULL));
+    init_two(&p, MTT_R(3.0));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), &z, 1));
     TEST_ASSERT_EQUAL_UINT16(2u, trk.n_pairs);
     TEST_ASSERT_TRUE(p.pd * p.pg > pt);
@@ -289,22 +287,16 @@ static void test_lm_pt_clamped(void)
 static void run_star(mtt_real threshold, mtt_track_view v[2])
 {
     mtt_params p;
-    mtt_real P[16];
-    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
-    const mtt_real xb[4] = {MTT_R(2.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
     mtt_meas z[2];
     size_t n;
-    z[0] = meas_at(MTT_R(0.8), MTT_R(0.1));
-    z[1] = meas_at(MTT_R(1.2), MTT_R(-0.1));
+    z[0] = sim_meas(MTT_R(0.8), MTT_R(0.1), MTT_R(5.0), 1);
+    z[1] = sim_meas(MTT_R(1.2), MTT_R(-0.1), MTT_R(5.0), 1);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.association = MTT_ASSOC_JPDA_STAR;
     p.jpda_star_threshold = threshold;
     p.initiate = 0;
     p.merge_threshold = MTT_R(0.0);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    diag(P, MTT_R(1.0), MTT_R(1.0));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P, NULL));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P, NULL));
+    init_two(&p, MTT_R(2.0));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), z, 2));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
     TEST_ASSERT_EQUAL_UINT(2u, (unsigned)n);
