@@ -231,6 +231,9 @@ static void dense_frame(sim_rng *rng, tgt *tg, int n, double side, mtt_meas *m, 
     *nm = k;
 }
 
+/* --variant: lm_ihpda_variant for every workload, -1 = not given. */
+static int variant = -1;
+
 static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *first)
 {
     const double side = 200.0 * sqrt((double)n);
@@ -260,6 +263,9 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     p.snr_rho = MTT_R(3.0);
     p.vmax = MTT_R(8.0);
     p.cycle_counter = ns_counter;
+    if (variant >= 0) {
+        p.lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
+    }
     if (mtt_tracker_init(&trk, &p) != MTT_OK) {
         fprintf(stderr, "mtt-bench: init failed\n");
         exit(1);
@@ -314,6 +320,9 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
     }
     s.params.association = mode;
     s.params.cycle_counter = ns_counter;
+    if (variant >= 0) {
+        s.params.lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
+    }
     /* pass 1: find the busiest frame */
     for (i = 0; i < 2; ++i) {
         if (mtt_tracker_init(&trk, &s.params) != MTT_OK) {
@@ -378,6 +387,8 @@ static void usage(FILE *f)
             "  --modes L    comma list of association modes (default: every mode built in)\n"
             "  --det/--config  also replay a detections file and time its busiest frame\n"
             "  --json F     write the results as JSON\n"
+            "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
+            "               (default: s0 for dense, the config's for the replay)\n"
             "  --list-modes print the modes built into this library and exit\n"
             "Columns: tracks, pairs = mean per timed frame; med/worst/floor in us;\n"
             "ratio = median / floor median; ns/(t+p) = median ns per (track + gated pair);\n"
@@ -413,6 +424,14 @@ int main(int argc, char **argv)
             det = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--config")) {
             cfg = argv[++i];
+        } else if (i + 1 < argc && !strcmp(argv[i], "--variant")) {
+            ++i;
+            variant = !strcmp(argv[i], "s0") ? (int)MTT_LM_IHPDA_S0
+                      : !strcmp(argv[i], "contest") ? (int)MTT_LM_IHPDA_CONTEST : -2;
+            if (variant == -2) {
+                fprintf(stderr, "mtt-bench: --variant must be s0 or contest\n");
+                return 2;
+            }
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
         } else {

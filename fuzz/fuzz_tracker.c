@@ -484,6 +484,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     s.rng = h | 1u;
     decode_params(&s, &p);
     p.association = MTT_ASSOC_LM_IHPDA;
+    /* lm-ihpda's algorithm from a bit of the hash (no input byte, so the
+     * other fields of a corpus entry decode as before) */
+    p.lm_ihpda_variant = (h & 2u) ? MTT_LM_IHPDA_CONTEST : MTT_LM_IHPDA_S0;
     if (mtt_params_check(&p, NULL) != MTT_OK)
         return 0; /* not a valid set: nothing to test */
     decode_frames(&s);

@@ -595,6 +595,7 @@ def main():
         pv[j] = gauss_pdf(meas_off[j], S) / PG
         lams[j] = lam
     cands = ihpda_candidates(idx, pv, lams, intens, PD, PG, VG, rho)
+    tv5_p, tv5_vg = [pv[j] for j in idx], VG  # TV15's amplitude row reuses this gate
     s = ihpda_select(cands)
     c = cands[s]
     p()
@@ -1137,6 +1138,56 @@ def main():
     c99 = gate_gamma(0.99)  # the 0.99 quantile of chi-square with 2 dof
     kv("statistic", maha2(dz, Ssum)); kv("c", c99)
     kv("separated (statistic >= c)", maha2(dz, Ssum) >= c99)
+
+    # ---------------------------------------------------------------- TV15
+    h("TV15 Amplitude likelihood ratio and the amplitude row (§7.6, library extension)")
+    rho15 = 3.0
+
+    def g_plain(a, rho):
+        return math.exp(min(a * rho / (1.0 + rho), 30.0)) / (1.0 + rho)
+
+    def g_eta(a, rho, eta):
+        g = g_plain(a, rho)
+        return g / (1.0 - eta + eta * g)
+
+    astar = (1.0 + rho15) * math.log(1.0 + rho15) / rho15
+    p("Inputs: rho = 3 (target amplitude Exp(mean 4), clutter Exp(mean 1)); amplitudes a below; "
+      "the exponent a rho/(1+rho) is clamped at 30.")
+    p()
+    kv("rho", rho15)
+    kv("break-even amplitude a* = (1+rho) ln(1+rho)/rho (g = 1)", astar)
+    p()
+    p("Expected g(a) = exp(a rho/(1+rho))/(1+rho) (eta = 0) and g_eta = g/(1 - eta + eta g):")
+    p()
+    for a in (0.0, 1.0, 2.0, 4.0, 10.0, 50.0):
+        p(f"- a = {f(a)}: g = {f(g_plain(a, rho15))}, g_0.5 = {f(g_eta(a, rho15, 0.5))}, "
+          f"g_0.1 = {f(g_eta(a, rho15, 0.1))}")
+    close(g_plain(astar, rho15), 1.0)
+    # E_clutter[g] = 1: integral of g(a) e^-a = e^(-a/(1+rho))/(1+rho) over a >= 0 (without the
+    # clamp; the tail beyond a = 400 is e^-100)
+    ecl = gauss_legendre(lambda t: math.exp(t * rho15 / (1.0 + rho15) - t) / (1.0 + rho15), 0.0, 400.0, 400)
+    kv("E_clutter[g] without the clamp (numerical integral over [0, 400], must be 1)", ecl)
+    close(ecl, 1.0, rtol=1e-7)
+    p()
+    p("Amplitude row on the TV5 gate (p_j, V_G, PD, PG, lambda of TV5) with amplitudes a = [0.5, 3, 1.5] "
+      "instead of TV5's intensities, eta = 0.5: p'_j = p_j g_j, A_j = PD PG p'_j / lambda, "
+      "C_j = 1 - PD PG + PD PG (sum_{i != j} g_i)/(lambda V_G), L_j = A_j + C_j, beta_j = A_j / L_j; "
+      "existence from P^ = 0.6.")
+    p()
+    amps = [0.5, 3.0, 1.5]
+    p5 = [tv5_p[j] for j in range(3)]
+    gj = [g_eta(a, rho15, 0.5) for a in amps]
+    G = sum(gj)
+    pdpg = 0.9 * 0.99
+    for j in range(3):
+        A = pdpg * p5[j] * gj[j] / 0.002
+        C = 1.0 - pdpg + pdpg * (G - gj[j]) / (0.002 * tv5_vg)
+        L = A + C
+        p(f"- z{j + 1}: a = {f(amps[j])}, g_0.5 = {f(gj[j])}, A = {f(A)}, C = {f(C)}, L = {f(L)}, "
+          f"beta_j = {f(A / L)}, P(exist|Z^k) = {f(L * 0.6 / (1.0 - 0.6 + L * 0.6))}")
+    p()
+    p("With g = 1 for every candidate (no amplitude, or rho = 0) the row is TV5's rank row with rho = 0 "
+      "(P_r = 1/m); with m = 1 it is IPDA (§6).")
 
     sys.stdout.write("\n".join(OUT) + "\n")
 

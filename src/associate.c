@@ -7,7 +7,8 @@
  * pair with its beta and L (update kind ONE), the beta row, beta_0 and the
  * updated existence (PDA), or the assigned pair and the existence (HARD).
  * PDA modes use every gated measurement, so those are marked used here
- * (§15.1); the other modes mark the assigned ones while assigning.  The
+ * (§15.1); the other modes mark the assigned ones while assigning (the
+ * update stage marks those claimed by contested lm-ihpda tracks, §10.4).  The
  * table also gives the names of docs/FORMATS.md `association`. */
 #include "mtt_internal.h"
 
@@ -114,6 +115,9 @@ void mtt_associate_frame(mtt_tracker *trk)
     case MTT_ASSOCIATE_MMR: /* lm-ihpda: MMR with recomputation, final rows (§10.1, §10.3) */
         for (k = 0; k < trk->n_clusters; ++k) {
             mtt_mmr_cluster(trk, k, 1);
+        }
+        if (MTT_CONTEST_ON(trk)) {
+            mtt_contest_frame(trk); /* lm_ihpda_variant contest (§10.4) */
         }
         mtt_ihpda_final_frame(trk);
         break;

@@ -67,10 +67,7 @@ void mtt_cluster_frame(mtt_tracker *trk)
             trk->cl_first[c]++;
         }
     }
-    for (i = nc; i > 0; --i) {
-        trk->cl_first[i] = trk->cl_first[i - 1u];
-    }
-    trk->cl_first[0] = 0;
+    mtt_csr_unshift(trk->cl_first, nc);
     trk->n_clusters = nc;
     trk->stats.last.clusters = nc;
     trk->stats.max_cluster_tracks = biggest;

@@ -150,6 +150,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);
             np.beta = MTT_R(0.0);
+            np.g = MTT_R(1.0);
             push_pair(trk, &np, &resort);
         }
     }
@@ -189,9 +190,6 @@ void mtt_gate_frame(mtt_tracker *trk)
         trk->mp_list[trk->mp_first[j]] = k;
         trk->mp_first[j]++;
     }
-    for (i = n; i > 0; --i) {
-        trk->mp_first[i] = trk->mp_first[i - 1u];
-    }
-    trk->mp_first[0] = 0;
+    mtt_csr_unshift(trk->mp_first, n);
     trk->stats.last.pairs = trk->n_pairs;
 }

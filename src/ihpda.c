@@ -8,7 +8,10 @@
  *           C_j = 1 - PD PG + PD PG (m / (lambda_j V_G)) (1 - P_r(l_j)),
  *           L_j = A_j + C_j, beta_j = A_j / L_j.
  * ALGORITHMS.md §7.4: the `ihpda` mode's selection on each track's full gate;
- * ALGORITHMS.md §10.3: the final recomputation after an assignment. */
+ * ALGORITHMS.md §10.3: the final recomputation after an assignment.
+ * ALGORITHMS.md §7.6 (lm_ihpda_variant contest): the amplitude likelihood
+ * ratio g_j in place of the ranks, A_j = PD PG p_j g_j / lambda_j (p_j
+ * already holds g_j), C_j = 1 - PD PG + PD PG (sum_{i != j} g_i) / (lambda_j V_G). */
 #include "mtt_internal.h"
 
 void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out)
@@ -55,6 +58,36 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
     }
 }
 
+mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a)
+{
+    mtt_real e = a * rho / (MTT_R(1.0) + rho), g;
+    if (!(e < MTT_R(30.0))) {
+        e = MTT_R(30.0); /* g < 1.1e13: p g / lambda stays finite */
+    }
+    g = mtt_exp(e) / (MTT_R(1.0) + rho);
+    return g / (MTT_R(1.0) - eta + eta * g);
+}
+
+/* The §7.6 row: c[i].amp holds g_i. */
+static void betas_amp(mtt_real pdpg, mtt_real vg, const mtt_cand *c, uint16_t m, mtt_real *beta,
+                      mtt_real *L)
+{
+    mtt_real G = MTT_R(0.0);
+    uint16_t i;
+    for (i = 0; i < m; ++i) {
+        G += c[i].amp;
+    }
+    for (i = 0; i < m; ++i) {
+        mtt_real others = G - c[i].amp, A;
+        if (others < MTT_R(0.0)) {
+            others = MTT_R(0.0); /* rounding of G - g_i */
+        }
+        A = pdpg * c[i].p / c[i].lam;
+        L[i] = A + MTT_R(1.0) - pdpg + pdpg * others / (c[i].lam * vg);
+        beta[i] = A / L[i];
+    }
+}
+
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best)
 {
@@ -64,6 +97,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     mtt_real *beta = trk->row.beta, *L = trk->row.L;
     uint8_t *rank = trk->row.rank;
     const mtt_real *prank = NULL;
+    const int amp = MTT_CONTEST_ON(trk);
     uint16_t m = 0, k, b = 0;
 
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
@@ -75,7 +109,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         }
         c[m].p = pp->p;
         c[m].lam = pp->lam;
-        c[m].amp = ms->amp;
+        c[m].amp = amp ? pp->g : ms->amp;
         c[m].idx = pp->meas;
         pk[m] = k;
         ++m;
@@ -85,11 +119,16 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     if (m == 0u) {
         return 0;
     }
-    /* A track with any gated measurement lacking amplitude uses rho = 0 (ALGORITHMS.md §7.1). */
-    if (trk->par.snr_rho > MTT_R(0.0) && tf->has_all_amp) {
-        prank = &trk->prank[MTT_PRANK_ROW(m)];
+    if (amp) {
+        /* ranks are not computed: MMR's tie rule is the lower index */
+        betas_amp(trk->par.pd * trk->par.pg, tf->vg, c, m, beta, L);
+    } else {
+        /* A track with any gated measurement lacking amplitude uses rho = 0 (ALGORITHMS.md §7.1). */
+        if (trk->par.snr_rho > MTT_R(0.0) && tf->has_all_amp) {
+            prank = &trk->prank[MTT_PRANK_ROW(m)];
+        }
+        mtt_ihpda_betas(trk->par.pd, trk->par.pg, tf->vg, prank, c, m, beta, L, rank);
     }
-    mtt_ihpda_betas(trk->par.pd, trk->par.pg, tf->vg, prank, c, m, beta, L, rank);
     for (k = 0; k < m; ++k) {
         trk->pairs[pk[k]].beta = beta[k];
         trk->pairs[pk[k]].L = L[k];
@@ -142,7 +181,8 @@ void mtt_ihpda_final_frame(mtt_tracker *trk)
     uint16_t i;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        if (tf->valid && tf->assigned >= 0 && final_set_changed(trk, i)) {
+        if (tf->valid && tf->assigned >= 0 && tf->contest != MTT_CONTEST_YES &&
+            (tf->contest == MTT_CONTEST_ROW || final_set_changed(trk, i))) {
             int16_t best;
             (void)mtt_ihpda_row(trk, i, 1, tf->assigned, 0, &best);
         }

@@ -6,7 +6,10 @@
  * s gating j of p_j^s Pt_j^s / (1 - Pt_j^s), with
  * Pt_j^s = PD PG P^s (p_j^s / lambda) / sum_{l in G^s} (p_l^s / lambda).
  * Two passes over the gated pairs: O(pairs).  Only tracks that gate j
- * contribute, which is [S4]'s cluster-only computation. */
+ * contribute, which is [S4]'s cluster-only computation.
+ * ALGORITHMS.md §7.6 (lm-ihpda, lm_ihpda_variant contest): first every
+ * pair's p_j becomes p_j g_j, the amplitude likelihood ratio of its
+ * measurement, so the LM densities, the rows and the existence see it. */
 #include "mtt_internal.h"
 
 /* Measurements gated by at most this many tracks sum the other tracks'
@@ -22,6 +25,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
 {
     const mtt_real pdpg = trk->par.pd * trk->par.pg;
     const mtt_real pt_max = MTT_R(1.0) - MTT_R(1e-6); /* ALGORITHMS.md §16 clamp */
+    const int amp = MTT_CONTEST_ON(trk);
     uint16_t i, k;
 
     for (i = 0; i < trk->n_tracks; ++i) {
@@ -37,8 +41,14 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         }
         tf->lambda = lam;
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-            trk->pairs[k].lam = lam;
-            sum += trk->pairs[k].p;
+            mtt_pair *pp = &trk->pairs[k];
+            const mtt_mstore *ms = &trk->meas[pp->meas];
+            if (amp && ms->has_amp) {
+                pp->g = mtt_amp_ratio(trk->par.snr_rho, trk->par.amplitude_eta, ms->amp);
+                pp->p *= pp->g;
+            }
+            pp->lam = lam;
+            sum += pp->p;
         }
         if (!lm) {
             continue;

@@ -23,6 +23,11 @@ void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less
  * typed compares, no byte swaps. */
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
+/* CSR lists filled with first[c] as the cursor of c hold in first[c] the
+ * end of c, which is the start of c + 1: shift first[0..n] back by one
+ * (first[0] = 0).  A forward carry, so the compiler links no memmove. */
+void mtt_csr_unshift(uint16_t *first, uint16_t n);
+
 /* ---- kalman.c: Kalman filter on the motion model of motion.h (ALGORITHMS.md §3, §6) ---- */
 /* xp = F x, Pp = F P F' + Q through the model, symmetrised (ALGORITHMS.md §2, §3). */
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
@@ -85,12 +90,32 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
  * ALGORITHMS.md §10.1; 1: smaller rank, then lower index, ALGORITHMS.md §7.4). */
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best);
+/* Amplitude likelihood ratio of amplitude a against the background law
+ * (ALGORITHMS.md §7.6): g = exp(a rho/(1+rho))/(1+rho) (exponent clamped at
+ * 30), returned as g/(1 - eta + eta g); rho = 0 gives 1, eta = 0 the plain g. */
+mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a);
 /* The `ihpda` association: each valid track selects on its full gate
  * (tie rule 1); the selected measurements are marked used. */
 void mtt_ihpda_select_frame(mtt_tracker *trk);
 /* Final recomputation (ALGORITHMS.md §10.3) of every assigned track's row over G
- * minus the measurements assigned to other tracks, when that set changed. */
+ * minus the measurements assigned to other tracks, when that set changed
+ * or the contest test wrote over the row; never for a contested track. */
 void mtt_ihpda_final_frame(mtt_tracker *trk);
+
+/* lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md §7.6, §10.4): the
+ * amplitude ratio in p, the amplitude rows and the contest-aware update. */
+#define MTT_CONTEST_ON(trk)                                                                        \
+    ((trk)->par.association == MTT_ASSOC_LM_IHPDA && (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST)
+
+/* ---- contest.c: the contest test of lm-ihpda contest (ALGORITHMS.md §10.4) ---- */
+/* tf.contest of a track: no LM-IPDA row this frame (its IHPDA row stands),
+ * an LM-IPDA row written over its pairs but not contested (the final
+ * recomputation rewrites the IHPDA row), or contested (PDA update with
+ * that row). */
+enum { MTT_CONTEST_NONE = 0, MTT_CONTEST_ROW = 1, MTT_CONTEST_YES = 2 };
+/* After MMR: the LM-IPDA row (pair.beta, tf.beta0, tf.ex_post) of every
+ * track of a cluster with two or more tracks, then tf.contest. */
+void mtt_contest_frame(mtt_tracker *trk);
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their

@@ -15,6 +15,8 @@ mtt_status mtt_params_default(mtt_params *p)
     }
     memset(p, 0, sizeof *p);
     p->association = MTT_ASSOC_LM_IHPDA;
+    p->lm_ihpda_variant = MTT_LM_IHPDA_S0;
+    p->contest_beta = MTT_R(0.1);
     p->process_psd = MTT_R(5.0);
     p->meas_sigma[0] = MTT_R(1.0);
     p->meas_sigma[1] = MTT_R(1.0);
@@ -22,6 +24,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->pg = MTT_R(0.999);
     p->clutter_density = MTT_R(0.0);
     p->snr_rho = MTT_R(0.0);
+    p->amplitude_eta = MTT_R(0.5);
     p->markov_p11 = MTT_R(0.98);
     p->markov_p21 = MTT_R(0.0);
     p->existence_init = MTT_R(0.1);
@@ -67,6 +70,7 @@ static const range_rule rules[MTT_RULE_COUNT] = {
     MTT_PARAM_ROWS(RULE, MTT_PARAM_NO_FLAG, MTT_PARAM_NO_ENUM)};
 
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
+const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
 
 mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
 {

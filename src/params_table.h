@@ -41,10 +41,15 @@ enum {
 /* The spellings of the enum keys, index = value (params.c). */
 extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
 extern const char *const mtt_init_gate_names[2];
+extern const char *const mtt_lm_ihpda_variant_names[2];
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
+    ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, \
+         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6)") \
+    REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                  \
+         "lm_ihpda_variant contest: a measurement that two tracks give an LM-IPDA β >= this is contested (§10.4)") \
     REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                            \
          "power spectral density Sw of the constant-velocity model's white-noise acceleration, length²/time³ (§2)")  \
     REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL,                                    \
@@ -56,6 +61,8 @@ extern const char *const mtt_init_gate_names[2];
          "clutter density λ per unit area; 0 estimates it per track (§5.2)")                          \
     REAL("snr_rho", snr_rho, 1, 0.0, 1e6, 0, NULL,                                             \
          "intensity parameter ρ: target amplitude mean 1 + ρ, clutter mean 1; 0 ignores amplitude (§7.1)")     \
+    REAL("amplitude_eta", amplitude_eta, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                          \
+         "lm_ihpda_variant contest: share η of untracked-target detections in the background amplitude law; 0 is the plain ratio (§7.6)") \
     REAL("markov_p11", markov_p11, 1, 0.0, 1.0, 0, NULL,                                         \
          "probability that an existing target still exists at the next scan (§11)")          \
     REAL("markov_p21", markov_p21, 1, 0.0, 1.0, 0, NULL,                                         \

@@ -1,5 +1,6 @@
-/* sort.c - heap sort and heap sift over small fixed arrays, and the
- * stable x sort of the gating sweep (ALGORITHMS.md §4, §16).
+/* sort.c - heap sort and heap sift over small fixed arrays, the
+ * stable x sort of the gating sweep (ALGORITHMS.md §4, §16), and the shift
+ * that turns CSR cursors back into starts (gating, clusters §9).
  *
  * Heap sort because it is O(n log n) in the worst case, needs no recursion
  * and no scratch memory (docs/DESIGN.md: bounded cost, no recursion).  It is not
@@ -82,5 +83,15 @@ void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *m
         for (lo = 0; lo < n; ++lo) {
             idx[lo] = src[lo];
         }
+    }
+}
+
+void mtt_csr_unshift(uint16_t *first, uint16_t n)
+{
+    uint16_t i, prev = 0;
+    for (i = 0; i <= n; ++i) {
+        const uint16_t end = first[i];
+        first[i] = prev;
+        prev = end;
     }
 }

@@ -9,19 +9,23 @@
  * beta row and beta_0; existence from the association stage.
  * HARD (NNJPDA, ALGORITHMS.md §13.5): the Kalman update with the assigned measurement
  * (beta 1, beta0 0); existence from the association stage (ALGORITHMS.md §13.2).
+ * lm-ihpda contest (ALGORITHMS.md §10.4): a contested track takes the PDA update with
+ * the LM-IPDA row of the contest test instead of ONE.
  * A track with no measurement keeps its prediction, with L = 1 - PD PG. */
+#include <string.h>
+
 #include "mtt_internal.h"
 
 static void keep_prediction(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
-    int i, k;
+    int i;
+    /* memcpy of distinct objects: the element loops compiled to a memmove
+     * call, which alone linked newlib's memmove into the firmware */
+    memcpy(t->x, tf->xp, MTT_STATE_N * sizeof t->x[0]);
     for (i = 0; i < MTT_STATE_N; ++i) {
-        t->x[i] = tf->xp[i];
-        for (k = 0; k < MTT_STATE_N; ++k) {
-            t->P[i][k] = tf->Pp[i][k];
-        }
+        memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
     }
     t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
     t->meas = -1;
@@ -46,7 +50,10 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
 }
 
 /* PDA update with the beta row, beta_0 and existence of the association
- * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta. */
+ * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta.
+ * A contested lm-ihpda track also marks its measurements with beta >=
+ * contest_beta used (ALGORITHMS.md §10.4 step 5: after every final
+ * recomputation, which has run by now). */
 static void update_pda(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -61,6 +68,9 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
         nu[j][1] = trk->meas[pp->meas].y - tf->xp[1];
         if (beta[j] > beta[b]) {
             b = j;
+        }
+        if (tf->contest == MTT_CONTEST_YES && beta[j] >= trk->par.contest_beta) {
+            trk->meas[pp->meas].used = 1;
         }
     }
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
@@ -99,7 +109,7 @@ void mtt_update_frame(mtt_tracker *trk)
         if (!tf->valid) {
             continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
-        if (kind == MTT_UPDATE_ONE) {
+        if (kind == MTT_UPDATE_ONE && tf->contest != MTT_CONTEST_YES) {
             if (tf->assigned < 0) {
                 keep_prediction(trk, i);
             } else {

@@ -140,7 +140,7 @@ static void test_gate_frame_skips_invalid_track(void)
 
 static void test_gate_bound_is_inclusive(void)
 {
-    /* Spec 4: gated iff d2 <= gamma.  With gamma = 4 and S = I a measurement
+    /* ALGORITHMS.md §4: gated iff d2 <= gamma.  With gamma = 4 and S = I a measurement
      * at distance exactly 2 has d2 = gamma exactly; one ulp-ish further out
      * does not. */
     mtt_params p;

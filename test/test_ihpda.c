@@ -227,7 +227,7 @@ static void test_tv5_candidates_order_independent(void)
 
 static void test_rank_ties_lower_index_stronger(void)
 {
-    /* Spec 7.1: equal intensities, the lower measurement index ranks stronger. */
+    /* ALGORITHMS.md §7.1: equal intensities, the lower measurement index ranks stronger. */
     struct tv5 t;
     mtt_real prank[3], beta[3], L[3];
     uint8_t rank[3];
@@ -399,7 +399,7 @@ static void test_row_excludes_used_measurements(void)
 
 static void test_row_missing_amplitude_uses_rho0(void)
 {
-    /* Spec 7.1: a gated measurement without amplitude: P_r = 1/m; z1's L is
+    /* ALGORITHMS.md §7.1: a gated measurement without amplitude: P_r = 1/m; z1's L is
      * then the TV5 rho = 0 value 9.92672424. */
     int16_t best;
     tv5_tracker(MTT_ASSOC_IHPDA);

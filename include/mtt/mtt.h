@@ -92,6 +92,13 @@ typedef enum mtt_init_gate {
     MTT_INIT_GATE_INTENSITY = 1 /**< chi-square gate with sigma_P = f(I)/sqrt(gamma) ([S2]) */
 } mtt_init_gate;
 
+/** The algorithm of the lm-ihpda mode (docs/FORMATS.md `lm_ihpda_variant`). */
+typedef enum mtt_lm_ihpda_variant {
+    MTT_LM_IHPDA_S0 = 0,      /**< [S0] exactly: rank statistics, MMR, ALGORITHMS.md §10.3 and §7.4 */
+    MTT_LM_IHPDA_CONTEST = 1  /**< contest-aware update (ALGORITHMS.md §10.4) with the amplitude
+                                   likelihood ratio in place of the ranks (ALGORITHMS.md §7.6) */
+} mtt_lm_ihpda_variant;
+
 /** Stages whose cost the optional cycle counter measures (docs/DESIGN.md). */
 typedef enum mtt_stage {
     MTT_STAGE_VALIDATE = 0,
@@ -115,12 +122,15 @@ typedef uint32_t (*mtt_cycle_fn)(void *ctx);
  *  key is the field's name, intensity_f1 is "intensity_gate.f1", ...). */
 typedef struct mtt_params {
     mtt_assoc association;      /**< association mode */
+    mtt_lm_ihpda_variant lm_ihpda_variant; /**< lm-ihpda: [S0] or the contest-aware rule */
+    mtt_real contest_beta;      /**< contest threshold on the LM-IPDA beta (ALGORITHMS.md §10.4) */
     mtt_real process_psd;       /**< Sw of the CV model */
     mtt_real meas_sigma[2];     /**< sx, sy (sigma^2 stays a normal float) */
     mtt_real pd;                /**< detection probability; PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability */
     mtt_real clutter_density;   /**< per unit area; 0 estimates it per track (ALGORITHMS.md §5.2) */
     mtt_real snr_rho;           /**< amplitude model rho; 0 ignores amplitude */
+    mtt_real amplitude_eta;     /**< background share eta of the amplitude ratio (ALGORITHMS.md §7.6) */
     mtt_real markov_p11;        /**< existence Markov chain: stays */
     mtt_real markov_p21;        /**< existence Markov chain: appears */
     mtt_real existence_init;    /**< existence of a new track */

@@ -49,6 +49,7 @@ typedef struct mtt_track_frame {
     uint8_t has_all_amp; /* every gated measurement has an amplitude */
     uint8_t valid;       /* S positive definite */
     uint8_t shrink;      /* adaptive-jpda: gate threshold gamma/n this frame (ALGORITHMS.md §13.7) */
+    uint8_t contest;     /* lm-ihpda contest: MTT_CONTEST_* (ALGORITHMS.md §10.4) */
 } mtt_track_frame;
 
 /** A gated (track, measurement) pair. */
@@ -60,6 +61,7 @@ typedef struct mtt_pair {
     mtt_real lam;        /* clutter density this track sees for this measurement */
     mtt_real beta;       /* association probability of the current row */
     mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (ALGORITHMS.md §7.3) */
+    mtt_real g;          /* amplitude likelihood ratio g_eta (ALGORITHMS.md §7.6); 1 without */
 } mtt_pair;
 
 /** A measurement kept for this frame (or the previous one, for initiation). */
@@ -70,7 +72,8 @@ typedef struct mtt_mstore {
     uint8_t used;        /* assigned / selected / gated: not available for initiation */
 } mtt_mstore;
 
-/** One IHPDA candidate: p_j, lambda_j, amplitude, measurement index. */
+/** One IHPDA candidate: p_j, lambda_j, amplitude (or its ratio g_j,
+ *  ALGORITHMS.md §7.6), measurement index. */
 typedef struct mtt_cand {
     mtt_real p, lam, amp;
     uint16_t idx;         /* measurement index (for the tie rules) */

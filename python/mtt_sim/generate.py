@@ -16,7 +16,8 @@ Model (every number comes from the scenario, see scenarios/README.md):
 - Clutter: ``poisson`` draws a Poisson count with mean density * area (or
   ``mean``) per scan; ``binomial`` draws Binomial(n, p); positions are
   uniform over the area.
-- Amplitudes: clutter Exp(mean 1), target Exp(mean 1 + rho).  Without an
+- Amplitudes: clutter Exp(mean 1), target Exp(mean 1 + rho), rho the
+  target's own ``rho`` if it has one, else the scenario's.  Without an
   ``amplitude`` object the amplitudes are still drawn (so the other numbers
   of a seed do not change) but written empty.
 - Detections of one scan are written in a random order (targets and clutter
@@ -137,7 +138,7 @@ def _truth(scn, rng, times):
             s = state[tid]
             if a["x"][0] <= s[0] <= a["x"][1] and a["y"][0] <= s[1] <= a["y"][1]:
                 rows.append((k, times[k], tid, s[0], s[1], s[2], s[3]))
-                pres.append((tid, s[0], s[1], byid[tid]["pd"]))
+                pres.append((tid, s[0], s[1], byid[tid]["pd"], byid[tid].get("rho")))
         present.append(pres)
     truth = csvio.empty_truth()
     if rows:
@@ -209,7 +210,9 @@ def generate(scn: dict, seed: int, association: str | None = None) -> dict:
         n = len(pres)
         u = rng_det.random(n)
         noise = rng_det.standard_normal((n, 2)) * np.array([sx, sy])
-        tamp = rng_det.exponential(1.0 + rho, n)
+        # a target's own rho (optional) overrides the scenario's; the draws are
+        # the same standard exponentials times the mean either way
+        tamp = rng_det.exponential(1.0 + np.array([rho if p[4] is None else p[4] for p in pres], float), n)
         det = u < np.array([p[3] for p in pres], float) if n else np.zeros(0, bool)
         xy = np.array([[p[1], p[2]] for p in pres], float).reshape(-1, 2) + noise
         xy, tamp = xy[det], tamp[det]

@@ -1,11 +1,11 @@
 """Text tables from a summary (the object of summary.json), in the papers' formats.
 
-* Seed 004 Table 1: confirmed true tracks summed over the runs at given
+* [S4] Table 1: confirmed true tracks summed over the runs at given
   times (maximum = targets x runs), one column per association mode.
-* Seed 000 Fig. 5: tentative and confirmed track counts per frame (mean over
+* [S0] Fig. 5: tentative and confirmed track counts per frame (mean over
   runs, run 0 in brackets) and the peak frame.
 * A summary of GOSPA, CLEAR-MOT, RMSE, false tracks and time per frame.
-* Seed 001 Table 5: coalescence-or-switch rate, for seeded scenarios.
+* [S1] Table 5: coalescence-or-switch rate, for seeded scenarios.
 """
 
 from __future__ import annotations

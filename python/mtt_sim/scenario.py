@@ -42,9 +42,9 @@ class ScenarioError(ValueError):
 
 # docs/FORMATS.md "Tracker settings" keys.
 TRACKER_KEYS = {
-    "association", "process_psd", "meas_sigma", "pd", "pg", "clutter_density",
-    "snr_rho", "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
-    "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
+    "association", "lm_ihpda_variant", "contest_beta", "process_psd", "meas_sigma", "pd",
+    "pg", "clutter_density", "snr_rho", "amplitude_eta", "markov_p11", "markov_p21",
+    "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "initial_tracks",
 }
@@ -66,7 +66,7 @@ _AREA_KEYS = {"x", "y"}
 _SCAN_KEYS = {"count", "dt", "t0"}
 _CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
 _AMP_KEYS = {"rho"}
-_TARGET_KEYS = {"id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd"}
+_TARGET_KEYS = {"id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "rho"}
 _GROUP_KEYS = {"first_id", "x", "y", "vx", "vy", "t_ref", "first_scan", "last_scan", "pd", "offsets"}
 _RANDOM_KEYS = {"count", "first_id", "speed", "margin", "first_scan", "last_scan", "pd"}
 _SPLIT_KEYS = {"parent", "child", "scan", "dv_parent", "dv_child"}
@@ -213,6 +213,7 @@ def _kinematics(obj, source, where):
     _num(obj, "first_scan", source, where, lo=0, integer=True, required=False)
     _num(obj, "last_scan", source, where, lo=0, integer=True, required=False)
     _num(obj, "pd", source, where, lo=0, hi=1, required=False)
+    _num(obj, "rho", source, where, lo=0, required=False)
 
 
 def validate(scn: dict, source: str = "<string>") -> None:
@@ -381,6 +382,7 @@ def expand_targets(scn: dict):
             "first_scan": int(src.get("first_scan", 0)),
             "last_scan": int(src.get("last_scan", nscan - 1)),
             "pd": float(src.get("pd", pd)),
+            "rho": (float(src["rho"]) if "rho" in src else None),
         }
 
     for t in scn.get("targets", []):

@@ -175,7 +175,7 @@ def test_seeded_tracks_from_dict():
     np.testing.assert_array_equal(ts[0].state, [1, 2, 3, 4])
     np.testing.assert_array_equal(ts[1].covar, np.eye(4))
     sx = t.param("meas_sigma")[0]
-    # two-point covariance of spec 12.1 for dt = 2: [[R, R/dt], [R/dt, 2R/dt^2]]
+    # two-point covariance of ALGORITHMS.md §12.1 for dt = 2: [[R, R/dt], [R/dt, 2R/dt^2]]
     assert ts[0].covar[0, 0] == pytest.approx(sx * sx)
     assert ts[0].covar[0, 2] == pytest.approx(sx * sx / 2.0)
     assert ts[0].covar[2, 2] == pytest.approx(2.0 * sx * sx / 4.0)

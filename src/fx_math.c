@@ -1,0 +1,352 @@
+/* fx_math.c - the integer kernels of the fixed-point build: saturating
+ * add, exact product, rounded multiply and divide, square root, exp(-y)
+ * and log2 (docs/FIXED_POINT.md; the numerics of ALGORITHMS.md §16).
+ *
+ * Integer only, and only what ARMv6-M does in one instruction: 32-bit
+ * add, shift, compare and a 32 x 32 -> 32 multiply (MULS).  So no 64-bit
+ * multiply (__aeabi_lmul), no divide (__aeabi_idiv), no variable 64-bit
+ * shift (__aeabi_llsr), no CLZ.  Compiled only in the fixed-point build
+ * (MTT_REAL_FIXED) and for its unit test (MTT_FX_KERNELS): a float or
+ * double library carries none of it. */
+#include "mtt/fixed.h"
+
+#if defined(MTT_REAL_FIXED) || defined(MTT_FX_KERNELS)
+
+int mtt_fx_clz(uint32_t x)
+{
+    int n = 0;
+    if (x == 0u) {
+        return 32;
+    }
+    if (x <= 0x0000FFFFu) {
+        n += 16;
+        x <<= 16;
+    }
+    if (x <= 0x00FFFFFFu) {
+        n += 8;
+        x <<= 8;
+    }
+    if (x <= 0x0FFFFFFFu) {
+        n += 4;
+        x <<= 4;
+    }
+    if (x <= 0x3FFFFFFFu) {
+        n += 2;
+        x <<= 2;
+    }
+    if (x <= 0x7FFFFFFFu) {
+        n += 1;
+    }
+    return n;
+}
+
+int32_t mtt_fx_add(int32_t a, int32_t b)
+{
+    /* Overflow only when both have the same sign: test before adding
+     * (signed overflow is undefined in C). */
+    if (b > 0 && a > MTT_FX_MAX - b) {
+        return MTT_FX_MAX;
+    }
+    if (b < 0 && a < MTT_FX_MIN - b) {
+        return MTT_FX_MIN;
+    }
+    {
+        const int32_t s = a + b;
+        return (s < MTT_FX_MIN) ? MTT_FX_MIN : s; /* a + b = INT32_MIN */
+    }
+}
+
+int32_t mtt_fx_sub(int32_t a, int32_t b)
+{
+    /* -b saturates: b = INT32_MIN becomes MAX, one below the exact 2^31. */
+    if (b == INT32_MIN) {
+        return (a >= 0) ? MTT_FX_MAX : mtt_fx_add(a + 1, MTT_FX_MAX);
+    }
+    return mtt_fx_add(a, -b);
+}
+
+/* |v| as uint32 (2^31 for INT32_MIN). */
+static uint32_t mag(int32_t v)
+{
+    return (v < 0) ? (uint32_t)0u - (uint32_t)v : (uint32_t)v;
+}
+
+/* Exact ua * ub = hi:lo from four 16 x 16 -> 32 products. */
+static void umull(uint32_t ua, uint32_t ub, uint32_t *hi, uint32_t *lo)
+{
+    const uint32_t al = ua & 0xFFFFu, ah = ua >> 16, bl = ub & 0xFFFFu, bh = ub >> 16;
+    const uint32_t ll = al * bl, hh = ah * bh, m1 = al * bh, m2 = ah * bl;
+    /* mid = m1 + m2 may carry out of 32 bits: that carry is worth 2^48. */
+    const uint32_t mid = m1 + m2;
+    const uint32_t carry = (mid < m1) ? 0x10000u : 0u;
+    const uint32_t l = ll + (mid << 16);
+    *hi = hh + (mid >> 16) + carry + ((l < ll) ? 1u : 0u);
+    *lo = l;
+}
+
+int mtt_fx_mull(int32_t a, int32_t b, uint32_t *hi, uint32_t *lo)
+{
+    const uint32_t ua = mag(a), ub = mag(b);
+    umull(ua, ub, hi, lo);
+    if (ua == 0u || ub == 0u) {
+        return 0;
+    }
+    return ((a < 0) != (b < 0)) ? -1 : 1;
+}
+
+/* round((hi:lo) / 2^s) (ties up), saturated to MTT_FX_MAX; 0 <= s <= 62. */
+static uint32_t shr_round(uint32_t hi, uint32_t lo, int s)
+{
+    uint32_t rh, rl;
+    if (s == 0) {
+        return (hi != 0u || lo > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : lo;
+    }
+    /* + 2^(s-1), with the carry into the high word. */
+    if (s <= 32) {
+        const uint32_t half = (uint32_t)1u << (s - 1);
+        const uint32_t l = lo + half;
+        hi += (l < lo) ? 1u : 0u; /* hi < 2^62 / 2^32: no overflow */
+        lo = l;
+    } else {
+        hi += (uint32_t)1u << (s - 33);
+    }
+    if (s < 32) {
+        rh = hi >> s;
+        rl = (lo >> s) | (hi << (32 - s));
+    } else {
+        rh = 0u;
+        rl = hi >> (s - 32);
+    }
+    return (rh != 0u || rl > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : rl;
+}
+
+int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
+{
+    uint32_t hi, lo, r;
+    const int sign = mtt_fx_mull(a, b, &hi, &lo);
+    if (sign == 0) {
+        return 0;
+    }
+    r = shr_round(hi, lo, s);
+    return (sign < 0) ? -(int32_t)r : (int32_t)r;
+}
+
+int32_t mtt_fx_mulq(int32_t a, int32_t b, int s)
+{
+    /* a = ah 2^16 + al with ah signed, al in [0, 2^16): every partial
+     * product fits int32, so no sign juggling.  The two middle products
+     * and the low one are summed at 2^-18 of the product (each floored:
+     * an error in [0, 3) there), the high one added exactly. */
+    const int32_t ah = a >> 16, bh = b >> 16;
+    const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
+    const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +
+                        (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);
+    const int k = s - 18;
+    return (int32_t)((uint32_t)(ah * bh) << (32 - s)) + ((mid + ((int32_t)1 << (k - 1))) >> k);
+}
+
+int32_t mtt_fx_div(int32_t a, int32_t b, int s)
+{
+    const uint32_t ua = mag(a), ub = mag(b);
+    const int neg = (a < 0) != (b < 0);
+    uint32_t n, d, q = 0u, r;
+    int na, nb, sh, i;
+    if (ub == 0u) {
+        return (a > 0) ? MTT_FX_MAX : ((a < 0) ? MTT_FX_MIN : 0);
+    }
+    if (ua == 0u) {
+        return 0;
+    }
+    na = mtt_fx_clz(ua);
+    nb = mtt_fx_clz(ub);
+    /* Both in [2^30, 2^31): n / d in (1/2, 2), and the doubled remainder
+     * (< 2 d < 2^32) never leaves 32 bits.  The shift drops no bit: a
+     * magnitude is at most 2^31, so na = 0 only for 2^31 itself. */
+    n = (ua << na) >> 1;
+    d = (ub << nb) >> 1;
+    /* q = floor(n / d 2^31) < 2^32: the integer bit, then 31 fraction bits,
+     * one per pass. */
+    if (n >= d) {
+        q = 1u;
+        n -= d;
+    }
+    for (i = 0; i < 31; ++i) {
+        n <<= 1;
+        q <<= 1;
+        if (n >= d) {
+            n -= d;
+            q |= 1u;
+        }
+    }
+    /* |a| 2^s / |b| = (n0 / d) 2^(s - na + nb) = q 2^-sh (+ the remainder). */
+    sh = 31 + na - nb - s;
+    if (sh < 0) {
+        r = (uint32_t)MTT_FX_MAX; /* q >= 2^30: the result is >= 2^31 */
+    } else if (sh == 0) {
+        /* round with the next quotient bit: 2 rem >= d */
+        const uint32_t up = ((n << 1) >= d) ? 1u : 0u;
+        r = (q > (uint32_t)MTT_FX_MAX - up) ? (uint32_t)MTT_FX_MAX : q + up;
+    } else if (sh > 32) {
+        r = 0u;
+    } else if (sh == 32) {
+        r = (q >= 0x80000000u) ? 1u : 0u;
+    } else {
+        /* floor(floor(x) + c) / 2^sh = floor((x + c) / 2^sh): rounding the
+         * floored quotient is rounding the exact one. */
+        r = shr_round(0u, q, sh);
+    }
+    return neg ? -(int32_t)r : (int32_t)r;
+}
+
+int32_t mtt_fx_recip(int32_t x, int s)
+{
+    return mtt_fx_div(1, x, s);
+}
+
+uint32_t mtt_fx_sqrt(uint32_t x, int f)
+{
+    /* Radicand x 2^f = hi:lo (64 bits); two bits per step from the top.
+     * root < 2^32 and rem <= 2 root, so rem needs 33 bits: kept as
+     * rem (low 32) and remc (bit 32). */
+    uint32_t hi, lo, root = 0u, rem = 0u, remc = 0u;
+    int i;
+    if (f == 0) {
+        hi = 0u;
+        lo = x;
+    } else if (f < 32) {
+        hi = x >> (32 - f);
+        lo = x << f;
+    } else {
+        hi = x;
+        lo = 0u;
+    }
+    for (i = 0; i < 32; ++i) {
+        /* rem = rem * 4 + next two bits; trial = 4 root + 1 (both up to 35 bits:
+         * the high parts are tracked in remc / trc). */
+        const uint32_t bits = hi >> 30;
+        uint32_t trial, trc;
+        hi = (hi << 2) | (lo >> 30);
+        lo <<= 2;
+        remc = (remc << 2) | (rem >> 30);
+        rem = (rem << 2) | bits;
+        trc = root >> 30;
+        trial = (root << 2) | 1u;
+        root <<= 1;
+        if (remc > trc || (remc == trc && rem >= trial)) {
+            remc = remc - trc - ((rem < trial) ? 1u : 0u);
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    /* Round to nearest: (root + 1/2)^2 = root^2 + root + 1/4, so round up
+     * when rem = x - root^2 > root. */
+    if ((remc != 0u || rem > root) && root != 0xFFFFFFFFu) {
+        ++root;
+    }
+    return root;
+}
+
+/* 2^-(i/16) in Q30, i = 0..15, rounded. */
+static const int32_t exp2_tab[16] = {
+    1073741824, 1028218693, 984625594, 942880699, 902905651, 864625413, 827968132, 792865000,
+    759250125,  727060411,  696235434, 666717336, 638450708, 611382493, 585461881, 560640218};
+
+int32_t mtt_fx_exp_neg(uint32_t y, int *k)
+{
+    /* log2(e) = LE_HI 2^-30 + LE_LO 2^-62 (64 bits of it). */
+    const uint32_t le_hi = 1549082004u, le_lo = 2920020061u;
+    const int32_t ln2 = 744261118; /* ln 2 in Q30 */
+    uint32_t th, tl, ch, cl, f, r;
+    int32_t u, h;
+    int i;
+    /* t = y log2(e) in Q54: y le_hi + (y le_lo) / 2^32 (truncated). */
+    umull(y, le_hi, &th, &tl);
+    umull(y, le_lo, &ch, &cl);
+    (void)cl;
+    {
+        const uint32_t l = tl + ch;
+        th += (l < tl) ? 1u : 0u;
+        tl = l;
+    }
+    /* t = th:tl in Q54: k = t >> 54, fraction f in Q30 = (t >> 24) & (2^30 - 1). */
+    *k = (int)(th >> 22);
+    f = ((th << 8) | (tl >> 24)) & 0x3FFFFFFFu;
+    i = (int)(f >> 26);
+    r = f & 0x03FFFFFFu;                  /* r < 1/16 in Q30 */
+    u = mtt_fx_mulq((int32_t)r, ln2, 30); /* u = r ln 2 < 0.0434 */
+    /* exp(-u) = 1 - u (1 - u (1/2 - u (1/6 - u/24))) */
+    h = 178956971 - mtt_fx_mulq(u, 44739243, 30); /* 1/6 - u/24 */
+    h = 536870912 - mtt_fx_mulq(u, h, 30);        /* 1/2 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* 1 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* exp(-u) */
+    return mtt_fx_mulq(exp2_tab[i], h, 30);
+}
+
+int32_t mtt_fx_exp_neg_q30(uint32_t y)
+{
+    int k;
+    const int32_t m = mtt_fx_exp_neg(y, &k);
+    if (k > 31) {
+        return 0;
+    }
+    if (k == 0) {
+        return m;
+    }
+    return (int32_t)(((uint32_t)m + ((uint32_t)1u << (k - 1))) >> k);
+}
+
+/* log2(1 + 2^-i) in Q30, i = 1..30, rounded. */
+static const int32_t log2_tab[30] = {
+    628098702, 345667660, 182455581, 93912511, 47667823, 24017256, 12055174, 6039314,
+    3022600,   1512037,   756203,    378148,   189085,   94546,    47274,    23637,
+    11819,     5909,      2955,      1477,     739,      369,      185,      92,
+    46,        23,        12,        6,        3,        1};
+
+int32_t mtt_fx_log2(uint32_t x, int f)
+{
+    /* x = 2^(31 - nz) * (xn / 2^31), xn in [2^31, 2^32): work in Q31 on
+     * z = xn / 2 in [2^30, 2^31) (Q30, [1, 2)) so z + z 2^-i cannot wrap. */
+    uint32_t z;
+    int32_t acc = 0; /* sum of log2(1 + 2^-i) chosen, Q30 */
+    int nz, i;
+    int32_t e;
+    if (x == 0u) {
+        return MTT_FX_MIN;
+    }
+    nz = mtt_fx_clz(x);
+    z = (x << nz) >> 1;
+    /* Multiply z by (1 + 2^-i) while it stays below 2: z prod -> 2. */
+    for (i = 1; i <= 30; ++i) {
+        const uint32_t t = z + (z >> i);
+        if (t < 0x80000000u) {
+            z = t;
+            acc += log2_tab[i - 1];
+        }
+    }
+    /* log2(z0) = 1 - acc - log2(z / 2^31); z / 2^31 = 1 - d with d = (2^31 - z) / 2^31
+     * < 2^-29: log2(1 - d) = -d log2(e) (+ O(d^2) < 2^-58).  d log2(e) in Q30:
+     * (2^31 - z) * log2(e) / 2. */
+    {
+        const int32_t dz = (int32_t)(0x80000000u - z);
+        acc += mtt_fx_mul(dz, 1549082005, 31); /* log2(e) in Q30, / 2 */
+    }
+    /* x 2^-f = z0 2^(31 - nz - f) with z0 = z / 2^30 in [1, 2). */
+    e = (int32_t)(31 - nz - f);
+    {
+        /* frac = 1 - acc in Q30 is log2(z0) in [0, 1]; total in Q25 rounded. */
+        const int32_t frac = MTT_FX_Q30_ONE - acc;
+        const int32_t fr25 = (frac + 16) >> 5;
+        return e * (int32_t)33554432 + fr25;
+    }
+}
+
+int32_t mtt_fx_ln(uint32_t x, int f)
+{
+    /* ln 2 in Q31 = 1488522236; Q25 times Q31 >> 31 stays Q25. */
+    return mtt_fx_mul(mtt_fx_log2(x, f), 1488522236, 31);
+}
+
+#else
+/* ISO C wants at least one declaration in a translation unit. */
+typedef int mtt_fx_math_unused;
+#endif
