@@ -5,6 +5,9 @@
 #   ./scripts/dev.sh test    deps, then the workflows test-float, test-double,
 #                          test-float-small (configure + build + ctest each),
 #                          then the Python package (python-package below),
+#                          then scripts/coverage.sh --check (gcov builds of
+#                          the default and the firmware configuration; prints
+#                          "coverage src/: lines L%, branches B%" for each),
 #                          then scripts/ci-firmware.sh (cross builds, qemu,
 #                          static analysis; each check one test), then
 #                          scripts/ci-robustness.sh (ASan+UBSan, fuzz, soak);
@@ -124,13 +127,15 @@ cmd_deps() {
   deps_python
 }
 
-# Runs a CI script that prints "<prefix>: N passed, M failed" and adds its
+# Runs a CI script (with the arguments after the second) that prints
+# "<prefix>: N passed, M failed" and adds its
 # counts to cmd_test's passed/failed (each of its checks counts as one
 # test); a non-zero exit that reported no failure counts as one.
 run_counted() {
   local prefix="$1" script="$2" before=$failed rc=0 line
-  say "=== scripts/$(basename "$script")"
-  "$script" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  shift 2
+  say "=== scripts/$(basename "$script") $*"
+  "$script" "$@" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
   line="$(grep -E "^$prefix: [0-9]+ passed, [0-9]+ failed\$" "$log" | tail -n1 || true)"
   if [[ -n "$line" ]]; then
     passed=$((passed + $(sed -E "s/^$prefix: ([0-9]+) passed.*/\1/" <<<"$line")))
@@ -230,6 +235,8 @@ cmd_test() {
   done
   # The Python package against the mtt-track of test-float.
   run_python_package
+  # Line and branch coverage of src/ (docs/COVERAGE.md), both configurations.
+  run_counted coverage "$ROOT/scripts/coverage.sh" --check
   # The firmware proof: cross builds, qemu, static analysis.
   run_counted ci-firmware "$ROOT/scripts/ci-firmware.sh"
   # Robustness: unit tests under ASan+UBSan, fuzz smoke runs, soak.

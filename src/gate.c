@@ -93,7 +93,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         if (!tf->valid) {
             continue;
         }
-        if (tf->shrink) {
+        if (MTT_WITH_BASELINES && tf->shrink) {
             gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (ALGORITHMS.md §13.7) */
         }
         tf->vg = mtt_gate_volume(gamma, tf->det_s);

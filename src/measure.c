@@ -77,8 +77,9 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
         }
     }
     trk->stats.last.meas_dropped = valid - kept;
-    if (valid > kept) {
-        mtt_sort(trk->sel, kept, sizeof trk->sel[0], idx_less, NULL); /* back to input order */
+    if (kept == MTT_MAX_MEAS) {
+        /* the heap was built (even with nothing dropped): back to input order */
+        mtt_sort(trk->sel, kept, sizeof trk->sel[0], idx_less, NULL);
     }
     for (i = 0; i < kept; ++i) {
         store_meas(trk, &meas[trk->sel[i]], trk->sel[i]);

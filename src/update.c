@@ -78,6 +78,7 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
 
+#if MTT_WITH_BASELINES
 /* NNJPDA: hard Kalman update with the assigned pair (ALGORITHMS.md §13.5), or the
  * prediction; existence per ALGORITHMS.md §13.2 either way. */
 static void update_nn(mtt_tracker *trk, uint16_t ti)
@@ -97,6 +98,7 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
     }
     t->existence = tf->ex_post;
 }
+#endif
 
 #if MTT_WITH_IMM
 /* IMM track (ALGORITHMS.md §14.2): the mode's result -- the assigned pair
@@ -162,8 +164,10 @@ void mtt_update_frame(mtt_tracker *trk)
             }
         } else if (tf->pair_count == 0u) {
             keep_prediction(trk, i);
-        } else if (MTT_WITH_BASELINES && kind == MTT_UPDATE_HARD) {
-            update_nn(trk, i); /* constant false without the baselines: not linked */
+#if MTT_WITH_BASELINES
+        } else if (kind == MTT_UPDATE_HARD) {
+            update_nn(trk, i);
+#endif
         } else {
             update_pda(trk, i);
         }

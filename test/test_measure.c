@@ -56,6 +56,37 @@ static void test_cap_without_amplitude_keeps_first(void)
     }
 }
 
+/* Exactly MTT_MAX_MEAS valid detections (amplitudes in no order, two bad
+ * ones among them): nothing is dropped and all stay in input order, as
+ * below the cap.  (The cap's heap is built on reaching MTT_MAX_MEAS even
+ * when no further detection comes.) */
+static void test_exactly_max_valid_keeps_input_order(void)
+{
+    const uint32_t n = MTT_MAX_MEAS + 2u;
+    volatile mtt_real zero = MTT_R(0.0);
+    uint32_t i, j = 0;
+    for (i = 0; i < n; ++i) {
+        /* amplitudes (i * 37) mod 101: repeated values and no monotone order */
+        many[i] = sim_meas((mtt_real)i, MTT_R(1.0), (mtt_real)((i * 37u) % 101u), 1);
+    }
+    many[3].x = zero / zero; /* NaN */
+    many[n / 2u].amplitude = MTT_R(-1.0);
+    mtt_measure_select(&trk, many, n);
+    TEST_ASSERT_EQUAL_UINT32(2u, TV_STATS(&trk).last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_dropped);
+    TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
+    for (i = 0; i < n; ++i) {
+        if (i == 3u || i == n / 2u) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_UINT32(i, tv_meas_src(&trk, (uint16_t)j));
+        TEST_ASSERT_EQUAL_FLOAT((float)i, (float)trk.meas[j].x);
+        TEST_ASSERT_EQUAL_FLOAT((float)((i * 37u) % 101u), (float)trk.meas[j].amp);
+        ++j;
+    }
+    TEST_ASSERT_EQUAL_UINT32(MTT_MAX_MEAS, j);
+}
+
 /* Bad detections are skipped and counted; the good ones keep their input index. */
 static void test_bad_detections_skipped(void)
 {
@@ -73,6 +104,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_cap_keeps_strongest_in_input_order);
     RUN_TEST(test_cap_without_amplitude_keeps_first);
+    RUN_TEST(test_exactly_max_valid_keeps_input_order);
     RUN_TEST(test_bad_detections_skipped);
     return UNITY_END();
 }

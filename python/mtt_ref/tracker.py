@@ -4,8 +4,9 @@ Written from docs/ALGORITHMS.md (section numbers below) and the public
 behaviour notes of README.md ("Limits and overflow rules"), not from src/.
 Plain loops and dense matrices: clarity over speed.
 
-Where the spec leaves a choice open and the result depends on it, the choice
-made here is marked "SPEC GAP" (python/tests/test_differential.py lists them).
+Where the spec once left a choice open and the result depends on it, the
+choice is marked "SPEC GAP"; docs/ALGORITHMS.md now states each as a [CHOICE]
+(python/tests/test_differential.py's SPEC_GAPS_DOCUMENTED gives the sections).
 
 Every decision taken on a computed number (gate test, argmax, velocity gate,
 merge test, thresholds) also records, in Tracker.near_ties, when the two

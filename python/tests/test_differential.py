@@ -53,10 +53,7 @@ CASES_DIR = os.path.join(ROOT, "test", "differential", "cases")
 # the diagnosis).  A case listed here must still fail (so the list cannot go
 # stale); once the library is fixed, remove it from this list (and the bug from
 # KNOWN_C_BUGS) and it becomes a plain regression.
-EXPECTED_FAILURES = {
-    "meas-at-max-rank-tie.scene": "meas-at-max",
-    "meas-at-max-birth-order.scene": "meas-at-max",
-}
+EXPECTED_FAILURES = {}
 
 
 def _valid(d):
@@ -67,65 +64,48 @@ def _valid(d):
 # The C bugs behind EXPECTED_FAILURES: diagnosis, and the trigger that tells a
 # random scene that disagrees because of this bug (it is then counted under
 # the bug, not failed; any scene without the trigger that disagrees fails).
-KNOWN_C_BUGS = {
-    "meas-at-max": {
-        "diagnosis": (
-            "a frame with exactly MTT_MAX_MEAS (256) valid detections: the library no longer "
-            "keeps them in input order (README 'Limits': nothing is dropped at 256, and the kept "
-            "ones stay in input order; ALGORITHMS.md §15: measurement indices follow the input "
-            "order).  Seen: §7.1's rank tie (equal amplitudes: the lower index ranks stronger) "
-            "picks the higher index, and §12.1's births come out in another order, so track "
-            "identities differ.  255 or 257 valid detections behave correctly (at 257 the cap "
-            "drops one and the rest stay in input order)."),
-        "trigger": lambda scene: any(sum(map(_valid, dets)) == 256 for _, dets in scene.frames),
-    },
+KNOWN_C_BUGS = {}
+# Fixed, kept as regressions: "meas-at-max" (a frame with exactly MTT_MAX_MEAS
+# valid detections lost their input order: the cap's heap was built but not
+# re-sorted; cases meas-at-max-rank-tie.scene, meas-at-max-birth-order.scene).
+
+# Readings the spec once left open (the reference's "SPEC GAP" marks in
+# python/mtt_ref/tracker.py), now stated in docs/ALGORITHMS.md as [CHOICE]
+# paragraphs; the library and the reference agree with them on every scene.
+# Topic -> (section, a phrase of that section that states it, regression cases
+# or "" when the random scenes cover it).  test_regression_cases checks that each section
+# still says it.
+SPEC_GAPS_DOCUMENTED = {
+    "birth velocity cap": ("12.1", "Velocity cap.", "birth-velocity-cap.scene"),
+    "birth order": ("12.1", "Birth order.", "birth-pair-order.scene"),
+    "first frame": ("15", "First frame.", "first-frame-seeded.scene"),
+    "track age": ("15", "Track age.", "first-frame-seeded.scene"),
+    "IPDA's reported measurement": ("6", "Reported measurement.", ""),
+    "row ties: ihpda's selection": ("7.4", "Scope of this tie rule.", "row-tie-ihpda-rank.scene"),
+    "row ties: MMR": ("10.1", "Ties, precisely.", "row-tie-mmr-index.scene"),
+    "missing amplitude": ("7.1", "whatever set a row is computed over", ""),
+    "f2 clamp": ("12.2", "peak of the **configured** f2", "intensity-clamp-at-f2-peak.scene"),
+    "intensity gate and dT": ("12.2", "Frame interval.", ""),
+    "caps: order and ties": ("16", "Overflow of the bounds: order and ties.", ""),
+    "gate cap ties": ("7.2", "equal d² at the cut: the lower measurement index stays", ""),
+    "LM rounding": ("8.2", "where rounding decides", ""),
 }
 
-# Where docs/ALGORITHMS.md is silent or ambiguous and the result depends on it.
-# mtt_ref implements the reading below ("SPEC GAP" in python/mtt_ref/tracker.py),
-# the library agrees with it on every scene, and the spec should state it.
-# Section -> (the reading, regression case or "" when the random scenes cover it).
-SPEC_GAPS = {
-    "§12.1 birth covariance": (
-        "the two-point velocity variance 2R/dT^2 is capped at vmax^2 by scaling the velocity "
-        "rows and columns (docs/ROBUSTNESS.md F6); §12.1 gives the uncapped matrix",
-        "birth-velocity-cap.scene"),
-    "§12.1 / §15 birth order": (
-        "pairs are taken with z_k (U_k, input order) outer and z_{k-1} (U_{k-1}) inner, and new "
-        "identities follow that order; §15's 'U_{k-1} x U_k' reads the other way round",
-        "birth-pair-order.scene"),
-    "§15 first frame": (
-        "the first frame predicts nothing: state, covariance and existence of seeded tracks "
-        "stay as given (README 'Other limits' only)",
-        "first-frame-seeded.scene"),
-    "track age": (
-        "age counts predictions: 0 in the birth frame, and 0 after the first frame for a "
-        "seeded track (the spec does not define age)",
-        "first-frame-seeded.scene"),
-    "§6 measurement used": (
-        "IPDA modes report as 'measurement used' the one with the largest beta, equal beta: "
-        "the lower index (§6 has no such notion)", ""),
-    "§7.4 vs §10.1 ties in one row": (
-        "ihpda breaks equal beta by the smaller rank (§7.4); lm-ihpda's MMR by the lower "
-        "measurement index (§10.1), even against the rank; the spec should say which governs",
-        "row-tie-mmr-index.scene, row-tie-ihpda-rank.scene"),
-    "§7.1 missing amplitude": (
-        "'any gated measurement' is the whole capped gate G, not MMR's remaining set A or "
-        "§10.3's G_f", ""),
-    "§12.2 clamp": (
-        "I is clamped at the peak -a1/(2 a2) of the configured f2 (none when a2 >= 0); §12.2 "
-        "gives the literal 1048.5, the peak of the default f2", "intensity-clamp-at-f2-peak.scene"),
-    "§12.2 frame interval": (
-        "f(I) is used as is whatever dT is (length per frame); §12.1's circle scales with dT", ""),
-    "caps (README 'Limits')": (
-        "the per-gate MTT_MAX_GATED cap (smallest d^2) is applied before the frame's "
-        "MTT_MAX_PAIRS cap (largest p); merge candidates over MTT_MAX_MERGE_PAIRS keep the "
-        "smallest d^2; the tie rules at each cut are not stated", ""),
-    "§8.2 numerics": (
-        "pass 2's W_j - w_j^tau cancels when one track's w dominates W_j and lambda_j is below "
-        "about eps * W_j (clutter_density 1e-12): lambda~ is then rounding noise and two "
-        "correct implementations differ; mtt_ref flags such scenes as tie-sensitive", ""),
-}
+
+def algorithms_section(number):
+    """Text of section `number` ("12.1", "15") of docs/ALGORITHMS.md, up to the next heading."""
+    with open(os.path.join(ROOT, "docs", "ALGORITHMS.md"), encoding="utf-8") as fh:
+        lines = fh.read().split("\n")
+    out, inside = [], False
+    for line in lines:
+        if line.startswith("#"):
+            inside = line.lstrip("#").strip().startswith(number + " ") or \
+                     line.lstrip("#").strip().startswith(number + ". ")
+            continue
+        if inside:
+            out.append(line)
+    return "\n".join(out)
+
 
 # The one place that knows where the scenario generator lives (python/mtt_sim).
 def generate_scenario(scenario, seed, out):
@@ -517,7 +497,8 @@ class Differential(unittest.TestCase):
                     self.assertIsNone(diff, name)
         for name in EXPECTED_FAILURES:
             self.assertTrue(os.path.exists(os.path.join(CASES_DIR, name)), name)
-        for _, cases in SPEC_GAPS.values():
+        for topic, (section, phrase, cases) in SPEC_GAPS_DOCUMENTED.items():
+            self.assertIn(phrase, algorithms_section(section), f"ALGORITHMS.md §{section} no longer states {topic}")
             for name in filter(None, cases.split(", ")):
                 self.assertTrue(os.path.exists(os.path.join(CASES_DIR, name)), name)
 
