@@ -154,6 +154,7 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
         return MTT_ERR_RANGE;
     }
     t = &trk->tracks[i];
+    memset(view, 0, sizeof *view); /* every byte defined, padding included: views compare with memcmp */
     view->id = t->id;
     view->confirmed = t->confirmed;
     for (k = 0; k < 4; ++k) { /* the CV part: x, y, vx, vy */
@@ -163,7 +164,6 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;
-    memset(view->mu, 0, sizeof view->mu);
     view->n_models = 1u;
     view->mu[0] = MTT_R(1.0);
 #if MTT_WITH_IMM
