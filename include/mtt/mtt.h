@@ -42,11 +42,11 @@ extern "C" {
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
-    MTT_CONFIG_MIX_(2166136261u,                                                                   \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                                                                   \
         MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
         MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
         MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real)), \
-        MTT_WITH_IMM), MTT_MAX_MODELS)
+        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
