@@ -7,9 +7,37 @@
  * O(n log n + sum of slice lengths), not tracks x measurements. */
 #include "mtt_internal.h"
 
+/* ln x for finite x > 0 without libm's log (ALGORITHMS.md §16): x = m 2^e
+ * with m in [1/sqrt 2, sqrt 2), ln m = 2 atanh s, s = (m - 1)/(m + 1),
+ * |s| <= 0.172, by its series to s^9 (next term < 4e-10 relative: float
+ * exact to a few ulp, for the float firmware).  Halving and doubling are
+ * exact, so the only rounding is the series'. */
+mtt_real mtt_gate_ln(mtt_real x)
+{
+    mtt_real m = x, s, s2;
+    int e = 0, k;
+    for (k = 0; k < 1100 && m < MTT_R(0.70710678118654752); ++k) {
+        m *= MTT_R(2.0);
+        --e;
+    }
+    for (k = 0; k < 1100 && m >= MTT_R(1.4142135623730951); ++k) {
+        m *= MTT_R(0.5);
+        ++e;
+    }
+    s = (m - MTT_R(1.0)) / (m + MTT_R(1.0));
+    s2 = s * s;
+    return (mtt_real)e * MTT_R(0.69314718055994531) +
+           s * (MTT_R(2.0) + s2 * (MTT_R(2.0) / MTT_R(3.0) +
+                                   s2 * (MTT_R(0.4) + s2 * (MTT_R(2.0) / MTT_R(7.0) + s2 * (MTT_R(2.0) / MTT_R(9.0))))));
+}
+
 mtt_real mtt_gate_gamma(mtt_real pg)
 {
+#if MTT_SMALL_LOG
+    return MTT_R(-2.0) * mtt_gate_ln(MTT_R(1.0) - pg); /* firmware: no libm log (616 B) */
+#else
     return MTT_R(-2.0) * mtt_log(MTT_R(1.0) - pg);
+#endif
 }
 
 mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s)

@@ -181,8 +181,8 @@ void mtt_ihpda_final_frame(mtt_tracker *trk)
     uint16_t i;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        if (tf->valid && tf->assigned >= 0 && tf->contest != MTT_CONTEST_YES &&
-            (tf->contest == MTT_CONTEST_ROW || final_set_changed(trk, i))) {
+        if (tf->valid && tf->assigned >= 0 && !MTT_CONTESTED(tf) &&
+            (MTT_CONTEST_ROW_WRITTEN(tf) || final_set_changed(trk, i))) {
             int16_t best;
             (void)mtt_ihpda_row(trk, i, 1, tf->assigned, 0, &best);
         }

@@ -67,6 +67,8 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
 
 /* ---- gate.c: gating, gate area, likelihood (ALGORITHMS.md §4) ---- */
 mtt_real mtt_gate_gamma(mtt_real pg);
+/* ln x, finite x > 0, without libm (gamma's log under MTT_SMALL_LOG). */
+mtt_real mtt_gate_ln(mtt_real x);
 mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s);
 mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N / PG */
 /* Frame stage: fills trk->pairs (sorted by track, then measurement), each
@@ -111,9 +113,11 @@ void mtt_ihpda_select_frame(mtt_tracker *trk);
 void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md §7.6, §10.4): the
- * amplitude ratio in p, the amplitude rows and the contest-aware update. */
+ * amplitude ratio in p, the amplitude rows and the contest-aware update.
+ * Constant 0 with MTT_WITH_CONTEST 0, so the compiler drops that code. */
 #define MTT_CONTEST_ON(trk)                                                                        \
-    ((trk)->par.association == MTT_ASSOC_LM_IHPDA && (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST)
+    (MTT_WITH_CONTEST && (trk)->par.association == MTT_ASSOC_LM_IHPDA &&                           \
+     (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST)
 
 /* ---- contest.c: the contest test of lm-ihpda contest (ALGORITHMS.md §10.4) ---- */
 /* tf.contest of a track: no LM-IPDA row this frame (its IHPDA row stands),
@@ -121,6 +125,9 @@ void mtt_ihpda_final_frame(mtt_tracker *trk);
  * recomputation rewrites the IHPDA row), or contested (PDA update with
  * that row). */
 enum { MTT_CONTEST_NONE = 0, MTT_CONTEST_ROW = 1, MTT_CONTEST_YES = 2 };
+/* tf.contest tests, constant 0 with MTT_WITH_CONTEST 0 (the field stays NONE). */
+#define MTT_CONTESTED(tf) (MTT_WITH_CONTEST && (tf)->contest == MTT_CONTEST_YES)
+#define MTT_CONTEST_ROW_WRITTEN(tf) (MTT_WITH_CONTEST && (tf)->contest == MTT_CONTEST_ROW)
 /* After MMR: the LM-IPDA row (pair.beta, tf.beta0, tf.ex_post) of every
  * track of a cluster with two or more tracks, then tf.contest. */
 void mtt_contest_frame(mtt_tracker *trk);

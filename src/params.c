@@ -221,6 +221,10 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
         st = MTT_ERR_UNSUPPORTED;
     }
+    if (bad == NULL && !MTT_WITH_CONTEST && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST) {
+        bad = "lm_ihpda_variant"; /* the contest variant, built with MTT_WITH_CONTEST 0 */
+        st = MTT_ERR_UNSUPPORTED;
+    }
     if (bad == NULL && p->motion == MTT_MOTION_IMM && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST &&
         p->association == MTT_ASSOC_LM_IHPDA) {
         bad = "lm_ihpda_variant"; /* the contest update has no IMM form yet (ALGORITHMS.md §10.4) */

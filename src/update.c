@@ -69,7 +69,7 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
         if (beta[j] > beta[b]) {
             b = j;
         }
-        if (tf->contest == MTT_CONTEST_YES && beta[j] >= trk->par.contest_beta) {
+        if (MTT_CONTESTED(tf) && beta[j] >= trk->par.contest_beta) {
             trk->meas[pp->meas].used = 1;
         }
     }
@@ -156,7 +156,7 @@ void mtt_update_frame(mtt_tracker *trk)
             update_imm(trk, i, kind); /* motion imm refuses the contest variant */
         } else
 #endif
-        if (kind == MTT_UPDATE_ONE && tf->contest != MTT_CONTEST_YES) {
+        if (kind == MTT_UPDATE_ONE && !MTT_CONTESTED(tf)) {
             if (tf->assigned < 0) {
                 keep_prediction(trk, i);
             } else {

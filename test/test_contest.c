@@ -20,6 +20,8 @@ void tearDown(void) {}
 
 static mtt_tracker trk;
 
+#if MTT_WITH_CONTEST
+
 static void run(mtt_assoc mode, mtt_lm_ihpda_variant variant, const mtt_meas *z, size_t n,
                 mtt_track_view v[3])
 {
@@ -224,9 +226,33 @@ static void test_tv15_amplitude_row(void)
     TV_ASSERT_REAL(0.8975368695, mtt_existence_update(MTT_R(0.6), trk.pairs[1].L));
 }
 
+#else /* MTT_WITH_CONTEST == 0 */
+
+/* Built without the contest variant: it is refused by name, on every
+ * association, and the tracker is not initialised with it; s0 stands. */
+static void test_contest_refused_without_the_build(void)
+{
+    mtt_params p;
+    const char *bad = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("lm_ihpda_variant", bad);
+    p.association = MTT_ASSOC_IPDA;
+    bad = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("lm_ihpda_variant", bad);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_init(&trk, &p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
+#if MTT_WITH_CONTEST
     RUN_TEST(test_s0_hands_the_missed_track_the_detection);
     RUN_TEST(test_contest_updates_both_with_the_lm_ipda_mixture);
     RUN_TEST(test_uncontested_track_keeps_the_s0_update);
@@ -235,5 +261,8 @@ int main(void)
     RUN_TEST(test_lone_track_is_never_contested);
     RUN_TEST(test_tv15_amplitude_ratio);
     RUN_TEST(test_tv15_amplitude_row);
+#else
+    RUN_TEST(test_contest_refused_without_the_build);
+#endif
     return UNITY_END();
 }

@@ -44,6 +44,7 @@ static void test_tv3_gamma_volume_det(void)
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, tv2_R, S, Si, &det, K));
     gamma = mtt_gate_gamma(MTT_R(0.99));
     TV_ASSERT_REAL(9.210340372, gamma);                     /* TV3 gamma */
+    TV_ASSERT_REAL(9.210340372, MTT_R(-2.0) * mtt_gate_ln(MTT_R(1.0) - MTT_R(0.99))); /* MTT_SMALL_LOG */
     TV_ASSERT_REAL(101.4211111, det);                       /* TV3 det S */
     TV_ASSERT_REAL(291.4001257, mtt_gate_volume(gamma, det)); /* TV3 V_G */
 }
@@ -233,6 +234,25 @@ static void test_gate_frame_unsorted_input(void)
     TV_ASSERT_REAL(1.738983051, tv_pair_d2(&trk, 2)); /* TV8 T2 z3 */
 }
 
+/* MTT_SMALL_LOG's ln against libm's over 1 - PG in [1e-7, 1) and beyond:
+ * within 4 ulp of the result in float (a few roundings of the series);
+ * in double the truncated series bounds it, 1e-9 relative. */
+static void test_gate_ln_matches_libm(void)
+{
+    static const double xs[] = {1e-7, 1e-4, 0.001, 0.01, 0.05, 0.1, 0.2937, 0.5, 0.7071, 0.7072,
+                                0.9, 0.99, 0.999999, 1.0, 1.4142, 1.4143, 2.0, 3.0, 1e3, 1e30};
+    size_t i;
+    for (i = 0; i < sizeof xs / sizeof xs[0]; ++i) {
+        const mtt_real x = (mtt_real)xs[i];
+        const mtt_real ref = mtt_log(x), got = mtt_gate_ln(x);
+        const mtt_real rel = (MTT_REAL_KIND == 1) ? MTT_R(4.0) * MTT_REAL_EPS : MTT_R(1e-9);
+        const mtt_real tol = rel * (mtt_fabs(ref) > MTT_R(1.0) ? mtt_fabs(ref) : MTT_R(1.0));
+        TEST_ASSERT_TRUE_MESSAGE(mtt_fabs(got - ref) <= tol, "mtt_gate_ln vs libm log");
+    }
+    TEST_ASSERT_TRUE(mtt_gate_ln(MTT_R(1.0)) == MTT_R(0.0));
+    TEST_ASSERT_TRUE(mtt_gate_ln(MTT_R(0.5)) == -MTT_R(0.69314718055994531));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -244,5 +264,6 @@ int main(void)
     RUN_TEST(test_gate_bound_is_inclusive);
     RUN_TEST(test_tv8_two_track_gate_frame);
     RUN_TEST(test_gate_frame_unsorted_input);
+    RUN_TEST(test_gate_ln_matches_libm);
     return UNITY_END();
 }

@@ -96,6 +96,22 @@
 #define MTT_WITH_BASELINES 1
 #endif
 
+/* 1: build lm-ihpda's contest variant (lm_ihpda_variant contest: the
+ * contest test and update of ALGORITHMS.md §10.4, the amplitude ratio of
+ * §7.6).  0: leave it out -- lm_ihpda_variant contest reports
+ * MTT_ERR_UNSUPPORTED; s0 ([S0]) is unchanged.  For firmware. */
+#ifndef MTT_WITH_CONTEST
+#define MTT_WITH_CONTEST 1
+#endif
+
+/* 1: gamma = -2 ln(1 - PG), the library's one logarithm (at init), by a
+ * short series (src/gate.c) instead of libm's log: about 500 bytes less
+ * .text on a firmware, gamma within a few ulp of libm's.  0: libm's log
+ * (every host build, so host output is unchanged). */
+#ifndef MTT_SMALL_LOG
+#define MTT_SMALL_LOG 0
+#endif
+
 #if MTT_MAX_TRACKS < 1 || MTT_MAX_TRACKS > 4096
 #error "MTT_MAX_TRACKS must be in [1, 4096]"
 #endif
@@ -129,6 +145,12 @@
 #endif
 #if MTT_WITH_BASELINES != 0 && MTT_WITH_BASELINES != 1
 #error "MTT_WITH_BASELINES must be 0 or 1"
+#endif
+#if MTT_WITH_CONTEST != 0 && MTT_WITH_CONTEST != 1
+#error "MTT_WITH_CONTEST must be 0 or 1"
+#endif
+#if MTT_SMALL_LOG != 0 && MTT_SMALL_LOG != 1
+#error "MTT_SMALL_LOG must be 0 or 1"
 #endif
 
 #if MTT_MAX_ASSIGN_TRACKS < 1 || MTT_MAX_ASSIGN_TRACKS > 255

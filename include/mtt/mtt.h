@@ -42,11 +42,11 @@ extern "C" {
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
-    MTT_CONFIG_MIX_(2166136261u,                                                                   \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                                                                   \
         MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
         MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
         MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real)), \
-        MTT_WITH_IMM), MTT_MAX_MODELS)
+        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
@@ -111,7 +111,8 @@ typedef enum mtt_init_gate {
 typedef enum mtt_lm_ihpda_variant {
     MTT_LM_IHPDA_S0 = 0,      /**< [S0] exactly: rank statistics, MMR, ALGORITHMS.md §10.3 and §7.4 */
     MTT_LM_IHPDA_CONTEST = 1  /**< contest-aware update (ALGORITHMS.md §10.4) with the amplitude
-                                   likelihood ratio in place of the ranks (ALGORITHMS.md §7.6) */
+                                   likelihood ratio in place of the ranks (ALGORITHMS.md §7.6);
+                                   built with MTT_WITH_CONTEST 1 */
 } mtt_lm_ihpda_variant;
 
 /** Stages whose cost the optional cycle counter measures (docs/DESIGN.md). */
@@ -278,7 +279,8 @@ MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
  *          of its range or not finite, or breaks a rule between fields (the
  *          ranges and rules: see mtt_params_info); MTT_ERR_UNSUPPORTED if the
  *          association mode is not built into this version (bad_field =
- *          "association"). */
+ *          "association"), nor the IMM ("motion"), nor lm-ihpda's contest
+ *          variant (MTT_WITH_CONTEST 0, "lm_ihpda_variant"). */
 MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
 
 /** The i-th settings key, 0 <= i < number of keys, in docs/FORMATS.md order.
