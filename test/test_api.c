@@ -174,6 +174,9 @@ void test_deterministic(void)
     static mtt_tracker a, b;
     mtt_params p;
     mtt_meas m[20];
+    mtt_track_view va, vb;
+    mtt_stats sa, sb;
+    size_t na, nb, i;
     int k, j;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.clutter_density = MTT_R(1e-3);
@@ -188,9 +191,20 @@ void test_deterministic(void)
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k, m, 20));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&b, (mtt_real)k, m, 20));
     }
-    TEST_ASSERT_TRUE(a.n_tracks > 0u);
-    TEST_ASSERT_EQUAL_MEMORY(&a.tracks, &b.tracks, sizeof a.tracks);
-    TEST_ASSERT_EQUAL_MEMORY(&a.stats, &b.stats, sizeof a.stats);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&a, &na));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&b, &nb));
+    TEST_ASSERT_TRUE(na > 0u);
+    TEST_ASSERT_EQUAL_UINT((unsigned)na, (unsigned)nb);
+    for (i = 0; i < na; ++i) {
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&a, i, &va));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&b, i, &vb));
+        TEST_ASSERT_EQUAL_MEMORY(&va, &vb, sizeof va); /* every byte of a view is defined */
+    }
+    memset(&sa, 0, sizeof sa);
+    memset(&sb, 0, sizeof sb);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&a, &sa));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&b, &sb));
+    TEST_ASSERT_EQUAL_MEMORY(&sa, &sb, sizeof sa);
 }
 
 /* The optional cycle counter fills per-stage costs. */

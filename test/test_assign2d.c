@@ -46,11 +46,11 @@ static void test_tv9_optimal(void)
         }
     }
     mtt_assign2d_solve(&ws, 3, 4, dense_row, &d);
-    TEST_ASSERT_EQUAL_INT(1, ws.col_row[0]); /* TV9: T1 -> z2 */
-    TEST_ASSERT_EQUAL_INT(0, ws.col_row[1]); /* TV9: T2 -> z1 */
-    TEST_ASSERT_EQUAL_INT(2, ws.col_row[2]); /* TV9: T3 -> z3 */
+    TEST_ASSERT_EQUAL_INT(1, TV_COL_ROW(&ws, 0)); /* TV9: T1 -> z2 */
+    TEST_ASSERT_EQUAL_INT(0, TV_COL_ROW(&ws, 1)); /* TV9: T2 -> z1 */
+    TEST_ASSERT_EQUAL_INT(2, TV_COL_ROW(&ws, 2)); /* TV9: T3 -> z3 */
     for (r = 0; r < 3; ++r) {
-        total += B[r][ws.col_row[r]];
+        total += B[r][TV_COL_ROW(&ws, r)];
     }
     TV_ASSERT_REAL(1.75, total); /* TV9 optimal total */
 }
@@ -110,7 +110,7 @@ static void test_optimal_vs_brute_force(void)
         brute(b, n, m, 0, 0u, 0, 0.0, &best_cnt, &best_sum);
         mtt_assign2d_solve(&ws, (uint16_t)n, (uint16_t)m, dense_row, &d);
         for (r = 0; r < n; ++r) {
-            const int c = ws.col_row[r];
+            const int c = TV_COL_ROW(&ws, r);
             if (c < 0) {
                 continue;
             }
@@ -132,37 +132,37 @@ static void test_optimal_vs_brute_force(void)
 static uint16_t add_track_s(double zx, double zy, double s11, double s12, double s22, double ex)
 {
     uint16_t i = TV_N_TRACKS(&trk)++;
-    mtt_track_frame *tf = &trk.tf[i];
-    mtt_track *t = TV_TRACK(&trk, i);
-    memset(tf, 0, sizeof *tf);
-    memset(t, 0, sizeof *t);
-    tf->xp[0] = (mtt_real)zx;
-    tf->xp[1] = (mtt_real)zy;
-    tf->Pp[0][0] = (mtt_real)s11 - trk.R[0];
-    tf->Pp[0][1] = (mtt_real)s12;
-    tf->Pp[1][0] = (mtt_real)s12;
-    tf->Pp[1][1] = (mtt_real)s22 - trk.R[2];
-    tf->Pp[2][2] = MTT_R(1.0);
-    tf->Pp[3][3] = MTT_R(1.0);
-    tf->ex_pred = (mtt_real)ex;
-    tf->assigned = -1;
-    tf->best = -1;
-    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(tf->Pp, trk.R, tf->S, tf->Si, &tf->det_s, tf->K));
-    tf->valid = 1;
-    t->meas = -1;
-    t->id = trk.next_id++;
+    memset(&TV_FRAME(&trk, i), 0, sizeof TV_FRAME(&trk, i));
+    memset(TV_TRACK(&trk, i), 0, sizeof *TV_TRACK(&trk, i));
+    TV_XP(&trk, i)[0] = (mtt_real)zx;
+    TV_XP(&trk, i)[1] = (mtt_real)zy;
+    TV_PP(&trk, i)[0][0] = (mtt_real)s11 - TV_R(&trk)[0];
+    TV_PP(&trk, i)[0][1] = (mtt_real)s12;
+    TV_PP(&trk, i)[1][0] = (mtt_real)s12;
+    TV_PP(&trk, i)[1][1] = (mtt_real)s22 - TV_R(&trk)[2];
+    TV_PP(&trk, i)[2][2] = MTT_R(1.0);
+    TV_PP(&trk, i)[3][3] = MTT_R(1.0);
+    TV_EX_PRED(&trk, i) = (mtt_real)ex;
+    TV_ASSIGNED(&trk, i) = -1;
+    TV_BEST(&trk, i) = -1;
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(TV_PP(&trk, i), TV_R(&trk), TV_S(&trk, i),
+                                              TV_SI(&trk, i), &TV_DET_S(&trk, i),
+                                              TV_GAIN(&trk, i)));
+    TV_VALID(&trk, i) = 1;
+    TV_TRACK_MEAS(&trk, i) = -1;
+    TV_TRACK_ID(&trk, i) = TV_NEXT_ID(&trk)++;
     return i;
 }
 
 static void add_meas(double x, double y, double amp)
 {
-    mtt_mstore *m = &trk.meas[TV_N_MEAS(&trk)];
-    memset(m, 0, sizeof *m);
-    m->x = (mtt_real)x;
-    m->y = (mtt_real)y;
-    m->amp = (mtt_real)amp;
-    m->has_amp = 1;
-    m->src = TV_N_MEAS(&trk)++;
+    const uint16_t j = TV_N_MEAS(&trk);
+    memset(&TV_MEAS(&trk, j), 0, sizeof TV_MEAS(&trk, j));
+    TV_MEAS_X(&trk, j) = (mtt_real)x;
+    TV_MEAS_Y(&trk, j) = (mtt_real)y;
+    TV_MEAS_AMP(&trk, j) = (mtt_real)amp;
+    TV_HAS_AMP(&trk, j) = 1;
+    TV_MEAS_SRC(&trk, j) = TV_N_MEAS(&trk)++;
 }
 
 static int pair_of(uint16_t t, uint16_t j)

@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include "mtt_internal.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 static mtt_tracker trk;
@@ -61,10 +63,10 @@ static void test_gate_cap_keeps_smallest_d2_then_lower_index(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(6u, st.last.gated_dropped);
     TEST_ASSERT_EQUAL_UINT32(MTT_MAX_GATED, st.last.pairs);
-    TEST_ASSERT_EQUAL_UINT16(MTT_MAX_GATED, trk.tf[0].pair_count);
+    TEST_ASSERT_EQUAL_UINT16(MTT_MAX_GATED, TV_PAIR_COUNT(&trk, 0));
     memset(kept, 0, sizeof kept);
-    for (k = trk.tf[0].pair_first; k < trk.tf[0].pair_first + trk.tf[0].pair_count; ++k) {
-        kept[trk.meas[trk.pairs[k].meas].src] = 1;
+    for (k = TV_PAIR_FIRST(&trk, 0); k < TV_PAIR_FIRST(&trk, 0) + TV_PAIR_COUNT(&trk, 0); ++k) {
+        kept[TV_MEAS_SRC(&trk, TV_PAIR_MEAS(&trk, k))] = 1;
     }
     for (i = 0; i < n; ++i) {
         const int want = (i == 0u) || (i >= 3u && i <= G + 1u);
@@ -98,7 +100,7 @@ static void test_merge_candidates_capped(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(n, st.max_cluster_tracks);
     TEST_ASSERT_EQUAL_UINT32(n * (n - 1u) / 2u - MTT_MAX_MERGE_PAIRS, st.last.merge_dropped);
-    TEST_ASSERT_EQUAL_UINT16(MTT_MAX_MERGE_PAIRS, trk.n_merge);
+    TEST_ASSERT_EQUAL_UINT16(MTT_MAX_MERGE_PAIRS, TV_N_MERGE(&trk));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &count));
     TEST_ASSERT_TRUE(st.last.merges >= n / 2u);
     TEST_ASSERT_EQUAL_UINT32(n, (uint32_t)count + st.last.merges);
@@ -106,8 +108,8 @@ static void test_merge_candidates_capped(void)
      * smallest d^2 of a pair of tracks 3 steps apart or more, whose
      * n - 3 + n - 4 + ... candidates cannot all fit beside the n - 1 + n - 2
      * nearer ones when MTT_MAX_MERGE_PAIRS = 2 n */
-    for (i = 0; i < trk.n_merge; ++i) {
-        const int gap = (int)trk.merge[i].b - (int)trk.merge[i].a;
+    for (i = 0; i < TV_N_MERGE(&trk); ++i) {
+        const int gap = (int)TV_MERGE_B(&trk, i) - (int)TV_MERGE_A(&trk, i);
         TEST_ASSERT_TRUE(gap >= 1 && gap <= 3);
     }
 }

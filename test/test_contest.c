@@ -104,8 +104,8 @@ static void test_uncontested_track_keeps_the_s0_update(void)
  * input, ALGORITHMS.md §7.4) after run(). */
 static mtt_real c_pair_L(void)
 {
-    TEST_ASSERT_EQUAL_UINT(2, trk.pairs[trk.n_pairs - 1u].track);
-    return trk.pairs[trk.n_pairs - 1u].L;
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_TRACK(&trk, TV_N_PAIRS(&trk) - 1u));
+    return TV_PAIR_L(&trk, TV_N_PAIRS(&trk) - 1u);
 }
 
 static void test_amplitude_enters_the_existence(void)
@@ -146,19 +146,19 @@ static void contest_case(mtt_real eps_scale, uint8_t expect)
     (void)tv_add_meas(&trk, MTT_R(0.0), MTT_R(1.0), MTT_R(1.0), 0);
     for (t = 0; t < 2; ++t) {
         tv_add_pair(&trk, t, 0, MTT_R(0.0));
-        trk.pairs[t].p = p_[t];
-        trk.pairs[t].lam = lam[t];
+        TV_PAIR_P(&trk, t) = p_[t];
+        TV_PAIR_LAM(&trk, t) = lam[t];
     }
     tv_index_pairs(&trk);
     mtt_cluster_frame(&trk);
     /* the weaker claim: track 1's one-measurement LM-IPDA beta */
     tv_ipda_betas(p.pd, p.pg, &p_[1], &lam[1], 1, beta, &b0, &L);
-    trk.par.contest_beta = beta[0] * eps_scale;
+    TV_PAR(&trk).contest_beta = beta[0] * eps_scale;
     mtt_contest_frame(&trk);
-    TEST_ASSERT_EQUAL_UINT(expect, trk.tf[0].contest);
-    TEST_ASSERT_EQUAL_UINT(expect, trk.tf[1].contest);
-    TV_ASSERT_REAL(beta[0], trk.pairs[1].beta);
-    TV_ASSERT_REAL(b0, trk.tf[1].beta0);
+    TEST_ASSERT_EQUAL_UINT(expect, TV_CONTEST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(expect, TV_CONTEST(&trk, 1));
+    TV_ASSERT_REAL(beta[0], TV_PAIR_BETA(&trk, 1));
+    TV_ASSERT_REAL(b0, TV_BETA0(&trk, 1));
 }
 
 static void test_contest_threshold_boundary(void)
@@ -171,7 +171,7 @@ static void test_lone_track_is_never_contested(void)
 {
     mtt_track_view v[3];
     run(MTT_ASSOC_LM_IHPDA, MTT_LM_IHPDA_CONTEST, meet, 2, v);
-    TEST_ASSERT_EQUAL_UINT(MTT_CONTEST_NONE, trk.tf[2].contest); /* C: a cluster of its own */
+    TEST_ASSERT_EQUAL_UINT(MTT_CONTEST_NONE, TV_CONTEST(&trk, 2)); /* C: a cluster of its own */
 }
 
 /* docs/TEST_VECTORS.md TV15: g and g_eta, rho = 3. */
@@ -208,22 +208,22 @@ static void test_tv15_amplitude_row(void)
     p.snr_rho = MTT_R(3.0);
     tv_init(&trk, &p);
     (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(2.0), MTT_R(0.0), MTT_R(2.0), MTT_R(0.6));
-    trk.tf[0].vg = MTT_R(291.4001257);
+    TV_GATE_AREA(&trk, 0) = MTT_R(291.4001257);
     for (j = 0; j < 3; ++j) {
         (void)tv_add_meas(&trk, (mtt_real)j, MTT_R(0.0), (mtt_real)amp[j], 1);
         tv_add_pair(&trk, 0, j, MTT_R(0.0));
-        trk.pairs[j].g = mtt_amp_ratio(p.snr_rho, p.amplitude_eta, (mtt_real)amp[j]);
-        trk.pairs[j].p = (mtt_real)p5[j] * trk.pairs[j].g; /* as lm_clutter.c leaves it */
-        trk.pairs[j].lam = MTT_R(0.002);
+        TV_PAIR_G(&trk, j) = mtt_amp_ratio(p.snr_rho, p.amplitude_eta, (mtt_real)amp[j]);
+        TV_PAIR_P(&trk, j) = (mtt_real)p5[j] * TV_PAIR_G(&trk, j); /* as lm_clutter.c leaves it */
+        TV_PAIR_LAM(&trk, j) = MTT_R(0.002);
     }
     tv_index_pairs(&trk);
     TEST_ASSERT_EQUAL_UINT(3, mtt_ihpda_row(&trk, 0, 0, -1, 0, &best));
     for (j = 0; j < 3; ++j) {
-        TV_ASSERT_REAL_MSG(L[j], trk.pairs[j].L, "TV15 L");
-        TV_ASSERT_REAL_MSG(beta[j], trk.pairs[j].beta, "TV15 beta");
+        TV_ASSERT_REAL_MSG(L[j], TV_PAIR_L(&trk, j), "TV15 L");
+        TV_ASSERT_REAL_MSG(beta[j], TV_PAIR_BETA(&trk, j), "TV15 beta");
     }
     TEST_ASSERT_EQUAL_INT(1, best); /* z2 */
-    TV_ASSERT_REAL(0.8975368695, mtt_existence_update(MTT_R(0.6), trk.pairs[1].L));
+    TV_ASSERT_REAL(0.8975368695, mtt_existence_update(MTT_R(0.6), TV_PAIR_L(&trk, 1)));
 }
 
 #else /* MTT_WITH_CONTEST == 0 */

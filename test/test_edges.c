@@ -7,6 +7,8 @@
 
 #include "mtt_internal.h"
 #include "sim.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 static mtt_tracker trk;
@@ -269,14 +271,14 @@ static void test_lm_pt_clamped(void)
     p.merge_threshold = MTT_R(0.0);
     init_two(&p, MTT_R(3.0));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), &z, 1));
-    TEST_ASSERT_EQUAL_UINT16(2u, trk.n_pairs);
+    TEST_ASSERT_EQUAL_UINT16(2u, TV_N_PAIRS(&trk));
     TEST_ASSERT_TRUE(p.pd * p.pg > pt);
     for (k = 0; k < 2; ++k) {
-        const mtt_pair *me = &trk.pairs[k], *other = &trk.pairs[1 - k];
-        const double w = (double)other->p * (double)pt / (1.0 - (double)pt);
-        TEST_ASSERT_FLOAT_WITHIN((float)(1e-3 * w), (float)w, (float)other->w);
+        const int me = k, other = 1 - k;
+        const double w = (double)TV_PAIR_P(&trk, other) * (double)pt / (1.0 - (double)pt);
+        TEST_ASSERT_FLOAT_WITHIN((float)(1e-3 * w), (float)w, (float)TV_PAIR_W(&trk, other));
         TEST_ASSERT_FLOAT_WITHIN((float)(1e-3 * w), (float)((double)p.clutter_density + w),
-                                 (float)me->lam);
+                                 (float)TV_PAIR_LAM(&trk, me));
     }
 }
 

@@ -81,9 +81,9 @@ static void tv3_tracker(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.pg = MTT_R(0.99); /* TV3 PG */
     tv_init(&trk, &p);
-    trk.R[0] = tv2_R[0];
-    trk.R[1] = tv2_R[1];
-    trk.R[2] = tv2_R[2];
+    TV_R(&trk)[0] = tv2_R[0];
+    TV_R(&trk)[1] = tv2_R[1];
+    TV_R(&trk)[2] = tv2_R[2];
     tv2_pred(xp, Pp);
     (void)tv_add_track_xp(&trk, xp, Pp, MTT_R(0.6));
     for (c = 0; c < 5; ++c) {
@@ -102,14 +102,13 @@ static void test_tv3_gate_frame(void)
     TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_FIRST(&trk, 0));
     TEST_ASSERT_EQUAL_UINT(4, TV_PAIR_COUNT(&trk, 0));
     TEST_ASSERT_EQUAL_UINT(1, TV_ALL_AMP(&trk, 0));
-    TV_ASSERT_REAL(9.210340372, trk.gamma);    /* TV3 gamma */
+    TV_ASSERT_REAL(9.210340372, TV_GAMMA(&trk));    /* TV3 gamma */
     TV_ASSERT_REAL(291.4001257, TV_GATE_AREA(&trk, 0)); /* TV3 V_G */
     for (k = 0; k < 4; ++k) {
-        const mtt_pair *pp = &trk.pairs[k];
-        TEST_ASSERT_EQUAL_UINT(0, pp->track);
-        TEST_ASSERT_EQUAL_UINT(want_meas[k], pp->meas);
+        TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_TRACK(&trk, k));
+        TEST_ASSERT_EQUAL_UINT(want_meas[k], TV_PAIR_MEAS(&trk, k));
         TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], tv_pair_d2(&trk, (uint16_t)k), "TV3 d2");
-        TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]], pp->p, "TV3 p");
+        TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]], TV_PAIR_P(&trk, k), "TV3 p");
     }
     /* CSR: each gated measurement lists its one pair, c4 none. */
     TEST_ASSERT_EQUAL_UINT(0, TV_MP_FIRST(&trk, 0));
@@ -125,12 +124,12 @@ static void test_tv3_gate_frame(void)
 static void test_gate_frame_has_all_amp(void)
 {
     tv3_tracker();
-    trk.meas[2].has_amp = 0;
+    TV_HAS_AMP(&trk, 2) = 0;
     mtt_gate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(0, TV_ALL_AMP(&trk, 0));
     /* An ungated measurement without amplitude does not matter (c4). */
     tv3_tracker();
-    trk.meas[3].has_amp = 0;
+    TV_HAS_AMP(&trk, 3) = 0;
     mtt_gate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(1, TV_ALL_AMP(&trk, 0));
 }
@@ -153,7 +152,7 @@ static void test_gate_bound_is_inclusive(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     tv_init(&trk, &p);
     (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.5));
-    trk.gamma = MTT_R(4.0);
+    TV_GAMMA(&trk) = MTT_R(4.0);
     (void)tv_add_meas(&trk, MTT_R(2.0), MTT_R(0.0), MTT_R(1.0), 1);   /* d2 = 4: in */
     (void)tv_add_meas(&trk, MTT_R(0.0), MTT_R(-2.0), MTT_R(1.0), 1);  /* d2 = 4: in */
     (void)tv_add_meas(&trk, MTT_R(2.0001), MTT_R(0.0), MTT_R(1.0), 1); /* out */
@@ -194,8 +193,8 @@ static void test_tv8_two_track_gate_frame(void)
         TV_ASSERT_REAL_MSG(pv[k], TV_PAIR_P(&trk, k), "TV8 p");
     }
     /* TV8 ungated: T1 z3 d2 = 11.79272727, T2 z1 d2 = 14.59322034 > gamma */
-    TV_ASSERT_REAL(11.79272727, mtt_mahal2(trk.tf[0].Si, MTT_R(6.8), MTT_R(2.5)));
-    TV_ASSERT_REAL(14.59322034, mtt_mahal2(trk.tf[1].Si, MTT_R(-6.5), MTT_R(-0.5)));
+    TV_ASSERT_REAL(11.79272727, mtt_mahal2(TV_SI(&trk, 0), MTT_R(6.8), MTT_R(2.5)));
+    TV_ASSERT_REAL(14.59322034, mtt_mahal2(TV_SI(&trk, 1), MTT_R(-6.5), MTT_R(-0.5)));
     TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_FIRST(&trk, 0));
     TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_COUNT(&trk, 0));
     TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_FIRST(&trk, 1));

@@ -115,11 +115,11 @@ static void test_tracker_prank_table(void)
     p.snr_rho = MTT_R(3.0);
     tv_init(&trk, &p);
 #if MTT_MAX_GATED >= 5
-    TV_ASSERT_VEC(w5, &trk.prank[MTT_PRANK_ROW(5)], 5);
+    TV_ASSERT_VEC(w5, &TV_PRANK(&trk, MTT_PRANK_ROW(5)), 5);
 #endif
-    TV_ASSERT_REAL(1.0, trk.prank[MTT_PRANK_ROW(1)]); /* TV4 m = 1 */
-    TV_ASSERT_REAL(0.7111111111, trk.prank[MTT_PRANK_ROW(3)]); /* TV4 m = 3, rho = 3 */
-    TV_ASSERT_REAL(0.1111111111, trk.prank[MTT_PRANK_ROW(3) + 2u]);
+    TV_ASSERT_REAL(1.0, TV_PRANK(&trk, MTT_PRANK_ROW(1))); /* TV4 m = 1 */
+    TV_ASSERT_REAL(0.7111111111, TV_PRANK(&trk, MTT_PRANK_ROW(3))); /* TV4 m = 3, rho = 3 */
+    TV_ASSERT_REAL(0.1111111111, TV_PRANK(&trk, MTT_PRANK_ROW(3) + 2u));
 }
 
 /* ---- TV5 ---- */
@@ -171,11 +171,11 @@ static void tv5_setup(struct tv5 *t)
     for (j = 0; j < 3; ++j) {
         mtt_real d2 = mtt_mahal2(t->Si, tv5_z[j][0] - t->xp[0], tv5_z[j][1] - t->xp[1]);
         TV_ASSERT_REAL_MSG(tv5_d2[j], d2, "TV5 d2");
-        t->c[j].p = mtt_gate_likelihood(d2, t->det, PG);
-        TV_ASSERT_REAL_MSG(tv5_p[j], t->c[j].p, "TV5 p");
-        t->c[j].lam = LAMBDA;
-        t->c[j].amp = tv5_amp[j];
-        t->c[j].idx = (uint16_t)j;
+        TV_CAND_P(&t->c[j]) = mtt_gate_likelihood(d2, t->det, PG);
+        TV_ASSERT_REAL_MSG(tv5_p[j], TV_CAND_P(&t->c[j]), "TV5 p");
+        TV_CAND_LAM(&t->c[j]) = LAMBDA;
+        TV_CAND_AMP(&t->c[j]) = tv5_amp[j];
+        TV_CAND_IDX(&t->c[j]) = (uint16_t)j;
     }
 }
 
@@ -234,9 +234,9 @@ static void test_rank_ties_lower_index_stronger(void)
     mtt_real prank[3], beta[3], L[3];
     uint8_t rank[3];
     tv5_setup(&t);
-    t.c[0].amp = MTT_R(95.0);
-    t.c[1].amp = MTT_R(95.0);
-    t.c[2].amp = MTT_R(95.0);
+    TV_CAND_AMP(&t.c[0]) = MTT_R(95.0);
+    TV_CAND_AMP(&t.c[1]) = MTT_R(95.0);
+    TV_CAND_AMP(&t.c[2]) = MTT_R(95.0);
     mtt_ihpda_prank(3, MTT_R(3.0), prank);
     mtt_ihpda_betas(PD, PG, t.vg, prank, t.c, 3, beta, L, rank);
     TEST_ASSERT_EQUAL_UINT8(1, rank[0]);
@@ -252,7 +252,7 @@ static void test_tv5_m1_any_rho_equals_ipda(void)
     const mtt_real lam[1] = {LAMBDA};
     mtt_real p1[1];
     tv5_setup(&t);
-    p1[0] = t.c[0].p;
+    p1[0] = TV_CAND_P(&t.c[0]);
     mtt_ihpda_prank(1, MTT_R(0.0), pr0);
     mtt_ihpda_prank(1, MTT_R(3.0), pr3);
     mtt_ihpda_betas(PD, PG, t.vg, pr0, t.c, 1, beta, L, NULL);
@@ -289,7 +289,7 @@ static void test_tv5_rho0_equivalence(void)
         p[j] = MTT_R(1.0) / t.vg;
         lam[j] = LAMBDA;
     }
-    p[0] = t.c[0].p;
+    p[0] = TV_CAND_P(&t.c[0]);
     tv_ipda_betas(PD, PG, p, lam, 3, bp, &b0, &Lp);
     TV_ASSERT_REAL(9.92672424, Lp);
 }
@@ -343,9 +343,9 @@ static void tv5_tracker(mtt_assoc mode)
     p.clutter_density = LAMBDA;
     p.snr_rho = MTT_R(3.0);
     tv_init(&trk, &p);
-    trk.R[0] = tv5_R[0];
-    trk.R[1] = tv5_R[1];
-    trk.R[2] = tv5_R[2];
+    TV_R(&trk)[0] = tv5_R[0];
+    TV_R(&trk)[1] = tv5_R[1];
+    TV_R(&trk)[2] = tv5_R[2];
     tv5_setup(&t);
     (void)tv_add_track_xp(&trk, t.xp, t.Pp, MTT_R(0.6));
     for (j = 0; j < 3; ++j) {
@@ -407,7 +407,7 @@ static void test_row_missing_amplitude_uses_rho0(void)
      * then the TV5 rho = 0 value 9.92672424. */
     int16_t best;
     tv5_tracker(MTT_ASSOC_IHPDA);
-    trk.meas[2].has_amp = 0;
+    TV_HAS_AMP(&trk, 2) = 0;
     TV_ALL_AMP(&trk, 0) = 0;
     (void)mtt_ihpda_row(&trk, 0, 0, -1, 1, &best);
     TV_ASSERT_REAL(9.92672424, TV_PAIR_L(&trk, 0)); /* TV5 rho = 0 sub-case */

@@ -288,17 +288,17 @@ static void test_ihpda_split(void)
     mtt_real prank[3], beta[3], L[3], pdm, mu[2], b0j[2], bj[MTT_MAX_MODELS][MTT_MAX_GATED];
     int i;
     memset(c, 0, sizeof c);
-    c[0].p = mtt_imm_meas_mix(2, g_cb, g_pd, ps, &pdm); /* selected: the strongest */
-    c[0].amp = MTT_R(5.0);
-    c[1].p = MTT_R(0.003);
-    c[1].amp = MTT_R(1.0);
-    c[2].p = MTT_R(0.001);
-    c[2].amp = MTT_R(2.0);
+    TV_CAND_P(&c[0]) = mtt_imm_meas_mix(2, g_cb, g_pd, ps, &pdm); /* selected: the strongest */
+    TV_CAND_AMP(&c[0]) = MTT_R(5.0);
+    TV_CAND_P(&c[1]) = MTT_R(0.003);
+    TV_CAND_AMP(&c[1]) = MTT_R(1.0);
+    TV_CAND_P(&c[2]) = MTT_R(0.001);
+    TV_CAND_AMP(&c[2]) = MTT_R(2.0);
     for (i = 0; i < 3; ++i) {
-        c[i].lam = MTT_R(1e-3);
-        c[i].idx = (uint16_t)i;
+        TV_CAND_LAM(&c[i]) = MTT_R(1e-3);
+        TV_CAND_IDX(&c[i]) = (uint16_t)i;
     }
-    TV_ASSERT_REAL(0.0178, c[0].p);
+    TV_ASSERT_REAL(0.0178, TV_CAND_P(&c[0]));
     mtt_ihpda_prank(3, MTT_R(1.0), prank);
     TV_ASSERT_REAL(0.5333333333, prank[0]);
     mtt_ihpda_betas(pdm, G_PG, MTT_R(400.0), prank, c, 3, beta, L, NULL);

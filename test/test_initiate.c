@@ -26,10 +26,10 @@ static mtt_mstore ms(mtt_real x, mtt_real y, mtt_real amp, int has_amp)
 {
     mtt_mstore m;
     memset(&m, 0, sizeof m);
-    m.x = x;
-    m.y = y;
-    m.amp = amp;
-    m.has_amp = (uint8_t)(has_amp != 0);
+    TV_REC_X(&m) = x;
+    TV_REC_Y(&m) = y;
+    TV_REC_AMP(&m) = amp;
+    TV_REC_HAS_AMP(&m) = (uint8_t)(has_amp != 0);
     return m;
 }
 
@@ -81,16 +81,16 @@ static void test_tv10_velocity_gate(void)
     b = ms(MTT_R(14.0), MTT_R(17.0), MTT_R(0.0), 0);
     TEST_ASSERT_EQUAL_INT(1, mtt_init_pair_ok(&trk, &a, &b, MTT_R(0.5))); /* TV10 case 2: 5 <= 6 */
     /* the circle's bound is inclusive: |d| = 5 with vmax dT = 10 * 0.5 = 5 exactly */
-    trk.par.vmax = MTT_R(10.0);
+    TV_PAR(&trk).vmax = MTT_R(10.0);
     TEST_ASSERT_EQUAL_INT(1, mtt_init_pair_ok(&trk, &a, &b, MTT_R(0.5)));
-    trk.par.vmax = MTT_R(9.9);
+    TV_PAR(&trk).vmax = MTT_R(9.9);
     TEST_ASSERT_EQUAL_INT(0, mtt_init_pair_ok(&trk, &a, &b, MTT_R(0.5)));
 }
 
 static void run_initiate(mtt_real ax, mtt_real ay, mtt_real bx, mtt_real by, mtt_real dt)
 {
-    trk.n_prev = 0;
-    trk.prev[trk.n_prev++] = ms(ax, ay, MTT_R(0.0), 0);
+    TV_N_PREV(&trk) = 0;
+    TV_PREV(&trk, TV_N_PREV(&trk)++) = ms(ax, ay, MTT_R(0.0), 0);
     TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, bx, by, MTT_R(0.0), 0);
     mtt_initiate_frame(&trk, dt);
@@ -107,9 +107,9 @@ static void test_tv10_initiate_frame(void)
     TV_ASSERT_MAT4(tv10_P1, TV_P(&trk, 0));
     TV_ASSERT_REAL(0.1, TV_EXISTENCE(&trk, 0)); /* existence_init default 0.1 (S0) */
     TEST_ASSERT_EQUAL_UINT(0, TV_CONFIRMED(&trk, 0));
-    TEST_ASSERT_EQUAL_UINT(1, TV_TRACK(&trk, 0)->born);
+    TEST_ASSERT_EQUAL_UINT(1, TV_BORN(&trk, 0));
     TEST_ASSERT_EQUAL_UINT(1, TV_USED(&trk, 0));   /* started a track */
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);          /* so not in U_{k-1} next frame */
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_PREV(&trk));          /* so not in U_{k-1} next frame */
     TEST_ASSERT_EQUAL_UINT(1, TV_STATS(&trk).last.births);
 
     init_with(MTT_R(2.0), MTT_R(3.0), MTT_R(12.0));
@@ -121,24 +121,24 @@ static void test_tv10_initiate_frame(void)
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(150.0), MTT_R(240.0), MTT_R(1.0));
     TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));        /* TV10 case 3: initiate = false */
-    TEST_ASSERT_EQUAL_UINT(1, trk.n_prev);          /* z_k is kept for the next frame */
-    TV_ASSERT_REAL(150.0, trk.prev[0].x);
+    TEST_ASSERT_EQUAL_UINT(1, TV_N_PREV(&trk));          /* z_k is kept for the next frame */
+    TV_ASSERT_REAL(150.0, TV_PREV_X(&trk, 0));
 }
 
 static void test_initiate_skips_used_and_disabled(void)
 {
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
-    trk.n_prev = 0;
-    trk.prev[trk.n_prev++] = ms(MTT_R(100.0), MTT_R(200.0), MTT_R(0.0), 0);
+    TV_N_PREV(&trk) = 0;
+    TV_PREV(&trk, TV_N_PREV(&trk)++) = ms(MTT_R(100.0), MTT_R(200.0), MTT_R(0.0), 0);
     TV_N_MEAS(&trk) = 0;
     (void)tv_add_meas(&trk, MTT_R(130.0), MTT_R(190.0), MTT_R(0.0), 0);
     TV_USED(&trk, 0) = 1; /* assigned to a track: not in U_k */
     mtt_initiate_frame(&trk, MTT_R(1.0));
     TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
-    TEST_ASSERT_EQUAL_UINT(0, trk.n_prev);
+    TEST_ASSERT_EQUAL_UINT(0, TV_N_PREV(&trk));
 
     init_with(MTT_R(1.0), MTT_R(1.0), MTT_R(60.0));
-    trk.par.initiate = 0;
+    TV_PAR(&trk).initiate = 0;
     run_initiate(MTT_R(100.0), MTT_R(200.0), MTT_R(130.0), MTT_R(190.0), MTT_R(1.0));
     TEST_ASSERT_EQUAL_UINT(0, TV_N_TRACKS(&trk));
 }
@@ -224,7 +224,7 @@ static void test_tv12_intensity_gate_radius(void)
     p.init_gate = MTT_INIT_GATE_INTENSITY;
     p.vmax = MTT_R(1.0); /* the vmax circle would reject everything below */
     tv_init(&trk, &p);
-    TV_ASSERT_REAL(9.0, trk.gamma);
+    TV_ASSERT_REAL(9.0, TV_GAMMA(&trk));
     a = ms(MTT_R(500.0), MTT_R(300.0), MTT_R(200.0), 1);
     for (k = 0; k < 4; ++k) {
         b = ms((mtt_real)(500.0 + 0.999 * radius * dir[k][0]),
@@ -235,7 +235,7 @@ static void test_tv12_intensity_gate_radius(void)
         TEST_ASSERT_EQUAL_INT_MESSAGE(0, mtt_init_pair_ok(&trk, &a, &b, MTT_R(1.0)), "outside radius");
     }
     /* Without amplitude on z_(k-1) the vmax circle applies (vmax dT = 1). */
-    a.has_amp = 0;
+    TV_REC_HAS_AMP(&a) = 0;
     b = ms(MTT_R(500.5), MTT_R(300.0), MTT_R(0.0), 0);
     TEST_ASSERT_EQUAL_INT(1, mtt_init_pair_ok(&trk, &a, &b, MTT_R(1.0)));
     b = ms(MTT_R(550.0), MTT_R(300.0), MTT_R(0.0), 0);

@@ -145,9 +145,9 @@ static void tv6_tracker(mtt_real clutter_density)
     p.pg = PG;
     p.clutter_density = clutter_density;
     tv_init(&trk, &p);
-    trk.R[0] = tv5_R[0];
-    trk.R[1] = tv5_R[1];
-    trk.R[2] = tv5_R[2];
+    TV_R(&trk)[0] = tv5_R[0];
+    TV_R(&trk)[1] = tv5_R[1];
+    TV_R(&trk)[2] = tv5_R[2];
     tv5_setup(&t);
     (void)tv_add_track_xp(&trk, t.xp, t.Pp, MTT_R(0.6));
     for (j = 0; j < 3; ++j) {

@@ -36,29 +36,28 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
     TV_N_TRACKS(&trk) = (uint16_t)n;
     TV_N_MEAS(&trk) = (uint16_t)m;
     for (j = 0; j < m; ++j) {
-        trk.meas[j].x = (mtt_real)j;
-        trk.meas[j].src = (uint32_t)j;
+        TV_MEAS_X(&trk, j) = (mtt_real)j;
+        TV_MEAS_SRC(&trk, j) = (uint32_t)j;
     }
     TV_N_PAIRS(&trk) = 0;
     for (t = 0; t < n; ++t) {
-        mtt_track_frame *tf = &trk.tf[t];
-        memset(tf, 0, sizeof *tf);
-        tf->valid = 1;
-        tf->assigned = -1;
-        tf->best = -1;
-        tf->ex_pred = (pbar != NULL) ? (mtt_real)pbar[t] : MTT_R(1.0);
-        tf->lambda = MTT_R(1.0);
-        tf->pair_first = TV_N_PAIRS(&trk);
+        memset(&TV_FRAME(&trk, t), 0, sizeof TV_FRAME(&trk, t));
+        TV_VALID(&trk, t) = 1;
+        TV_ASSIGNED(&trk, t) = -1;
+        TV_BEST(&trk, t) = -1;
+        TV_EX_PRED(&trk, t) = (pbar != NULL) ? (mtt_real)pbar[t] : MTT_R(1.0);
+        TV_LAMBDA(&trk, t) = MTT_R(1.0);
+        TV_PAIR_FIRST(&trk, t) = TV_N_PAIRS(&trk);
         for (j = 0; j < m; ++j) {
             if (a[t * m + j] > 0.0) {
-                mtt_pair *pp = &trk.pairs[TV_N_PAIRS(&trk)++];
-                memset(pp, 0, sizeof *pp);
-                pp->track = (uint16_t)t;
-                pp->meas = (uint16_t)j;
-                pp->lam = MTT_R(1.0);
-                pp->p = (mode == MTT_ASSOC_JIPDA) ? (mtt_real)a[t * m + j]
+                const uint16_t kp = TV_N_PAIRS(&trk)++;
+                memset(&TV_PAIR(&trk, kp), 0, sizeof TV_PAIR(&trk, kp));
+                TV_PAIR_TRACK(&trk, kp) = (uint16_t)t;
+                TV_PAIR_MEAS(&trk, kp) = (uint16_t)j;
+                TV_PAIR_LAM(&trk, kp) = MTT_R(1.0);
+                TV_PAIR_P(&trk, kp) = (mode == MTT_ASSOC_JIPDA) ? (mtt_real)a[t * m + j]
                                                   : (mtt_real)(a[t * m + j] / PG_TV); /* A = PG p */
-                tf->pair_count++;
+                TV_PAIR_COUNT(&trk, t)++;
             }
         }
     }
@@ -78,7 +77,7 @@ static void problem(mtt_assoc mode, int n, int m, const double *a, double B, con
     mtt_jpda_weights(&trk);
     if (!(B > 0.0) && mode != MTT_ASSOC_JIPDA) {
         for (t = 0; t < n; ++t) {
-            TV_JPDA(&trk).tb[t] = MTT_R(0.0);
+            TV_JP_TB(&trk, t) = MTT_R(0.0);
         }
     }
 }
@@ -115,9 +114,9 @@ static void test_tv13_cheap_raw(void)
     static const double r1[3] = {0.5555555556, 0.2307692308, 0}, r2[3] = {0, 0.4, 0.2857142857};
     problem(MTT_ASSOC_CHEAP_JPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_UINT16(1u, TV_N_CLUSTERS(&trk));
-    TV_ASSERT_REAL(0.8, TV_JPDA(&trk).pa[0] + TV_JPDA(&trk).pa[1]); /* TV13 T_1 */
-    TV_ASSERT_REAL(0.6, TV_JPDA(&trk).pa[2] + TV_JPDA(&trk).pa[3]); /* TV13 T_2 */
-    TV_ASSERT_REAL(0.7, TV_JPDA(&trk).pa[1] + TV_JPDA(&trk).pa[2]); /* TV13 M_2 */
+    TV_ASSERT_REAL(0.8, TV_JP_PA(&trk, 0) + TV_JP_PA(&trk, 1)); /* TV13 T_1 */
+    TV_ASSERT_REAL(0.6, TV_JP_PA(&trk, 2) + TV_JP_PA(&trk, 3)); /* TV13 T_2 */
+    TV_ASSERT_REAL(0.7, TV_JP_PA(&trk, 1) + TV_JP_PA(&trk, 2)); /* TV13 M_2 */
     mtt_cheap_jpda(&trk, 0, 0);
     assert_row(0, 3, 0.1111111111, r1, "TV13 Cheap raw");
     assert_row(1, 3, 0.1428571429, r2, "TV13 Cheap raw");
@@ -146,7 +145,8 @@ static void test_tv13_suboptimal(void)
     mtt_subopt_jpda(&trk, 0, 0); /* constant B */
     for (s = 0; s < 2; ++s) {
         for (j = 0; j < 3; ++j) {
-            double n_sj = (TV_JPDA(&trk).arg1[s] == j) ? (double)TV_JPDA(&trk).max2[s] : (double)TV_JPDA(&trk).max1[s];
+            double n_sj = (TV_JP_ARG1(&trk, s) == j) ? (double)TV_JP_MAX2(&trk, s)
+                                                     : (double)TV_JP_MAX1(&trk, s);
             TV_ASSERT_REAL_MSG(N[s][j], n_sj, "TV13 N[s][j]");
             /* D = beta * B / beta_0 (constant B) */
             TV_ASSERT_REAL_MSG(D[s][j], beta(s, j) * 0.1 / (double)TV_BETA0(&trk, s), "TV13 D");
@@ -156,8 +156,8 @@ static void test_tv13_suboptimal(void)
     assert_row(1, 3, 0.25, c2, "TV13 Suboptimal constant B");
     problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
     mtt_subopt_jpda(&trk, 0, 1); /* library default B_1 = 0.04, B_2 = 0.05 */
-    TV_ASSERT_REAL(0.04, 0.1 * (double)TV_JPDA(&trk).max1[1]); /* TV13 B_1 */
-    TV_ASSERT_REAL(0.05, 0.1 * (double)TV_JPDA(&trk).max1[0]); /* TV13 B_2 */
+    TV_ASSERT_REAL(0.04, 0.1 * (double)TV_JP_MAX1(&trk, 1)); /* TV13 B_1 */
+    TV_ASSERT_REAL(0.05, 0.1 * (double)TV_JP_MAX1(&trk, 0)); /* TV13 B_2 */
     assert_row(0, 3, 0.1333333333, p1, "TV13 Suboptimal B_t");
     assert_row(1, 3, 0.1428571429, p2, "TV13 Suboptimal B_t");
 }
@@ -172,11 +172,11 @@ static void test_tv13_exact_jpda_events(void)
     int e;
     problem(MTT_ASSOC_JPDA, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(8u, TV_JPDA(&trk).n_events); /* TV13: 8 feasible events */
-    sc = (double)TV_JPDA(&trk).scale[0] * (double)TV_JPDA(&trk).scale[1]; /* rows are scaled */
+    TEST_ASSERT_EQUAL_UINT32(8u, TV_JP_N_EVENTS(&trk)); /* TV13: 8 feasible events */
+    sc = (double)TV_JP_SCALE(&trk, 0) * (double)TV_JP_SCALE(&trk, 1); /* rows are scaled */
     for (e = 0; e < 8; ++e) {
-        TV_ASSERT_REAL_MSG(w[e], (double)TV_JPDA(&trk).ev_w[e] * sc, "TV13 event weight");
-        total += (double)TV_JPDA(&trk).ev_w[e] * sc;
+        TV_ASSERT_REAL_MSG(w[e], (double)TV_JP_EV_W(&trk, e) * sc, "TV13 event weight");
+        total += (double)TV_JP_EV_W(&trk, e) * sc;
     }
     TV_ASSERT_REAL(0.51, total); /* TV13 total weight */
     assert_row(0, 3, 0.137254902, r1, "TV13 exact JPDA");
@@ -188,7 +188,7 @@ static void test_tv13_jpda_star_equals_jpda_here(void)
     static const double r1[3] = {0.6862745098, 0.1764705882, 0};
     problem(MTT_ASSOC_JPDA_STAR, 2, 3, A13, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(8u, TV_JPDA(&trk).n_kept); /* TV13: JPDA* prunes nothing here */
+    TEST_ASSERT_EQUAL_UINT32(8u, TV_JP_N_KEPT(&trk)); /* TV13: JPDA* prunes nothing here */
     assert_row(0, 3, 0.137254902, r1, "TV13 JPDA*");
 }
 
@@ -207,7 +207,7 @@ static void test_tv13_nnjpda(void)
 static void test_nnjpda_threshold(void)
 {
     problem(MTT_ASSOC_NNJPDA, 2, 3, A13, 0.1, NULL);
-    trk.par.nnjpda_threshold = MTT_R(0.5);
+    TV_PAR(&trk).nnjpda_threshold = MTT_R(0.5);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
     mtt_nnjpda_cluster(&trk, 0);
     TEST_ASSERT_EQUAL_UINT16(0u, TV_PAIR_MEAS(&trk, TV_ASSIGNED(&trk, 0))); /* 0.686 >= 0.5 */
@@ -223,14 +223,14 @@ static void test_tv13_2x2_jpda_and_star(void)
     static const double s1[2] = {0.1408450704, 0.6197183099}, s2[2] = {0.6338028169, 0.08450704225};
     problem(MTT_ASSOC_JPDA, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-    TEST_ASSERT_EQUAL_UINT32(7u, TV_JPDA(&trk).n_events); /* TV13: JPDA 7 events */
+    TEST_ASSERT_EQUAL_UINT32(7u, TV_JP_N_EVENTS(&trk)); /* TV13: JPDA 7 events */
     assert_row(0, 2, 0.1683168317, j1, "TV13 2x2 JPDA");
     assert_row(1, 2, 0.198019802, j2, "TV13 2x2 JPDA");
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(6u, TV_JPDA(&trk).n_kept); /* TV13: 6 kept */
+    TEST_ASSERT_EQUAL_UINT32(6u, TV_JP_N_KEPT(&trk)); /* TV13: 6 kept */
     /* TV13: (T1->z1, T2->z2), the 5th event in enumeration order, is pruned. */
-    TEST_ASSERT_EQUAL_INT(0, (TV_JPDA(&trk).ev_keep[0] >> 4) & 1);
+    TEST_ASSERT_EQUAL_INT(0, (TV_JP_EV_KEEP(&trk, 0) >> 4) & 1);
     assert_row(0, 2, 0.2394366197, s1, "TV13 2x2 JPDA*");
     assert_row(1, 2, 0.2816901408, s2, "TV13 2x2 JPDA*");
 }
@@ -241,9 +241,9 @@ static void test_jpda_star_pruning(void)
 {
     static const double s1[2] = {0.05 / 0.315, 0.22 / 0.315}, s2[2] = {0.225 / 0.315, 0.0};
     problem(MTT_ASSOC_JPDA_STAR, 2, 2, A22, 0.1, NULL);
-    trk.par.jpda_star_threshold = MTT_R(0.1);
+    TV_PAR(&trk).jpda_star_threshold = MTT_R(0.1);
     TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_STAR));
-    TEST_ASSERT_EQUAL_UINT32(4u, TV_JPDA(&trk).n_kept);
+    TEST_ASSERT_EQUAL_UINT32(4u, TV_JP_N_KEPT(&trk));
     assert_row(0, 2, 0.045 / 0.315, s1, "JPDA* pruned");
     assert_row(1, 2, 0.09 / 0.315, s2, "JPDA* pruned");
 }
@@ -324,7 +324,7 @@ static void test_tv13_event_counts(void)
     for (c = 0; c < 4; ++c) {
         problem(MTT_ASSOC_JPDA, nm[c][0], nm[c][1], a, 0.1, NULL);
         TEST_ASSERT_EQUAL_INT(0, mtt_jpda_exact(&trk, 0, MTT_JPDA_EXACT));
-        TEST_ASSERT_EQUAL_UINT32(count[c], TV_JPDA(&trk).n_events);
+        TEST_ASSERT_EQUAL_UINT32(count[c], TV_JP_N_EVENTS(&trk));
     }
 }
 

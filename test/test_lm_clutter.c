@@ -63,14 +63,16 @@ static void test_tv8_lm_density(void)
     TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 0));
     TV_ASSERT_REAL(0.002, TV_LAMBDA(&trk, 1));
     for (k = 0; k < 4; ++k) {
-        const mtt_pair *pp = &trk.pairs[k];
         /* w = p Pt / (1 - Pt), so Pt = w / (p + w) (TV8 Ptilde) */
-        TV_ASSERT_REAL_MSG(tv8_ptilde[k], pp->w / (pp->p + pp->w), "TV8 Ptilde");
-        TV_ASSERT_REAL_MSG(tv8_p[k] * tv8_ptilde[k] / (1.0 - tv8_ptilde[k]), pp->w, "TV8 w");
-        TV_ASSERT_REAL_MSG(tv8_lamt[k], pp->lam, "TV8 lambda_tilde");
+        TV_ASSERT_REAL_MSG(tv8_ptilde[k],
+                           TV_PAIR_W(&trk, k) / (TV_PAIR_P(&trk, k) + TV_PAIR_W(&trk, k)),
+                           "TV8 Ptilde");
+        TV_ASSERT_REAL_MSG(tv8_p[k] * tv8_ptilde[k] / (1.0 - tv8_ptilde[k]), TV_PAIR_W(&trk, k),
+                           "TV8 w");
+        TV_ASSERT_REAL_MSG(tv8_lamt[k], TV_PAIR_LAM(&trk, k), "TV8 lambda_tilde");
     }
     for (j = 0; j < 3; ++j) {
-        TV_ASSERT_REAL_MSG(tv8_W[j], trk.wsum[j], "TV8 W_j");
+        TV_ASSERT_REAL_MSG(tv8_W[j], TV_WSUM(&trk, j), "TV8 W_j");
     }
 }
 
@@ -95,19 +97,19 @@ static void test_tv8_lm_ipda(void)
     tv8_tracker(MTT_ASSOC_LM_IPDA, MTT_R(0.002));
     mtt_clutter_frame(&trk, 1);
     for (t = 0; t < 2; ++t) {
-        const mtt_track_frame *tf = &trk.tf[t];
         mtt_real p[2], lam[2], b[2], b0, L;
         int j;
         for (j = 0; j < 2; ++j) {
-            p[j] = TV_PAIR_P(&trk, tf->pair_first + j);
-            lam[j] = TV_PAIR_LAM(&trk, tf->pair_first + j);
+            p[j] = TV_PAIR_P(&trk, TV_PAIR_FIRST(&trk, t) + j);
+            lam[j] = TV_PAIR_LAM(&trk, TV_PAIR_FIRST(&trk, t) + j);
         }
-        tv_ipda_betas(trk.par.pd, trk.par.pg, p, lam, 2, b, &b0, &L);
+        tv_ipda_betas(TV_PAR(&trk).pd, TV_PAR(&trk).pg, p, lam, 2, b, &b0, &L);
         TV_ASSERT_REAL_MSG(delta[t], MTT_R(1.0) - L, "TV8 LM-IPDA delta");
         TV_ASSERT_REAL_MSG(beta[2 * t], b[0], "TV8 LM-IPDA beta");
         TV_ASSERT_REAL_MSG(beta[2 * t + 1], b[1], "TV8 LM-IPDA beta");
         TV_ASSERT_REAL_MSG(beta0[t], b0, "TV8 LM-IPDA beta_0");
-        TV_ASSERT_REAL_MSG(ex[t], mtt_existence_update(tf->ex_pred, L), "TV8 LM-IPDA existence");
+        TV_ASSERT_REAL_MSG(ex[t], mtt_existence_update(TV_EX_PRED(&trk, t), L),
+                           "TV8 LM-IPDA existence");
     }
     /* The same through the update stage in lm-ipda mode. */
     mtt_associate_frame(&trk);
@@ -167,7 +169,7 @@ static void test_lm_many_tracks_uses_sum_minus_own(void)
     mtt_clutter_frame(&trk, 1);
     pt_ = 0.9 * 0.99 * 0.8;
     w = 0.03183372832 * pt_ / (1.0 - pt_); /* TV8 T1 z1 p */
-    TV_ASSERT_REAL(5.0 * w, trk.wsum[0]);
+    TV_ASSERT_REAL(5.0 * w, TV_WSUM(&trk, 0));
     for (t = 0; t < 5; ++t) {
         TV_ASSERT_REAL_MSG(0.002 + 4.0 * w, TV_PAIR_LAM(&trk, t), "lambda_tilde");
     }

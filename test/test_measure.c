@@ -80,8 +80,8 @@ static void test_exactly_max_valid_keeps_input_order(void)
             continue;
         }
         TEST_ASSERT_EQUAL_UINT32(i, tv_meas_src(&trk, (uint16_t)j));
-        TEST_ASSERT_EQUAL_FLOAT((float)i, (float)trk.meas[j].x);
-        TEST_ASSERT_EQUAL_FLOAT((float)((i * 37u) % 101u), (float)trk.meas[j].amp);
+        TEST_ASSERT_EQUAL_FLOAT((float)i, (float)TV_MEAS_X(&trk, j));
+        TEST_ASSERT_EQUAL_FLOAT((float)((i * 37u) % 101u), (float)TV_MEAS_AMP(&trk, j));
         ++j;
     }
     TEST_ASSERT_EQUAL_UINT32(MTT_MAX_MEAS, j);

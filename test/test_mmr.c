@@ -132,8 +132,8 @@ static void test_tv8_initial_beta_matrix(void)
         TV_ASSERT_REAL_MSG(delta[k], MTT_R(1.0) - TV_PAIR_L(&trk, k), "TV8 initial delta");
     }
     /* TV8: m = 2 for both rows, Prank = 0.8 (rank 1) and 0.2 (rank 2) */
-    TV_ASSERT_REAL(0.8, trk.prank[MTT_PRANK_ROW(2)]);
-    TV_ASSERT_REAL(0.2, trk.prank[MTT_PRANK_ROW(2) + 1u]);
+    TV_ASSERT_REAL(0.8, TV_PRANK(&trk, MTT_PRANK_ROW(2)));
+    TV_ASSERT_REAL(0.2, TV_PRANK(&trk, MTT_PRANK_ROW(2) + 1u));
 }
 
 static void test_tv8_mmr_with_recomputation(void)

@@ -4,6 +4,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 static mtt_tracker trk;
@@ -260,13 +261,13 @@ static void test_supported_and_unsupported_modes(void)
         if (st == MTT_OK) {
             TEST_ASSERT_NULL_MESSAGE(bad, msg);
             TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_OK, mtt_tracker_init(&trk, &p), msg);
-            TEST_ASSERT_TRUE(trk.magic == MTT_MAGIC);
+            TEST_ASSERT_TRUE(TV_MAGIC(&trk) == MTT_MAGIC);
         } else {
             TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_ERR_UNSUPPORTED, st, msg);
             TEST_ASSERT_EQUAL_STRING_MESSAGE("association", bad, msg);
             memset(&trk, 0, sizeof trk);
             TEST_ASSERT_EQUAL_INT_MESSAGE(MTT_ERR_UNSUPPORTED, mtt_tracker_init(&trk, &p), msg);
-            TEST_ASSERT_TRUE(trk.magic != MTT_MAGIC); /* left uninitialised */
+            TEST_ASSERT_TRUE(TV_MAGIC(&trk) != MTT_MAGIC); /* left uninitialised */
         }
     }
 }

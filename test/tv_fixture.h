@@ -21,6 +21,13 @@
 #define TV_N_MEAS(t) ((t)->n_meas)
 #define TV_N_PAIRS(t) ((t)->n_pairs)
 #define TV_N_CLUSTERS(t) ((t)->n_clusters)
+/* the tracker's working parameters, R = [r11, r12, r22], gate gamma, next
+ * track id, and the init mark */
+#define TV_PAR(t) ((t)->par)
+#define TV_R(t) ((t)->R)
+#define TV_GAMMA(t) ((t)->gamma)
+#define TV_NEXT_ID(t) ((t)->next_id)
+#define TV_MAGIC(t) ((t)->magic)
 /* gated pair k: track, measurement, p = N/PG, clutter density, LM weight,
  * beta and L of the row last computed */
 #define TV_PAIR_TRACK(t, k) ((t)->pairs[k].track)
@@ -30,6 +37,9 @@
 #define TV_PAIR_W(t, k) ((t)->pairs[k].w)
 #define TV_PAIR_BETA(t, k) ((t)->pairs[k].beta)
 #define TV_PAIR_L(t, k) ((t)->pairs[k].L)
+/* gated pair k as a whole (to clear it), and its amplitude ratio g */
+#define TV_PAIR(t, k) ((t)->pairs[k])
+#define TV_PAIR_G(t, k) ((t)->pairs[k].g)
 /* track i this frame: valid (S positive definite), its pairs, gate area,
  * clutter density, cluster, assigned pair, beta_0, updated existence */
 #define TV_VALID(t, i) ((t)->tf[i].valid)
@@ -42,6 +52,19 @@
 #define TV_ASSIGNED(t, i) ((t)->tf[i].assigned)
 #define TV_BETA0(t, i) ((t)->tf[i].beta0)
 #define TV_EX_POST(t, i) ((t)->tf[i].ex_post)
+/* track i this frame as a whole (to clear it), its prediction xp, Pp, the
+ * innovation S, S^-1, det S, gain K, predicted existence, best pair, and
+ * contest class */
+#define TV_FRAME(t, i) ((t)->tf[i])
+#define TV_XP(t, i) ((t)->tf[i].xp)
+#define TV_PP(t, i) ((t)->tf[i].Pp)
+#define TV_S(t, i) ((t)->tf[i].S)
+#define TV_SI(t, i) ((t)->tf[i].Si)
+#define TV_DET_S(t, i) ((t)->tf[i].det_s)
+#define TV_GAIN(t, i) ((t)->tf[i].K)
+#define TV_EX_PRED(t, i) ((t)->tf[i].ex_pred)
+#define TV_BEST(t, i) ((t)->tf[i].best)
+#define TV_CONTEST(t, i) ((t)->tf[i].contest)
 /* track i of the table */
 #define TV_TRACK(t, i) (&(t)->tracks[i])
 #define TV_X(t, i) ((t)->tracks[i].x)
@@ -50,17 +73,64 @@
 #define TV_CONFIRMED(t, i) ((t)->tracks[i].confirmed)
 #define TV_DEAD(t, i) ((t)->tracks[i].dead)
 #define TV_TRACK_MEAS(t, i) ((t)->tracks[i].meas)
+#define TV_TRACK_ID(t, i) ((t)->tracks[i].id)
+#define TV_BORN(t, i) ((t)->tracks[i].born)
 /* measurement j: used (assigned, selected or gated) this frame */
 #define TV_USED(t, j) ((t)->meas[j].used)
-/* the frame's counters, and the JPDA family's scratch (weights, events) */
+/* measurement j as a whole (to clear it), its position, amplitude, whether
+ * it has one, and its input index */
+#define TV_MEAS(t, j) ((t)->meas[j])
+#define TV_MEAS_X(t, j) ((t)->meas[j].x)
+#define TV_MEAS_Y(t, j) ((t)->meas[j].y)
+#define TV_MEAS_AMP(t, j) ((t)->meas[j].amp)
+#define TV_HAS_AMP(t, j) ((t)->meas[j].has_amp)
+#define TV_MEAS_SRC(t, j) ((t)->meas[j].src)
+/* W_j, the LM weight sum of measurement j */
+#define TV_WSUM(t, j) ((t)->wsum[j])
+/* last frame's unused measurements U_{k-1} (initiation): count, entry i */
+#define TV_N_PREV(t) ((t)->n_prev)
+#define TV_PREV(t, i) ((t)->prev[i])
+#define TV_PREV_X(t, i) ((t)->prev[i].x)
+/* merge candidates: count, and pair i (tracks a < b, distance d2) */
+#define TV_N_MERGE(t) ((t)->n_merge)
+#define TV_MERGE_A(t, i) ((t)->merge[i].a)
+#define TV_MERGE_B(t, i) ((t)->merge[i].b)
+#define TV_MERGE_D2(t, i) ((t)->merge[i].d2)
+/* IHPDA rank weights: row MTT_PRANK_ROW(m) holds m entries */
+#define TV_PRANK(t, r) ((t)->prank[r])
+/* the frame's counters */
 #define TV_STATS(t) ((t)->stats)
-#define TV_JPDA(t) ((t)->base.jp)
+/* JPDA family scratch: A of pair k, B of track i, Suboptimal JPDA's two
+ * largest A of row i and the measurement of the largest, row scale,
+ * enumerated and kept events, weight of event e, kept bit byte q */
+#define TV_JP_PA(t, k) ((t)->base.jp.pa[k])
+#define TV_JP_TB(t, i) ((t)->base.jp.tb[i])
+#define TV_JP_MAX1(t, i) ((t)->base.jp.max1[i])
+#define TV_JP_MAX2(t, i) ((t)->base.jp.max2[i])
+#define TV_JP_ARG1(t, i) ((t)->base.jp.arg1[i])
+#define TV_JP_SCALE(t, i) ((t)->base.jp.scale[i])
+#define TV_JP_N_EVENTS(t) ((t)->base.jp.n_events)
+#define TV_JP_N_KEPT(t) ((t)->base.jp.n_kept)
+#define TV_JP_EV_W(t, e) ((t)->base.jp.ev_w[e])
+#define TV_JP_EV_KEEP(t, q) ((t)->base.jp.ev_keep[q])
 /* clusters (CSR): tracks cl_list[cl_first[c] .. cl_first[c + 1]) */
 #define TV_CL_FIRST(t, c) ((t)->cl_first[c])
 #define TV_CL_LIST(t, q) ((t)->cl_list[q])
 /* pairs of measurement j (CSR): mp_list[mp_first[j] .. mp_first[j + 1]) */
 #define TV_MP_FIRST(t, j) ((t)->mp_first[j])
 #define TV_MP_LIST(t, x) ((t)->mp_list[x])
+/* records handed to a stage on their own: a measurement r (position,
+ * amplitude, whether it has one), an IHPDA candidate c (p, lambda,
+ * amplitude, measurement index), and the 2-D assignment's row of column c */
+#define TV_REC_X(r) ((r)->x)
+#define TV_REC_Y(r) ((r)->y)
+#define TV_REC_AMP(r) ((r)->amp)
+#define TV_REC_HAS_AMP(r) ((r)->has_amp)
+#define TV_CAND_P(c) ((c)->p)
+#define TV_CAND_LAM(c) ((c)->lam)
+#define TV_CAND_AMP(c) ((c)->amp)
+#define TV_CAND_IDX(c) ((c)->idx)
+#define TV_COL_ROW(ws, c) ((ws)->col_row[c])
 
 
 /* d^2 of gated pair k, as the gate computed it (the pair keeps only p). */
