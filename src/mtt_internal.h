@@ -53,6 +53,10 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
 void mtt_sym(mtt_cov P);
+/* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
+ * lower L, diagonal not written): 0, or -1 when a pivot is not positive
+ * and finite.  The one L D L' of the library (kalman.c). */
+int mtt_ldl(int n, mtt_cov A, mtt_cov L, mtt_state d);
 /* 1 when the symmetric P is positive definite with margin: every L D L'
  * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
 int mtt_cov_ok(mtt_cov P, mtt_real rel);

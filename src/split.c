@@ -31,36 +31,14 @@
 #define NS MTT_SPLIT_STATE
 #define QMAX 4 /* measurement size of the stacked model: 2 targets x 2 */
 
-/* A = L D L' of the leading n x n block (unit lower L).  Returns 0, or -1
- * when a pivot is not positive and finite. */
-static int ldl(int n, mtt_real A[][NS], mtt_real L[][NS], mtt_real d[])
-{
-    int i, j, k;
-    for (i = 0; i < n; ++i) {
-        mtt_real di = A[i][i];
-        for (j = 0; j < i; ++j) {
-            mtt_real s = A[i][j];
-            for (k = 0; k < j; ++k) {
-                s -= L[i][k] * L[j][k] * d[k];
-            }
-            L[i][j] = s / d[j];
-            di -= L[i][j] * s;
-        }
-        if (!(di > MTT_R(0.0)) || !mtt_isfinite(di)) {
-            return -1;
-        }
-        d[i] = di;
-        L[i][i] = MTT_R(1.0);
-    }
-    return 0;
-}
-
 /* Inverse of the symmetric positive definite q x q matrix S (q <= QMAX). */
-static int inv_spd(int q, mtt_real S[][NS], mtt_real Si[][QMAX])
+static int inv_spd(int q, mtt_cov S, mtt_real Si[][QMAX])
 {
-    mtt_real L[QMAX][NS], d[QMAX], y[QMAX];
+    mtt_cov L;
+    mtt_state d;
+    mtt_real y[QMAX];
     int i, k, c;
-    if (ldl(q, S, L, d) != 0) {
+    if (mtt_ldl(q, S, L, d) != 0) {
         return -1;
     }
     for (c = 0; c < q; ++c) {
@@ -136,7 +114,8 @@ static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_
                         mtt_real spread[][QMAX], mtt_real x[], mtt_real P[][NS],
                         mtt_real APA[][NS])
 {
-    mtt_real S[QMAX][NS], Si[QMAX][QMAX], M[QMAX][QMAX];
+    mtt_cov S; /* q x q used, q <= QMAX <= MTT_MAX_STATE */
+    mtt_real Si[QMAX][QMAX], M[QMAX][QMAX];
     mtt_real W[NS][QMAX], A[NS][NS], AP[NS][NS], C[NS][NS];
     const mtt_real w = MTT_R(1.0) - beta0;
     int i, k, a, b;
@@ -479,7 +458,9 @@ int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_re
 {
     const int n = (int)as->n;
     const int sel[QMAX] = {0, 1, n, n + 1};
-    mtt_real S[QMAX][NS], L[QMAX][NS], d[QMAX], Si[QMAX][QMAX], det = MTT_R(1.0);
+    mtt_cov S, L; /* QMAX x QMAX used */
+    mtt_state d;
+    mtt_real Si[QMAX][QMAX], det = MTT_R(1.0);
     int a, b;
     /* S^s = H^s Pps H^s' + R^s: the joint innovation covariance of the two
      * targets' measurements, with the cross block H P_12 H'. */
@@ -494,7 +475,7 @@ int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_re
         S[a + 1][a] += R[1];
         S[a + 1][a + 1] += R[2];
     }
-    if (ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, Si) != 0) {
+    if (mtt_ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, Si) != 0) {
         return -1;
     }
     for (a = 0; a < QMAX; ++a) {
@@ -690,7 +671,8 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
 int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
                        mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE])
 {
-    mtt_real B[2][NS][NS], L[NS][NS], d[NS];
+    mtt_cov B[2], L;
+    mtt_state d;
     int i, k, h;
     if (!n_ok(n)) {
         return -1;
@@ -704,7 +686,7 @@ int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mt
                 B[h][i][k] = MTT_R(0.5) * (Ps[o + i][o + k] + Ps[o + k][o + i]);
             }
         }
-        if (ldl(n, B[h], L, d) != 0) {
+        if (mtt_ldl((int)n, B[h], L, d) != 0) {
             return -1;
         }
     }
