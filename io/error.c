@@ -8,32 +8,34 @@
 
 const char *mtt_io_progname = "mtt-track";
 
-void mtt_io_error_at(const char *file, long line, const char *field, const char *fmt, ...)
+/* "PROG: FILE:[LINE:] [LABEL 'NAME':] message\n": the one layout of both. */
+static void report(const char *file, long line, const char *label, const char *name,
+                   const char *fmt, va_list ap)
 {
-    va_list ap;
     fprintf(stderr, "%s: %s:", mtt_io_progname, file);
     if (line > 0)
         fprintf(stderr, "%ld:", line);
-    if (field != NULL)
-        fprintf(stderr, " field '%s':", field);
+    if (name != NULL)
+        fprintf(stderr, " %s '%s':", label, name);
     fputc(' ', stderr);
-    va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
-    va_end(ap);
     fputc('\n', stderr);
+}
+
+void mtt_io_error_at(const char *file, long line, const char *field, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(file, line, "field", field, fmt, ap);
+    va_end(ap);
 }
 
 void mtt_io_error_key(const char *file, const char *key, const char *fmt, ...)
 {
     va_list ap;
-    fprintf(stderr, "%s: %s:", mtt_io_progname, file);
-    if (key != NULL)
-        fprintf(stderr, " key '%s':", key);
-    fputc(' ', stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    report(file, 0, "key", key, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
 }
 
 void mtt_io_error(const char *fmt, ...)

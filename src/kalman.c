@@ -182,7 +182,7 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 /* A = L D L' (unit lower L, its diagonal not written) of the leading
  * n x n block, without square roots: cheap on soft float.  Returns 0, or
  * -1 when a pivot d_i is not positive and finite. */
-int mtt_ldl(int n, mtt_cov A, mtt_cov L, mtt_state d)
+static int ldl(int n, mtt_cov A, mtt_cov L, mtt_state d)
 {
     int i, j, k;
     for (i = 0; i < n; ++i) {
@@ -203,6 +203,14 @@ int mtt_ldl(int n, mtt_cov A, mtt_cov L, mtt_state d)
     return 0;
 }
 
+/* The hot callers above and below use the static ldl with the constant
+ * MTT_STATE_N (the compiler specialises it, as before the split work
+ * needed an n); other files call this entry point. */
+int mtt_ldl(int n, mtt_cov A, mtt_cov L, mtt_state d)
+{
+    return ldl(n, A, L, d);
+}
+
 int mtt_cov_ok(mtt_cov P, mtt_real rel)
 {
     mtt_cov L;
@@ -211,7 +219,7 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
     /* d_i / P_ii is the share of state i's variance not explained by the
      * states before it: scale-free (the squared Cholesky pivots of the
      * correlation matrix). */
-    if (mtt_ldl(MTT_STATE_N, P, L, d) != 0) {
+    if (ldl(MTT_STATE_N, P, L, d) != 0) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -229,7 +237,7 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     mtt_state y = {MTT_R(0.0)}; /* zeroed for static analysis */
     mtt_real acc = MTT_R(0.0);
     int i, k;
-    if (mtt_ldl(MTT_STATE_N, A, L, d) != 0) {
+    if (ldl(MTT_STATE_N, A, L, d) != 0) {
         return -1;
     }
     /* b' A^-1 b = sum y_i^2 / d_i with L y = b: one forward substitution. */

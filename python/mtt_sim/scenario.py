@@ -173,13 +173,23 @@ def _check_keys(obj, allowed, source, where):
             _err(source, f"{where}.{k}" if where else k, "unknown key")
 
 
-def _num(obj, key, source, where, *, lo=None, hi=None, lo_open=False, required=True, integer=False):
+_ABSENT = object()
+
+
+def _lookup(obj, key, source, where, required):
+    """(full key path, value); value _ABSENT when the key is absent and optional."""
     full = f"{where}.{key}" if where else key
     if key not in obj:
         if required:
             _err(source, full, "missing")
+        return full, _ABSENT
+    return full, obj[key]
+
+
+def _num(obj, key, source, where, *, lo=None, hi=None, lo_open=False, required=True, integer=False):
+    full, v = _lookup(obj, key, source, where, required)
+    if v is _ABSENT:
         return None
-    v = obj[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)):
         _err(source, full, "must be a number")
     if integer and (not isinstance(v, int) and not float(v).is_integer()):
@@ -194,12 +204,9 @@ def _num(obj, key, source, where, *, lo=None, hi=None, lo_open=False, required=T
 
 
 def _pair(obj, key, source, where, *, increasing=False, positive=False, required=True):
-    full = f"{where}.{key}" if where else key
-    if key not in obj:
-        if required:
-            _err(source, full, "missing")
+    full, v = _lookup(obj, key, source, where, required)
+    if v is _ABSENT:
         return None
-    v = obj[key]
     if (not isinstance(v, list) or len(v) != 2
             or any(isinstance(a, bool) or not isinstance(a, (int, float)) or not math.isfinite(a) for a in v)):
         _err(source, full, "must be a list of two finite numbers")
