@@ -37,6 +37,7 @@ from mtt_sim import csvio, generate, metrics, runner, scenario
 ROWS = {
     "s0": ("lm-ihpda", ['tracker.lm_ihpda_variant="s0"']),
     "contest": ("lm-ihpda", ['tracker.lm_ihpda_variant="contest"']),
+    "joint": ("lm-ihpda", ['tracker.lm_ihpda_variant="joint"']),
     "contest-pure": ("lm-ihpda", ['tracker.lm_ihpda_variant="contest"', "tracker.amplitude_eta=0"]),
     "lm-ipda": ("lm-ipda", []),
     "jipda": ("jipda", []),

@@ -77,6 +77,11 @@ void mtt_merge_frame(mtt_tracker *trk)
                 if (!trk->tf[a].valid || !trk->tf[b].valid) {
                     continue;
                 }
+#ifdef MTT_EXP_NOMERGE
+                if (MTT_CONTESTED(&trk->tf[a]) && MTT_CONTESTED(&trk->tf[b])) {
+                    continue;
+                }
+#endif
                 if (mtt_merge_d2(&trk->tracks[a], &trk->tracks[b], &d2) == 0 && d2 < thr) {
                     add_cand(trk, d2, a, b);
                 }

@@ -121,7 +121,7 @@ void mtt_ihpda_final_frame(mtt_tracker *trk);
  * Constant 0 with MTT_WITH_CONTEST 0, so the compiler drops that code. */
 #define MTT_CONTEST_ON(trk)                                                                        \
     (MTT_WITH_CONTEST && (trk)->par.association == MTT_ASSOC_LM_IHPDA &&                           \
-     (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST)
+     (trk)->par.lm_ihpda_variant != MTT_LM_IHPDA_S0)
 
 /* ---- contest.c: the contest test of lm-ihpda contest (ALGORITHMS.md §10.4) ---- */
 /* tf.contest of a track: no LM-IPDA row this frame (its IHPDA row stands),
