@@ -400,7 +400,7 @@ static void usage(FILE *f)
             "  --modes L    comma list of association modes (default: every mode built in)\n"
             "  --det/--config  also replay a detections file and time its busiest frame\n"
             "  --json F     write the results as JSON\n"
-            "  --variant V  lm_ihpda_variant (s0, contest or joint) of every workload\n"
+            "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
             "               (default: s0 for dense, the config's for the replay)\n"
             "  --list-modes print the modes built into this library and exit\n"
             "  --motion M   cv (default) or imm (the default CV + CA models, or the\n"
@@ -442,8 +442,7 @@ int main(int argc, char **argv)
         } else if (i + 1 < argc && !strcmp(argv[i], "--variant")) {
             ++i;
             variant = !strcmp(argv[i], "s0") ? (int)MTT_LM_IHPDA_S0
-                      : !strcmp(argv[i], "contest") ? (int)MTT_LM_IHPDA_CONTEST
-                      : !strcmp(argv[i], "joint")   ? (int)MTT_LM_IHPDA_JOINT : -2;
+                      : !strcmp(argv[i], "contest") ? (int)MTT_LM_IHPDA_CONTEST : -2;
             if (variant == -2) {
                 fprintf(stderr, "mtt-bench: --variant must be s0 or contest\n");
                 return 2;

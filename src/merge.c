@@ -6,7 +6,8 @@
  * are processed by ascending d^2 (ties by track index); the survivor is the
  * smaller position-covariance trace (then higher existence, then lower
  * identity), keeps its state, takes the larger existence and the OR of the
- * confirmed flags. */
+ * confirmed flags.  With lm-ihpda contest, two tracks both contested this
+ * frame are no candidates (ALGORITHMS.md §10.4). */
 #include "mtt_internal.h"
 
 int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2)
@@ -77,11 +78,12 @@ void mtt_merge_frame(mtt_tracker *trk)
                 if (!trk->tf[a].valid || !trk->tf[b].valid) {
                     continue;
                 }
-#ifdef MTT_EXP_NOMERGE
+                /* lm-ihpda contest (ALGORITHMS.md §10.4): two tracks that both
+                 * took the mixture this frame are two targets meeting, not
+                 * one target tracked twice; merging them lost one. */
                 if (MTT_CONTESTED(&trk->tf[a]) && MTT_CONTESTED(&trk->tf[b])) {
                     continue;
                 }
-#endif
                 if (mtt_merge_d2(&trk->tracks[a], &trk->tracks[b], &d2) == 0 && d2 < thr) {
                     add_cand(trk, d2, a, b);
                 }

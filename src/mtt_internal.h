@@ -118,10 +118,12 @@ void mtt_ihpda_final_frame(mtt_tracker *trk);
 
 /* lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md §7.6, §10.4): the
  * amplitude ratio in p, the amplitude rows and the contest-aware update.
- * Constant 0 with MTT_WITH_CONTEST 0, so the compiler drops that code. */
+ * Not with motion imm: the contest update has no IMM form yet, so an IMM
+ * lm-ihpda runs [S0] whatever the variant.  Constant 0 with
+ * MTT_WITH_CONTEST 0, so the compiler drops that code. */
 #define MTT_CONTEST_ON(trk)                                                                        \
     (MTT_WITH_CONTEST && (trk)->par.association == MTT_ASSOC_LM_IHPDA &&                           \
-     (trk)->par.lm_ihpda_variant != MTT_LM_IHPDA_S0)
+     (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST && (trk)->par.motion != MTT_MOTION_IMM)
 
 /* ---- contest.c: the contest test of lm-ihpda contest (ALGORITHMS.md §10.4) ---- */
 /* tf.contest of a track: no LM-IPDA row this frame (its IHPDA row stands),

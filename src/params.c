@@ -91,7 +91,8 @@ mtt_status mtt_params_default(mtt_params *p)
     }
     memset(p, 0, sizeof *p);
     p->association = MTT_ASSOC_LM_IHPDA;
-    p->lm_ihpda_variant = MTT_LM_IHPDA_S0;
+    /* the contest-aware rule where it is built (ALGORITHMS.md §10.4), else [S0] */
+    p->lm_ihpda_variant = MTT_WITH_CONTEST ? MTT_LM_IHPDA_CONTEST : MTT_LM_IHPDA_S0;
     p->contest_beta = MTT_R(0.1);
     p->process_psd = MTT_R(5.0);
     p->meas_sigma[0] = MTT_R(1.0);
@@ -150,7 +151,7 @@ static const range_rule rules[MTT_RULE_COUNT] = {
     MTT_PARAM_ROWS(RULE, MTT_PARAM_NO_FLAG, MTT_PARAM_NO_ENUM)};
 
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
-const char *const mtt_lm_ihpda_variant_names[3] = {"s0", "contest", "joint"};
+const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
 const char *const mtt_motion_names[2] = {"cv", "imm"};
 const char *const mtt_model_names[2] = {"cv", "ca"};
 
@@ -221,13 +222,8 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
         st = MTT_ERR_UNSUPPORTED;
     }
-    if (bad == NULL && !MTT_WITH_CONTEST && p->lm_ihpda_variant != MTT_LM_IHPDA_S0) {
+    if (bad == NULL && !MTT_WITH_CONTEST && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST) {
         bad = "lm_ihpda_variant"; /* the contest variant, built with MTT_WITH_CONTEST 0 */
-        st = MTT_ERR_UNSUPPORTED;
-    }
-    if (bad == NULL && p->motion == MTT_MOTION_IMM && p->lm_ihpda_variant != MTT_LM_IHPDA_S0 &&
-        p->association == MTT_ASSOC_LM_IHPDA) {
-        bad = "lm_ihpda_variant"; /* the contest update has no IMM form yet (ALGORITHMS.md §10.4) */
         st = MTT_ERR_UNSUPPORTED;
     }
     if (bad == NULL) {

@@ -45,7 +45,7 @@ enum {
 /* The spellings of the enum keys, index = value (params.c). */
 extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
 extern const char *const mtt_init_gate_names[2];
-extern const char *const mtt_lm_ihpda_variant_names[3];
+extern const char *const mtt_lm_ihpda_variant_names[2];
 extern const char *const mtt_motion_names[2];
 extern const char *const mtt_model_names[2];
 
@@ -68,8 +68,8 @@ extern const char *const mtt_model_names[2];
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
-    ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 3, mtt_lm_ihpda_variant_names, \
-         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6; not with motion imm)") \
+    ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, \
+         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6), the default where built (MTT_WITH_CONTEST); with motion imm lm-ihpda runs s0") \
     REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                  \
          "lm_ihpda_variant contest: a measurement that two tracks give an LM-IPDA β >= this is contested (§10.4)") \
     REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                            \

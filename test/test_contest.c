@@ -174,6 +174,47 @@ static void test_lone_track_is_never_contested(void)
     TEST_ASSERT_EQUAL_UINT(MTT_CONTEST_NONE, TV_CONTEST(&trk, 2)); /* C: a cluster of its own */
 }
 
+/* Two slow tracks meeting (ALGORITHMS.md §10.4, §12.3): A at y = 0 and B
+ * at y = 0.4 with the same velocity, both detected between them.  Both are
+ * contested and take the mixture, which brings them within the merge test
+ * (d^2 < merge_threshold); [S0] merges such a pair, the contest rule keeps
+ * both.  meas 0 and 1 are the detections. */
+static size_t meeting_tracks_left(mtt_lm_ihpda_variant variant, mtt_real *d2)
+{
+    static const mtt_meas z[2] = {{MTT_R(0.0), MTT_R(0.1), MTT_R(0.0), 0},
+                                  {MTT_R(0.0), MTT_R(0.3), MTT_R(0.0), 0}};
+    mtt_params p;
+    mtt_real P[4][4], P16[16];
+    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)};
+    const mtt_real xb[4] = {MTT_R(0.0), MTT_R(0.4), MTT_R(1.0), MTT_R(0.0)};
+    size_t n;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = variant;
+    p.clutter_density = MTT_R(1e-3);
+    p.initiate = 0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), P));
+    memcpy(P16, P, sizeof P16);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P16, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P16, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), z, 2));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    if (n == 2u) {
+        TEST_ASSERT_EQUAL_INT(0, mtt_merge_d2(&trk.tracks[0], &trk.tracks[1], d2));
+    }
+    return n;
+}
+
+static void test_contested_meeting_tracks_are_not_merged(void)
+{
+    mtt_real d2 = MTT_R(-1.0);
+    TEST_ASSERT_EQUAL_UINT64(1u, (uint64_t)meeting_tracks_left(MTT_LM_IHPDA_S0, &d2)); /* [S0] merges */
+    TEST_ASSERT_EQUAL_UINT64(2u, (uint64_t)meeting_tracks_left(MTT_LM_IHPDA_CONTEST, &d2));
+    TEST_ASSERT_EQUAL_UINT(MTT_CONTEST_YES, TV_CONTEST(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT(MTT_CONTEST_YES, TV_CONTEST(&trk, 1));
+    TEST_ASSERT_TRUE(d2 >= MTT_R(0.0) && d2 < MTT_R(1.0)); /* within the merge test */
+}
+
 /* docs/TEST_VECTORS.md TV15: g and g_eta, rho = 3. */
 static void test_tv15_amplitude_ratio(void)
 {
@@ -259,6 +300,7 @@ int main(void)
     RUN_TEST(test_amplitude_enters_the_existence);
     RUN_TEST(test_contest_threshold_boundary);
     RUN_TEST(test_lone_track_is_never_contested);
+    RUN_TEST(test_contested_meeting_tracks_are_not_merged);
     RUN_TEST(test_tv15_amplitude_ratio);
     RUN_TEST(test_tv15_amplitude_row);
 #else

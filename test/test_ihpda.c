@@ -112,6 +112,7 @@ static void test_tracker_prank_table(void)
     static const double w5[5] = {0.6177978884, 0.1544494721, 0.09653092006, 0.07239819005,
                                  0.05882352941}; /* TV4 m = 5, rho = 3 */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.snr_rho = MTT_R(3.0);
     tv_init(&trk, &p);
 #if MTT_MAX_GATED >= 5
@@ -337,6 +338,7 @@ static void tv5_tracker(mtt_assoc mode)
     struct tv5 t;
     int j;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.association = mode;
     p.pd = PD;
     p.pg = PG;
@@ -443,6 +445,7 @@ static void test_row_tie_rules(void)
     mtt_params p;
     int16_t best = -2;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.pg = PG;
     p.clutter_density = LAMBDA;
     p.snr_rho = MTT_R(0.0);

@@ -54,6 +54,9 @@ static void base_params(mtt_params *p, mtt_assoc mode)
 {
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(p));
     p->association = mode;
+    /* an IMM lm-ihpda runs [S0] whatever the variant: the CV comparisons
+     * below need [S0] on the CV side too */
+    p->lm_ihpda_variant = MTT_LM_IHPDA_S0;
     p->meas_sigma[0] = p->meas_sigma[1] = MTT_R(2.0);
     p->clutter_density = MTT_R(8.0 / (600.0 * 500.0));
     p->snr_rho = MTT_R(2.0);
@@ -349,22 +352,37 @@ static void test_unsupported_modes_refuse(void)
 }
 
 /* The contest variant of lm-ihpda (ALGORITHMS.md §10.4) has no IMM form:
- * refused by name; s0 with IMM and contest with CV are accepted. */
-static void test_contest_with_imm_refused(void)
+ * with motion imm lm-ihpda runs [S0] whatever the variant (the default is
+ * contest, so IMM settings need not name s0): accepted, and frame for
+ * frame identical to s0. */
+static void test_contest_with_imm_runs_s0(void)
 {
-    mtt_params p;
-    const char *bad = NULL;
-    base_params(&p, MTT_ASSOC_LM_IHPDA);
-    p.motion = MTT_MOTION_IMM;
-    p.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
-    TEST_ASSERT_EQUAL_STRING("lm_ihpda_variant", bad);
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_init(&ta, &p));
-    p.lm_ihpda_variant = MTT_LM_IHPDA_S0;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
-    p.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
-    p.motion = MTT_MOTION_CV;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+    mtt_params pa, pb;
+    int k;
+    make_scene();
+    base_params(&pa, MTT_ASSOC_LM_IHPDA);
+    pa.motion = MTT_MOTION_IMM;
+    pb = pa;
+    pb.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &pa));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &pb));
+    seed(&ta);
+    seed(&tb);
+    for (k = 0; k < FRAMES; ++k) {
+        size_t na, nb, i;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)na, (uint64_t)nb);
+        for (i = 0; i < na; ++i) {
+            mtt_track_view va, vb;
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
+            TEST_ASSERT_EQUAL_UINT32(va.id, vb.id);
+            TEST_ASSERT_TRUE(va.x[0] == vb.x[0] && va.x[1] == vb.x[1] && va.existence == vb.existence);
+        }
+    }
 }
 
 static void test_imm_keys_checked(void)
@@ -416,7 +434,7 @@ int main(void)
 #if MTT_WITH_IMM
     RUN_TEST(test_imm_keys_checked);
     RUN_TEST(test_unsupported_modes_refuse);
-    RUN_TEST(test_contest_with_imm_refused);
+    RUN_TEST(test_contest_with_imm_runs_s0);
     RUN_TEST(test_supported_modes_run);
     RUN_TEST(test_identical_cv_models_are_cv);
     RUN_TEST(test_nees_manoeuvre);

@@ -26,6 +26,7 @@ static void tv8_tracker(mtt_assoc mode, mtt_real lambda)
 {
     mtt_params p;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.association = mode;
     p.pd = MTT_R(0.9);
     p.pg = MTT_R(0.99);
@@ -127,6 +128,7 @@ static void test_tv8_hand_built_state(void)
     mtt_params p;
     int k;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.pd = MTT_R(0.9);
     p.pg = MTT_R(0.99);
     p.clutter_density = MTT_R(0.002);
@@ -156,6 +158,7 @@ static void test_lm_many_tracks_uses_sum_minus_own(void)
     uint16_t t;
     double pt_, w;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.pd = MTT_R(0.9);
     p.pg = MTT_R(0.99);
     p.clutter_density = MTT_R(0.002);

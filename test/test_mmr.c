@@ -19,6 +19,7 @@ static void static_matrix(uint16_t n, uint16_t m, const double *B)
     mtt_params p;
     uint16_t t, j;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     tv_init(&trk, &p);
     for (t = 0; t < n; ++t) {
         (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(2.0), MTT_R(0.0), MTT_R(2.0), MTT_R(0.5));
@@ -95,6 +96,7 @@ static void tv8_tracker(void)
 {
     mtt_params p;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.lm_ihpda_variant = MTT_LM_IHPDA_S0; /* the [S0] vectors */
     p.association = MTT_ASSOC_LM_IHPDA;
     p.pd = MTT_R(0.9);
     p.pg = MTT_R(0.99);

@@ -110,12 +110,9 @@ typedef enum mtt_init_gate {
 /** The algorithm of the lm-ihpda mode (docs/FORMATS.md `lm_ihpda_variant`). */
 typedef enum mtt_lm_ihpda_variant {
     MTT_LM_IHPDA_S0 = 0,      /**< [S0] exactly: rank statistics, MMR, ALGORITHMS.md §10.3 and §7.4 */
-    MTT_LM_IHPDA_CONTEST = 1, /**< contest-aware update (ALGORITHMS.md §10.4) with the amplitude
+    MTT_LM_IHPDA_CONTEST = 1  /**< contest-aware update (ALGORITHMS.md §10.4) with the amplitude
                                    likelihood ratio in place of the ranks (ALGORITHMS.md §7.6);
                                    built with MTT_WITH_CONTEST 1 */
-    MTT_LM_IHPDA_JOINT = 2    /**< as CONTEST, but a contested pair of tracks keeps MMR's
-                                   hard choice unless the pair's joint test finds the
-                                   missed-target alternative likely (ALGORITHMS.md §10.4) */
 } mtt_lm_ihpda_variant;
 
 /** Stages whose cost the optional cycle counter measures (docs/DESIGN.md). */

@@ -128,15 +128,21 @@ def clear_mot(frame_list, cutoff: float) -> dict:
     3. an **ID switch** is counted for each target matched in step 2 to a
        track other than the track it was last matched to (at any earlier
        scan; the py-motmetrics convention);
-    4. misses FN = unmatched targets, false positives FP = unmatched tracks.
+    4. misses FN = unmatched targets, false positives FP = unmatched tracks;
+    5. a **track swap** is counted for each track matched (in step 1 or 2)
+       to a target other than the target it was last matched to: an identity
+       that moved from one target to another.  A target lost and re-acquired
+       by a new track is an ID switch (3) but no swap.
 
     MOTA = 1 - (sum FN + sum FP + sum IDSW) / sum GT (NaN if no GT);
     MOTP = mean distance of matched pairs (NaN if none).
-    Returns the totals plus per-scan arrays ``idsw_scan``, ``fn_scan``,
-    ``fp_scan``.
+    Returns the totals (``swaps`` the track swaps) plus per-scan arrays
+    ``idsw_scan``, ``fn_scan``, ``fp_scan``.
     """
     prev: dict[int, int] = {}
     last: dict[int, int] = {}
+    last_target: dict[int, int] = {}
+    swaps = 0
     fn_s, fp_s, sw_s = [], [], []
     gt_total = matches_total = 0
     dist_total = 0.0
@@ -164,6 +170,9 @@ def clear_mot(frame_list, cutoff: float) -> dict:
                 cur[g] = h
         for g, h in cur.items():
             dist_total += d[gt_ids.index(g), hyp_index[h]]
+            if last_target.get(h, g) != g:
+                swaps += 1
+            last_target[h] = g
         fn_s.append(len(gt_ids) - len(cur))
         fp_s.append(len(hyp_ids) - len(cur))
         sw_s.append(sw)
@@ -174,7 +183,7 @@ def clear_mot(frame_list, cutoff: float) -> dict:
     fn, fp, idsw = int(sum(fn_s)), int(sum(fp_s)), int(sum(sw_s))
     return {
         "gt": gt_total, "matches": matches_total, "fn": fn, "fp": fp, "idsw": idsw,
-        "dist": dist_total,
+        "swaps": swaps, "dist": dist_total,
         "mota": (1.0 - (fn + fp + idsw) / gt_total) if gt_total else math.nan,
         "motp": (dist_total / matches_total) if matches_total else math.nan,
         "fn_scan": np.array(fn_s, int), "fp_scan": np.array(fp_s, int), "idsw_scan": np.array(sw_s, int),
@@ -345,7 +354,7 @@ def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gosp
     out.update({
         "n_truth": n_truth, "n_tentative": tent, "n_confirmed": conf, "conf_true": ct, "conf_false": cf,
         "idsw": mot["idsw_scan"], "sq_err": sq,
-        "mot": {k: mot[k] for k in ("gt", "matches", "fn", "fp", "idsw", "dist", "mota", "motp")},
+        "mot": {k: mot[k] for k in ("gt", "matches", "fn", "fp", "idsw", "swaps", "dist", "mota", "motp")},
         "seeded": seeded,
     })
     return out

@@ -251,7 +251,7 @@ class Aggregate:
         self.failures: list[dict] = []
         self.sums = {k: np.zeros(nscan) for k in self.PER_SCAN}
         self.sq = {}      # target id -> (sum of squared errors, count) per scan
-        self.mot = {"gt": 0, "matches": 0, "fn": 0, "fp": 0, "idsw": 0, "dist": 0.0}
+        self.mot = {"gt": 0, "matches": 0, "fn": 0, "fp": 0, "idsw": 0, "swaps": 0, "dist": 0.0}
         self.times: list[float] = []
         self.seeded = {"runs": 0, "failed": 0, "coalescence": 0, "switch": 0, "lost": 0,
                        "coalescence_or_switch": 0}
@@ -312,7 +312,8 @@ class Aggregate:
             "gospa_mean": float(s["gospa"].mean() / n) if self.ok else math.nan,
             "mota": (1.0 - (mot["fn"] + mot["fp"] + mot["idsw"]) / gt) if gt else math.nan,
             "motp": mot["dist"] / mot["matches"] if mot["matches"] else math.nan,
-            "idsw": mot["idsw"], "idsw_per_run": mot["idsw"] / n, "fn": mot["fn"], "fp": mot["fp"], "gt": gt,
+            "idsw": mot["idsw"], "idsw_per_run": mot["idsw"] / n,
+            "swaps": mot["swaps"], "swaps_per_run": mot["swaps"] / n, "fn": mot["fn"], "fp": mot["fp"], "gt": gt,
             "confirmed_true_fraction": float(s["conf_true"].sum() / s["n_truth"].sum()) if s["n_truth"].sum() else math.nan,
             "confirmed_false_per_scan": float(s["conf_false"].mean() / n) if self.ok else math.nan,
             "rmse_per_target": rmse_target,

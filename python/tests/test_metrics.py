@@ -139,6 +139,18 @@ class TestClearMot(unittest.TestCase):
         self.assertAlmostEqual(r["mota"], 0.375)
         self.assertAlmostEqual(r["motp"], 0.0)
         self.assertEqual(r["idsw_scan"].tolist(), [0, 2, 0, 1])
+        # track swaps: a and b each move to the other target at k1 (2); c
+        # re-acquires target 2 at k3 as a new track: an ID switch, no swap.
+        self.assertEqual(r["swaps"], 2)
+
+    def test_swap_back_counts_twice(self):
+        # threshold 1.  Track 7 follows target 1, then target 2, then 1 again:
+        # two swaps, but no ID switch: each target is only ever on track 7.
+        fr = [([1, 2], [[0, 0], [5, 0]], [7], [[0, 0]]),
+              ([1, 2], [[0, 0], [5, 0]], [7], [[5, 0]]),
+              ([1, 2], [[0, 0], [5, 0]], [7], [[0, 0]])]
+        r = metrics.clear_mot(fr, 1.0)
+        self.assertEqual((r["swaps"], r["idsw"]), (2, 0))
 
     def test_keeps_previous_correspondence(self):
         # threshold 3.  k0: target 1@(0,0), track a@(0,0) -> 1-a.

@@ -100,6 +100,8 @@ int main(void)
     long line = 0, frame = 0;
 
     if (mtt_params_default(&par) != MTT_OK) return 2;
+    /* the reference (python/mtt_ref) is [S0]'s lm-ihpda */
+    par.lm_ihpda_variant = MTT_LM_IHPDA_S0;
     while (fgets(buf, sizeof buf, stdin) != NULL) {
         ++line;
         n = split(buf, w);
