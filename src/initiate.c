@@ -148,21 +148,7 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
                 if (!birth_ok(x, P)) {
                     continue;
                 }
-                mtt_real e0 = trk->par.existence_init;
-#ifdef MTT_EXP_INIT
-                if (MTT_CONTEST_ON(trk) && pa->has_amp && b->has_amp) {
-                    const mtt_real gg = mtt_amp_ratio(trk->par.snr_rho, trk->par.amplitude_eta, pa->amp) *
-                                        mtt_amp_ratio(trk->par.snr_rho, trk->par.amplitude_eta, b->amp);
-                    if (MTT_EXP_INIT == 2 && gg < MTT_R(1.0)) {
-                        continue;
-                    }
-                    if (MTT_EXP_INIT == 1) {
-                        const mtt_real o = e0 / (MTT_R(1.0) - e0) * gg;
-                        e0 = o / (MTT_R(1.0) + o);
-                    }
-                }
-#endif
-                int ni = mtt_track_append(trk, x, P, e0, 0, 1);
+                int ni = mtt_track_append(trk, x, P, trk->par.existence_init, 0, 1);
                 if (ni < 0) {
                     trk->stats.last.births_dropped++;
                 } else {
