@@ -22,14 +22,12 @@ static mtt_tracker trk;
 
 #if MTT_WITH_CONTEST
 
-static void run(mtt_assoc mode, mtt_lm_ihpda_variant variant, const mtt_meas *z, size_t n,
-                mtt_track_view v[3])
+/* A tracker with the given tracks (two-point covariance of sigma 1, dt 1),
+ * clutter 1e-3, rho 3, no initiation. */
+static void start(mtt_assoc mode, mtt_lm_ihpda_variant variant, const mtt_real (*x)[4], size_t n)
 {
     mtt_params p;
     mtt_real P[4][4], P16[16];
-    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)};
-    const mtt_real xb[4] = {MTT_R(0.0), MTT_R(2.0), MTT_R(1.0), MTT_R(0.0)};
-    const mtt_real xc[4] = {MTT_R(500.0), MTT_R(500.0), MTT_R(1.0), MTT_R(0.0)};
     size_t i;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.association = mode;
@@ -40,9 +38,19 @@ static void run(mtt_assoc mode, mtt_lm_ihpda_variant variant, const mtt_meas *z,
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), P));
     memcpy(P16, P, sizeof P16);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P16, NULL));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P16, NULL));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xc, P16, NULL));
+    for (i = 0; i < n; ++i) {
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x[i], P16, NULL));
+    }
+}
+
+static void run(mtt_assoc mode, mtt_lm_ihpda_variant variant, const mtt_meas *z, size_t n,
+                mtt_track_view v[3])
+{
+    static const mtt_real x[3][4] = {{MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
+                                     {MTT_R(0.0), MTT_R(2.0), MTT_R(1.0), MTT_R(0.0)},
+                                     {MTT_R(500.0), MTT_R(500.0), MTT_R(1.0), MTT_R(0.0)}};
+    size_t i;
+    start(mode, variant, x, 3);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), z, n));
     for (i = 0; i < 3; ++i) {
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, i, &v[i]));
@@ -183,20 +191,10 @@ static size_t meeting_tracks_left(mtt_lm_ihpda_variant variant, mtt_real *d2)
 {
     static const mtt_meas z[2] = {{MTT_R(0.0), MTT_R(0.1), MTT_R(0.0), 0},
                                   {MTT_R(0.0), MTT_R(0.3), MTT_R(0.0), 0}};
-    mtt_params p;
-    mtt_real P[4][4], P16[16];
-    const mtt_real xa[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)};
-    const mtt_real xb[4] = {MTT_R(0.0), MTT_R(0.4), MTT_R(1.0), MTT_R(0.0)};
+    static const mtt_real x[2][4] = {{MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.0)},
+                                     {MTT_R(0.0), MTT_R(0.4), MTT_R(1.0), MTT_R(0.0)}};
     size_t n;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.lm_ihpda_variant = variant;
-    p.clutter_density = MTT_R(1e-3);
-    p.initiate = 0;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_init_two_point_cov(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), P));
-    memcpy(P16, P, sizeof P16);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xa, P16, NULL));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, xb, P16, NULL));
+    start(MTT_ASSOC_LM_IHPDA, variant, x, 2);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), z, 2));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
     if (n == 2u) {

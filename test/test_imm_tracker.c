@@ -87,6 +87,46 @@ static const mtt_assoc imm_modes[] = {MTT_ASSOC_LM_IHPDA, MTT_ASSOC_IHPDA, MTT_A
 };
 #define N_IMM_MODES (sizeof imm_modes / sizeof imm_modes[0])
 
+/* Runs pa on ta and pb on tb over the scene (seeded alike) and checks,
+ * frame by frame, equal track counts and identities, and same() per track. */
+static void compare_runs(const mtt_params *pa, const mtt_params *pb,
+                         void (*same)(const mtt_track_view *va, const mtt_track_view *vb))
+{
+    int k;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, pa));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, pb));
+    seed(&ta);
+    seed(&tb);
+    for (k = 0; k < FRAMES; ++k) {
+        size_t na, nb, i;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)na, (uint64_t)nb);
+        for (i = 0; i < na; ++i) {
+            mtt_track_view va, vb;
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
+            TEST_ASSERT_EQUAL_UINT32(va.id, vb.id);
+            same(&va, &vb);
+        }
+    }
+}
+
+static void same_as_cv(const mtt_track_view *va, const mtt_track_view *vb)
+{
+    int j;
+    TEST_ASSERT_EQUAL_INT32(va->meas, vb->meas);
+    for (j = 0; j < 4; ++j) {
+        TEST_ASSERT_FLOAT_WITHIN(1e-3, va->x[j], vb->x[j]);
+        TEST_ASSERT_FLOAT_WITHIN(1e-3 * (1.0 + fabs((double)va->P[j][j])), va->P[j][j], vb->P[j][j]);
+    }
+    TEST_ASSERT_FLOAT_WITHIN(1e-4, va->existence, vb->existence);
+    TEST_ASSERT_EQUAL_UINT8(2u, vb->n_models);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5, 1.0, (double)(vb->mu[0] + vb->mu[1]));
+}
+
 /* An IMM of r identical CV filters (same Sw as the CV run) is the CV
  * filter: equal model estimates mix and combine into themselves, p* = p
  * (Σ c̄_j = 1), and the split gives every model the track's betas.  Exact
@@ -101,7 +141,6 @@ static void test_identical_cv_models_are_cv(void)
     make_scene();
     for (mi = 0; mi < N_IMM_MODES; ++mi) {
         mtt_params pa, pb;
-        int k, j;
         base_params(&pa, imm_modes[mi]);
         pb = pa;
         pb.motion = MTT_MOTION_IMM;
@@ -110,37 +149,10 @@ static void test_identical_cv_models_are_cv(void)
         pb.imm_psd[0] = pb.imm_psd[1] = pa.process_psd;
         pb.imm_initial[0] = MTT_R(0.5);
         pb.imm_initial[1] = MTT_R(0.5);
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &pa));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &pb));
-        seed(&ta);
-        seed(&tb);
-        for (k = 0; k < FRAMES; ++k) {
-            size_t na, nb, i;
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, (mtt_real)k, scene[k], (size_t)scene_n[k]));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, (mtt_real)k, scene[k], (size_t)scene_n[k]));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
-            TEST_ASSERT_EQUAL_UINT64((uint64_t)na, (uint64_t)nb);
-            for (i = 0; i < na; ++i) {
-                mtt_track_view va, vb;
-                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
-                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
-                TEST_ASSERT_EQUAL_UINT32(va.id, vb.id);
-                TEST_ASSERT_EQUAL_INT32(va.meas, vb.meas);
-                for (j = 0; j < 4; ++j) {
-                    TEST_ASSERT_FLOAT_WITHIN(1e-3, va.x[j], vb.x[j]);
-                    TEST_ASSERT_FLOAT_WITHIN(1e-3 * (1.0 + fabs((double)va.P[j][j])), va.P[j][j], vb.P[j][j]);
-                }
-                TEST_ASSERT_FLOAT_WITHIN(1e-4, va.existence, vb.existence);
-                TEST_ASSERT_EQUAL_UINT8(2u, vb.n_models);
-                TEST_ASSERT_FLOAT_WITHIN(1e-5, 1.0, (double)(vb.mu[0] + vb.mu[1]));
-            }
-        }
+        compare_runs(&pa, &pb, same_as_cv);
     }
 }
 
-/* Coordinated turn of a target at speed v: lateral acceleration a from
- * frame k0 for n frames, then straight; exact arcs (dt 1). */
 static void turn_truth(double st[4], int k, int k0, int n, double a)
 {
     if (k > k0 && k <= k0 + n) {
@@ -355,34 +367,21 @@ static void test_unsupported_modes_refuse(void)
  * with motion imm lm-ihpda runs [S0] whatever the variant (the default is
  * contest, so IMM settings need not name s0): accepted, and frame for
  * frame identical to s0. */
+static void bit_identical(const mtt_track_view *va, const mtt_track_view *vb)
+{
+    TEST_ASSERT_EQUAL_INT32(va->meas, vb->meas);
+    TEST_ASSERT_TRUE(va->x[0] == vb->x[0] && va->x[1] == vb->x[1] && va->existence == vb->existence);
+}
+
 static void test_contest_with_imm_runs_s0(void)
 {
     mtt_params pa, pb;
-    int k;
     make_scene();
     base_params(&pa, MTT_ASSOC_LM_IHPDA);
     pa.motion = MTT_MOTION_IMM;
     pb = pa;
     pb.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &pa));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &pb));
-    seed(&ta);
-    seed(&tb);
-    for (k = 0; k < FRAMES; ++k) {
-        size_t na, nb, i;
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, (mtt_real)k, scene[k], (size_t)scene_n[k]));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, (mtt_real)k, scene[k], (size_t)scene_n[k]));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
-        TEST_ASSERT_EQUAL_UINT64((uint64_t)na, (uint64_t)nb);
-        for (i = 0; i < na; ++i) {
-            mtt_track_view va, vb;
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
-            TEST_ASSERT_EQUAL_UINT32(va.id, vb.id);
-            TEST_ASSERT_TRUE(va.x[0] == vb.x[0] && va.x[1] == vb.x[1] && va.existence == vb.existence);
-        }
-    }
+    compare_runs(&pa, &pb, bit_identical);
 }
 
 static void test_imm_keys_checked(void)
