@@ -128,6 +128,9 @@ def table_summary(s: dict) -> str:
         ["MOTP (mean matched distance)"] + [_fmt(R[m]["totals"]["motp"]) for m in modes],
         ["ID switches (total / per run)"] + [
             f"{R[m]['totals']['idsw']} / {_fmt(R[m]['totals']['idsw_per_run'], 2)}" for m in modes],
+        ["track swaps: a track moves to another target (total / per run)"] + [
+            (f"{R[m]['totals']['swaps']} / {_fmt(R[m]['totals']['swaps_per_run'], 2)}"
+             if "swaps" in R[m]["totals"] else "-") for m in modes],
         ["misses FN / false FP (total)"] + [f"{R[m]['totals']['fn']} / {R[m]['totals']['fp']}" for m in modes],
         ["confirmed true / targets present"] + [_fmt(R[m]["totals"]["confirmed_true_fraction"]) for m in modes],
         ["confirmed false tracks per scan"] + [_fmt(R[m]["totals"]["confirmed_false_per_scan"]) for m in modes],
