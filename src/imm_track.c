@@ -27,56 +27,16 @@ static uint8_t model_n(mtt_model_kind k)
     return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : (uint8_t)MTT_STATE_N;
 }
 
-static void sym_n(uint8_t n, mtt_cov P)
-{
-    uint8_t i, j;
-    for (i = 0; i < n; ++i) {
-        for (j = (uint8_t)(i + 1u); j < n; ++j) {
-            const mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
-            P[i][j] = s;
-            P[j][i] = s;
-        }
-    }
-}
-
-/* Row (or column) c of F applied to a CA state vector v: F is per axis
- * [[1, T, T^2/2], [0, 1, T], [0, 0, 1]] with components (p, v, a) at
- * (ax, 2 + ax, 4 + ax), so row c adds T times component c + 2 (positions
- * and velocities) and T^2/2 times component c + 4 (positions). */
-static mtt_real ca_row(uint8_t c, mtt_real t, mtt_real h, mtt_real v0, mtt_real v2, mtt_real v4)
-{
-    return (c < 2u) ? v0 + t * v2 + h * v4 : ((c < 4u) ? v0 + t * v2 : v0);
-}
-
 /* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1
- * for CA: F's sparsity used, 3 terms per element instead of a 6x6 product). */
+ * for CA), symmetric; in place (xp = x, Pp = P) allowed. */
 static void model_predict(mtt_model_kind k, mtt_real dt, mtt_real q, const mtt_state x, mtt_cov P,
                           mtt_state xp, mtt_cov Pp)
 {
-    mtt_cov F, Q, FP;
-    const mtt_real h = MTT_R(0.5) * dt * dt;
-    uint8_t i, j;
     if (k == MTT_MODEL_CV) {
-        mtt_motion_predict(dt, q, x, P, xp, Pp);
-        sym_n(MTT_STATE_N, Pp);
-        return;
+        mtt_kalman_predict(dt, q, x, P, xp, Pp);
+    } else {
+        mtt_ca_predict(dt, q, x, P, xp, Pp);
     }
-    mtt_ca_model(dt, q, F, Q);
-    /* components beyond 5 do not exist in CA: index them as 0 (weight 0) */
-    for (i = 0; i < MTT_CA_N; ++i) {
-        const uint8_t i2 = (uint8_t)((i + 2u < MTT_CA_N) ? i + 2u : i), i4 = (uint8_t)((i + 4u < MTT_CA_N) ? i + 4u : i);
-        xp[i] = ca_row(i, dt, h, x[i], x[i2], x[i4]);
-        for (j = 0; j < MTT_CA_N; ++j) {
-            FP[i][j] = ca_row(i, dt, h, P[i][j], P[i2][j], P[i4][j]);
-        }
-    }
-    for (i = 0; i < MTT_CA_N; ++i) {
-        for (j = 0; j < MTT_CA_N; ++j) {
-            const uint8_t j2 = (uint8_t)((j + 2u < MTT_CA_N) ? j + 2u : j), j4 = (uint8_t)((j + 4u < MTT_CA_N) ? j + 4u : j);
-            Pp[i][j] = ca_row(j, dt, h, FP[i][j], FP[i][j2], FP[i][j4]) + Q[i][j];
-        }
-    }
-    sym_n(MTT_CA_N, Pp);
 }
 
 int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -96,11 +56,7 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
         (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
         for (j = 0; j < r; ++j) {
-            mtt_state x0;
-            mtt_cov P0;
-            memcpy(x0, tf->xpm[j], sizeof x0);
-            memcpy(P0, tf->Ppm[j], sizeof P0);
-            model_predict(p->imm_model[j], dt, p->imm_psd[j], x0, P0, tf->xpm[j], tf->Ppm[j]);
+            model_predict(p->imm_model[j], dt, p->imm_psd[j], tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
         }
     } else {
         /* First frame: the state is already at this time (seeded tracks). */
@@ -206,9 +162,8 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     mtt_real(*e)[MTT_MAX_MODELS] = trk->row.imm_e;
     mtt_real(*bj)[MTT_MAX_GATED] = trk->row.imm_beta;
     mtt_real(*nu)[2] = trk->row.nu;
-    mtt_real xc[MTT_IMM_COMMON], Pc[MTT_IMM_COMMON][MTT_IMM_COMMON];
     uint16_t i;
-    uint8_t j, a;
+    uint8_t j;
     for (j = 0; j < r; ++j) {
         e0[j] = MTT_R(1.0);
     }
@@ -226,11 +181,7 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
         mtt_kalman_pda_n(model_n(trk->par.imm_model[j]), tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j],
                          trk->R, m, nu, bj[j], b0j[j], t->xm[j], t->Pm[j]);
     }
-    (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, xc, Pc);
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        t->x[a] = xc[a];
-        memcpy(t->P[a], Pc[a], sizeof Pc[a]);
-    }
+    (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, t->x, t->P);
 }
 
 /* [CHOICE] ALGORITHMS.md §14.2: every model starts from the two-point (or

@@ -143,10 +143,19 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         A[i][0] = -K[i][0];
         A[i][1] = -K[i][1];
     }
-    /* A Pp: A differs from I only in columns 0 and 1. */
-    for (i = 0; i < n; ++i) {
+    /* A Pp: A differs from I only in columns 0 and 1.  Only the entries
+     * read below: columns 0 and 1, and columns k >= max(i, 2). */
+    for (i = 0; i < MTT_MEAS_DIM; ++i) {
         for (k = 0; k < n; ++k) {
-            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= MTT_MEAS_DIM) ? Pp[i][k] : MTT_R(0.0));
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + MTT_R(0.0);
+        }
+    }
+    for (i = MTT_MEAS_DIM; i < n; ++i) {
+        for (k = 0; k < MTT_MEAS_DIM; ++k) {
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + Pp[i][k];
+        }
+        for (k = i; k < n; ++k) {
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + Pp[i][k];
         }
     }
     /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
