@@ -82,25 +82,30 @@ static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MT
     }
     for (a = 0; a < MTT_IMM_COMMON; ++a) {
         xo[a] = xr[a] + s[a];
-        for (b = a; b < MTT_IMM_COMMON; ++b) {
-            Po[a][b] = Pr[a][b];
-        }
     }
-    for (i = 0; i < r; ++i) {
-        mtt_real(*Pi)[MTT_MAX_STATE] = P[i];
-        if (i == ref) {
-            continue;
+    /* Whole rows (fixed length 4: straight or vector code), then the upper
+     * triangle mirrored onto the lower. */
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        mtt_real row[MTT_IMM_COMMON];
+        for (b = 0; b < MTT_IMM_COMMON; ++b) {
+            row[b] = Pr[a][b];
         }
-        for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            const mtt_real wd = w[i] * (D[i][a] - s[a]);
-            for (b = a; b < MTT_IMM_COMMON; ++b) {
-                Po[a][b] += wd * D[i][b] + w[i] * (Pi[a][b] - Pr[a][b]);
+        for (i = 0; i < r; ++i) {
+            if (i != ref) {
+                mtt_real(*Pi)[MTT_MAX_STATE] = P[i];
+                const mtt_real wd = w[i] * (D[i][a] - s[a]);
+                for (b = 0; b < MTT_IMM_COMMON; ++b) {
+                    row[b] += wd * D[i][b] + w[i] * (Pi[a][b] - Pr[a][b]);
+                }
             }
         }
+        for (b = 0; b < MTT_IMM_COMMON; ++b) {
+            Po[a][b] = row[b];
+        }
     }
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        for (b = (uint8_t)(a + 1u); b < MTT_IMM_COMMON; ++b) {
-            Po[b][a] = Po[a][b];
+    for (a = 1; a < MTT_IMM_COMMON; ++a) {
+        for (b = 0; b < a; ++b) {
+            Po[a][b] = Po[b][a];
         }
     }
 }
@@ -125,18 +130,19 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
         }
         /* Common part: the mixture with reference model j. */
         mixture4(r, j, w, x, P, x0[j], P0[j]);
-        /* Extras of model j: own mean and block, cross terms scaled by μ_{j|j}. */
+        /* Extras of model j: own mean and block, cross terms scaled by
+         * μ_{j|j} (P[j] is symmetric: every stage writes it mirrored). */
         for (a = MTT_IMM_COMMON; a < n[j]; ++a) {
+            const mtt_real *pa = P[j][a];
+            mtt_real *qa = P0[j][a];
             x0[j][a] = x[j][a];
             for (b = 0; b < MTT_IMM_COMMON; ++b) {
-                mtt_real v = mix[j][j] * MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
-                P0[j][a][b] = v;
-                P0[j][b][a] = v;
+                qa[b] = mix[j][j] * pa[b];
+                P0[j][b][a] = qa[b];
             }
             for (b = a; b < n[j]; ++b) {
-                mtt_real v = MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
-                P0[j][a][b] = v;
-                P0[j][b][a] = v;
+                qa[b] = pa[b];
+                P0[j][b][a] = pa[b];
             }
         }
     }

@@ -173,13 +173,23 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     }
     (void)mtt_imm_split(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
     for (j = 0; j < r; ++j) {
+        const uint8_t n = model_n(trk->par.imm_model[j]);
+        if (m == 0u) {
+            /* β_0 = 1: the PDA update is the prediction itself (as
+             * update.c's keep_prediction), copied rather than recomputed */
+            memcpy(t->xm[j], tf->xpm[j], n * sizeof t->xm[j][0]);
+            for (i = 0; i < n; ++i) {
+                memcpy(t->Pm[j][i], tf->Ppm[j][i], n * sizeof t->Pm[j][i][0]);
+            }
+            continue;
+        }
         for (i = 0; i < m; ++i) {
             const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
             nu[i][0] = ms->x - tf->xpm[j][0];
             nu[i][1] = ms->y - tf->xpm[j][1];
         }
-        mtt_kalman_pda_n(model_n(trk->par.imm_model[j]), tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j],
-                         trk->R, m, nu, bj[j], b0j[j], t->xm[j], t->Pm[j]);
+        mtt_kalman_pda_n(n, tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j], trk->R, m, nu, bj[j], b0j[j],
+                         t->xm[j], t->Pm[j]);
     }
     (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, t->x, t->P);
 }

@@ -159,12 +159,20 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         }
     }
     /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
-     * symmetric by construction. */
+     * symmetric by construction.  (A Pp A')[i][k] = AP[i][0] A[k][0] +
+     * AP[i][1] A[k][1] + AP[i][k] for k >= 2 (A is I there); the position
+     * columns k < 2 add 0, as two loops without a test. */
     for (i = 0; i < n; ++i) {
         const mtt_real a = K[i][0] * m11 + K[i][1] * m12;
         const mtt_real b = K[i][0] * m12 + K[i][1] * m22;
-        for (k = i; k < n; ++k) {
-            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= MTT_MEAS_DIM) ? AP[i][k] : MTT_R(0.0));
+        for (k = i; k < MTT_MEAS_DIM; ++k) {
+            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + MTT_R(0.0);
+            const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
+            P[i][k] = v;
+            P[k][i] = v;
+        }
+        for (k = (i > MTT_MEAS_DIM) ? i : MTT_MEAS_DIM; k < n; ++k) {
+            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + AP[i][k];
             const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
             P[i][k] = v;
             P[k][i] = v;

@@ -60,19 +60,21 @@ void mtt_ca_model(mtt_real dt, mtt_real q, mtt_real F[][MTT_MAX_STATE], mtt_real
  * product with F' does the same to the columns. */
 static void ca_block(mtt_real t, mtt_real h, mtt_real P[][MTT_MAX_STATE], int a, int b, mtt_real M[3][3])
 {
-    mtt_real r[3][3];
-    int k;
-    for (k = 0; k < 3; ++k) {
-        const mtt_real b0 = P[a][2 * k + b], b1 = P[2 + a][2 * k + b], b2 = P[4 + a][2 * k + b];
-        r[0][k] = b0 + t * b1 + h * b2;
-        r[1][k] = b1 + t * b2;
-        r[2][k] = b2;
-    }
-    for (k = 0; k < 3; ++k) {
-        M[k][0] = r[k][0] + t * r[k][1] + h * r[k][2];
-        M[k][1] = r[k][1] + t * r[k][2];
-        M[k][2] = r[k][2];
-    }
+    const mtt_real *p0 = P[a], *p1 = P[2 + a], *p2 = P[4 + a];
+    /* F B, column by column (columns b, 2 + b, 4 + b of P) */
+    const mtt_real r00 = p0[b] + t * p1[b] + h * p2[b], r10 = p1[b] + t * p2[b], r20 = p2[b];
+    const mtt_real r01 = p0[2 + b] + t * p1[2 + b] + h * p2[2 + b], r11 = p1[2 + b] + t * p2[2 + b], r21 = p2[2 + b];
+    const mtt_real r02 = p0[4 + b] + t * p1[4 + b] + h * p2[4 + b], r12 = p1[4 + b] + t * p2[4 + b], r22 = p2[4 + b];
+    /* (F B) F', row by row */
+    M[0][0] = r00 + t * r01 + h * r02;
+    M[0][1] = r01 + t * r02;
+    M[0][2] = r02;
+    M[1][0] = r10 + t * r11 + h * r12;
+    M[1][1] = r11 + t * r12;
+    M[1][2] = r12;
+    M[2][0] = r20 + t * r21 + h * r22;
+    M[2][1] = r21 + t * r22;
+    M[2][2] = r22;
 }
 
 void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
@@ -80,32 +82,34 @@ void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MT
 {
     mtt_real f[3][3], qa[3][3], M[3][3][3];
     const mtt_real h = MTT_R(0.5) * dt * dt;
-    int a, i, j;
+    int a, i;
     mtt_ca_axis(dt, q, f, qa);
     for (a = 0; a < 2; ++a) {
         xp[a] = x[a] + dt * x[2 + a] + h * x[4 + a];
         xp[2 + a] = x[2 + a] + dt * x[4 + a];
         xp[4 + a] = x[4 + a];
     }
-    /* the three distinct axis blocks first (so that Pp may be P), then the
-     * diagonal blocks' upper triangles plus Q, and the x-y block, mirrored */
-    for (a = 0; a < 3; ++a) {
-        ca_block(dt, h, P, (a == 2) ? 0 : a, (a == 2) ? 1 : a, M[a]);
-    }
+    /* the three distinct axis blocks first (so that Pp may be P): x-x,
+     * y-y, x-y */
+    ca_block(dt, h, P, 0, 0, M[0]);
+    ca_block(dt, h, P, 1, 1, M[1]);
+    ca_block(dt, h, P, 0, 1, M[2]);
+    /* the diagonal blocks' upper triangles plus Q, mirrored (Q is
+     * symmetric: M + Q's lower triangle is its upper one's mirror) */
     for (a = 0; a < 2; ++a) {
-        for (i = 0; i < 3; ++i) {
-            for (j = i; j < 3; ++j) {
-                const mtt_real v = M[a][i][j] + qa[i][j];
-                Pp[2 * i + a][2 * j + a] = v;
-                Pp[2 * j + a][2 * i + a] = v;
-            }
-        }
+        mtt_real(*m)[3] = M[a];
+        Pp[a][a] = m[0][0] + qa[0][0];
+        Pp[2 + a][2 + a] = m[1][1] + qa[1][1];
+        Pp[4 + a][4 + a] = m[2][2] + qa[2][2];
+        Pp[a][2 + a] = Pp[2 + a][a] = m[0][1] + qa[0][1];
+        Pp[a][4 + a] = Pp[4 + a][a] = m[0][2] + qa[0][2];
+        Pp[2 + a][4 + a] = Pp[4 + a][2 + a] = m[1][2] + qa[1][2];
     }
+    /* the x-y block and its transpose */
     for (i = 0; i < 3; ++i) {
-        for (j = 0; j < 3; ++j) {
-            Pp[2 * i][2 * j + 1] = M[2][i][j];
-            Pp[2 * j + 1][2 * i] = M[2][i][j];
-        }
+        Pp[2 * i][1] = Pp[1][2 * i] = M[2][i][0];
+        Pp[2 * i][3] = Pp[3][2 * i] = M[2][i][1];
+        Pp[2 * i][5] = Pp[5][2 * i] = M[2][i][2];
     }
 }
 
