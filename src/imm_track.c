@@ -24,18 +24,20 @@
 /* State size of a model kind. */
 static uint8_t model_n(mtt_model_kind k)
 {
-    return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : (uint8_t)MTT_STATE_N;
+    return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : ((k == MTT_MODEL_CT) ? (uint8_t)MTT_CT_N : (uint8_t)MTT_STATE_N);
 }
 
-/* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1
- * for CA), symmetric; in place (xp = x, Pp = P) allowed. */
-static void model_predict(mtt_model_kind k, mtt_real dt, mtt_real q, const mtt_state x, mtt_cov P,
+/* xp = F x, Pp = F P F' + Q of model j (ALGORITHMS.md §2 for CV, §14.1
+ * for CA and CT), symmetric; in place (xp = x, Pp = P) allowed. */
+static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, const mtt_state x, mtt_cov P,
                           mtt_state xp, mtt_cov Pp)
 {
-    if (k == MTT_MODEL_CV) {
-        mtt_kalman_predict(dt, q, x, P, xp, Pp);
+    if (p->imm_model[j] == MTT_MODEL_CV) {
+        mtt_kalman_predict(dt, p->imm_psd[j], x, P, xp, Pp);
+    } else if (p->imm_model[j] == MTT_MODEL_CA) {
+        mtt_ca_predict(dt, p->imm_psd[j], x, P, xp, Pp);
     } else {
-        mtt_ca_predict(dt, q, x, P, xp, Pp);
+        mtt_ct_predict(dt, p->imm_psd[j], p->imm_turn_psd[j], x, P, xp, Pp);
     }
 }
 
@@ -56,7 +58,7 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
         (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
         for (j = 0; j < r; ++j) {
-            model_predict(p->imm_model[j], dt, p->imm_psd[j], tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
+            model_predict(p, j, dt, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
         }
     } else {
         /* First frame: the state is already at this time (seeded tracks). */
@@ -197,7 +199,8 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
 /* [CHOICE] ALGORITHMS.md §14.2: every model starts from the two-point (or
  * seeded) x, P; CA's acceleration from 0 with variance q_CA dt per axis
  * (one interval of its own white jerk: two points carry no information on
- * it); mode probabilities imm_initial. */
+ * it), CT's turn rate from 0 with variance q_turn dt (the same rule);
+ * mode probabilities imm_initial. */
 void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -215,6 +218,8 @@ void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         if (p->imm_model[j] == MTT_MODEL_CA) {
             t->Pm[j][4][4] = p->imm_psd[j] * dt;
             t->Pm[j][5][5] = p->imm_psd[j] * dt;
+        } else if (p->imm_model[j] == MTT_MODEL_CT) {
+            t->Pm[j][4][4] = p->imm_turn_psd[j] * dt;
         }
     }
 }

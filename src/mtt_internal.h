@@ -411,6 +411,10 @@ void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MT
 #define MTT_CT_N 5
 void mtt_ct_f(mtt_real dt, const mtt_real x[MTT_CT_N], mtt_real xp[MTT_CT_N], mtt_real F[][MTT_MAX_STATE]);
 void mtt_ct_q(mtt_real dt, mtt_real sw, mtt_real sw_turn, mtt_real Q[][MTT_MAX_STATE]);
+/* Extended Kalman prediction: xp = f(x), Pp = F P F' + Q (symmetric by
+ * construction); in place (xp = x, Pp = P) allowed. */
+void mtt_ct_predict(mtt_real dt, mtt_real sw, mtt_real sw_turn, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
+                    mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE]);
 /* imm_track.c: the IMM stages of track ti (motion = imm). */
 /* Mixing, every model's prediction and innovation, the combined
  * prediction in tf.xp/Pp/S/Si/K; returns 1 when every S is valid. */
