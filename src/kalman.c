@@ -143,36 +143,19 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         A[i][0] = -K[i][0];
         A[i][1] = -K[i][1];
     }
-    /* A Pp: A differs from I only in columns 0 and 1.  Only the entries
-     * read below: columns 0 and 1, and columns k >= max(i, 2). */
-    for (i = 0; i < MTT_MEAS_DIM; ++i) {
+    /* A Pp: A differs from I only in columns 0 and 1. */
+    for (i = 0; i < n; ++i) {
         for (k = 0; k < n; ++k) {
-            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + MTT_R(0.0);
-        }
-    }
-    for (i = MTT_MEAS_DIM; i < n; ++i) {
-        for (k = 0; k < MTT_MEAS_DIM; ++k) {
-            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + Pp[i][k];
-        }
-        for (k = i; k < n; ++k) {
-            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + Pp[i][k];
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= MTT_MEAS_DIM) ? Pp[i][k] : MTT_R(0.0));
         }
     }
     /* Upper triangle of beta0 Pp + (1 - beta0) A Pp A' + K M K', mirrored:
-     * symmetric by construction.  (A Pp A')[i][k] = AP[i][0] A[k][0] +
-     * AP[i][1] A[k][1] + AP[i][k] for k >= 2 (A is I there); the position
-     * columns k < 2 add 0, as two loops without a test. */
+     * symmetric by construction. */
     for (i = 0; i < n; ++i) {
         const mtt_real a = K[i][0] * m11 + K[i][1] * m12;
         const mtt_real b = K[i][0] * m12 + K[i][1] * m22;
-        for (k = i; k < MTT_MEAS_DIM; ++k) {
-            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + MTT_R(0.0);
-            const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
-            P[i][k] = v;
-            P[k][i] = v;
-        }
-        for (k = (i > MTT_MEAS_DIM) ? i : MTT_MEAS_DIM; k < n; ++k) {
-            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + AP[i][k];
+        for (k = i; k < n; ++k) {
+            const mtt_real pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= MTT_MEAS_DIM) ? AP[i][k] : MTT_R(0.0));
             const mtt_real v = beta0 * Pp[i][k] + w * pc + a * K[k][0] + b * K[k][1];
             P[i][k] = v;
             P[k][i] = v;

@@ -106,10 +106,11 @@ void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MT
         Pp[2 + a][4 + a] = Pp[4 + a][2 + a] = m[1][2] + qa[1][2];
     }
     /* the x-y block and its transpose */
-    for (i = 0; i < 3; ++i) {
-        Pp[2 * i][1] = Pp[1][2 * i] = M[2][i][0];
-        Pp[2 * i][3] = Pp[3][2 * i] = M[2][i][1];
-        Pp[2 * i][5] = Pp[5][2 * i] = M[2][i][2];
+    for (i = 0; i < 6; i += 2) {
+        const mtt_real *m = M[2][i / 2];
+        Pp[i][1] = Pp[1][i] = m[0];
+        Pp[i][3] = Pp[3][i] = m[1];
+        Pp[i][5] = Pp[5][i] = m[2];
     }
 }
 

@@ -206,7 +206,11 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
             double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
             s[0] = used ? (double)p->imm_model[k] : 0.0;
             s[1] = used ? (double)p->imm_psd[k] : 0.0;
+#if MTT_WITH_IMM
             s[2] = used ? (double)p->imm_turn_psd[k] : 0.0;
+#else
+            s[2] = 0.0;
+#endif
         }
         return MTT_OK;
     }

@@ -170,8 +170,10 @@ typedef struct mtt_params {
     uint8_t imm_n_models;           /**< r: models of an IMM track, 2..MTT_MAX_MODELS */
     mtt_model_kind imm_model[MTT_MAX_MODELS]; /**< model j (imm_models[j].model) */
     mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd) */
+#if MTT_WITH_IMM
     mtt_real imm_turn_psd[MTT_MAX_MODELS];    /**< its turn-rate noise (imm_models[j].turn_psd): > 0 for ct,
-                                                   0 for the other models */
+                                                   0 for the other models; only in a build with the IMM */
+#endif
     mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
     mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
