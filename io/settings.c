@@ -24,8 +24,10 @@ static const char *const seed_keys[] = {"x", "y", "vx", "vy", "P"};
 
 #define KEY_MAX 160 /* longest key path in a message */
 /* Values of one key through mtt_params_set/get: imm_transition's
- * MTT_MAX_MODELS^2 slots, imm_models' 1 + 2 MTT_MAX_MODELS. */
-#define VALS_MAX (MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS + 3)
+ * MTT_MAX_MODELS^2 slots, imm_models' 1 + MTT_PARAM_MODEL_VALUES MTT_MAX_MODELS. */
+#define VALS_MAX (MTT_MAX_MODELS * MTT_MAX_MODELS + MTT_PARAM_MODEL_VALUES * MTT_MAX_MODELS + 3)
+/* Values of a key for mtt_params_get / set. */
+#define N_VALUES(info) ((info)->type == MTT_PARAM_MODELS ? 1u + MTT_PARAM_MODEL_VALUES * (size_t)(info)->count : (size_t)(info)->count)
 
 typedef struct sctx {
     const char *file;
@@ -298,7 +300,8 @@ static int report_range(const sctx *c, const mtt_param_info *info, const char *k
     return MTT_IO_EINPUT;
 }
 
-/* imm_models: a list of 2 to MTT_MAX_MODELS objects {"model": M, "process_psd": q}. */
+/* imm_models: a list of 2 to MTT_MAX_MODELS objects {"model": M, "process_psd": q}, with
+ * "turn_psd": w (> 0) for M = ct and for ct only. */
 static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *j, const char *key,
                         double *v)
 {
@@ -317,6 +320,8 @@ static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *
     v[0] = (double)n;
     cJSON_ArrayForEach(e, j)
     {
+        double *s = v + 1 + MTT_PARAM_MODEL_VALUES * i;
+        int ct;
         snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)i);
         if (!cJSON_IsObject(e)) {
             mtt_io_error_key(c->file, sub, "must be an object {\"model\": M, \"process_psd\": q}, "
@@ -325,9 +330,10 @@ static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *
         }
         cJSON_ArrayForEach(m, e)
         {
-            if (strcmp(m->string, "model") != 0 && strcmp(m->string, "process_psd") != 0) {
+            if (strcmp(m->string, "model") != 0 && strcmp(m->string, "process_psd") != 0 &&
+                strcmp(m->string, "turn_psd") != 0) {
                 snprintf(sub, sizeof sub, "%s[%lu].%s", key, (unsigned long)i, m->string);
-                mtt_io_error_key(c->file, sub, "unknown key (expected model, process_psd)");
+                mtt_io_error_key(c->file, sub, "unknown key (expected model, process_psd, turn_psd)");
                 return MTT_IO_EINPUT;
             }
         }
@@ -345,18 +351,38 @@ static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *
                              m->valuestring, list);
             return MTT_IO_EINPUT;
         }
-        v[1 + 2 * i] = (double)a;
+        s[0] = (double)a;
+        ct = strcmp(info->names[a], "ct") == 0;
         m = cJSON_GetObjectItemCaseSensitive(e, "process_psd");
         snprintf(sub, sizeof sub, "%s[%lu].process_psd", key, (unsigned long)i);
         if (m == NULL) {
             mtt_io_error_key(c->file, sub, "missing");
             return MTT_IO_EINPUT;
         }
-        if ((rc = get_number(c, m, sub, &v[2 + 2 * i])) != MTT_IO_OK)
+        if ((rc = get_number(c, m, sub, &s[1])) != MTT_IO_OK)
             return rc;
-        if (!(v[2 + 2 * i] > 0.0)) {
-            mtt_io_error_key(c->file, sub, "must be > 0, found %g", v[2 + 2 * i]);
+        if (!(s[1] > 0.0)) {
+            mtt_io_error_key(c->file, sub, "must be > 0, found %g", s[1]);
             return MTT_IO_EINPUT;
+        }
+        /* turn_psd: the turn rate's noise, required by ct, refused elsewhere */
+        m = cJSON_GetObjectItemCaseSensitive(e, "turn_psd");
+        snprintf(sub, sizeof sub, "%s[%lu].turn_psd", key, (unsigned long)i);
+        if (m == NULL && ct) {
+            mtt_io_error_key(c->file, sub, "missing (model ct needs its turn-rate noise)");
+            return MTT_IO_EINPUT;
+        }
+        if (m != NULL && !ct) {
+            mtt_io_error_key(c->file, sub, "only model ct has a turn rate");
+            return MTT_IO_EINPUT;
+        }
+        if (m != NULL) {
+            if ((rc = get_number(c, m, sub, &s[2])) != MTT_IO_OK)
+                return rc;
+            if (!(s[2] > 0.0)) {
+                mtt_io_error_key(c->file, sub, "must be > 0, found %g", s[2]);
+                return MTT_IO_EINPUT;
+            }
         }
         ++i;
     }
@@ -404,7 +430,7 @@ static int parse_param(const sctx *c, const mtt_param_info *info, const cJSON *j
     case MTT_PARAM_MODELS:
         if ((rc = parse_models(c, info, j, key, v)) != MTT_IO_OK)
             return rc;
-        n = 1u + 2u * info->count;
+        n = N_VALUES(info);
         break;
     case MTT_PARAM_REAL:
         if (info->per_model != 0)
@@ -651,8 +677,7 @@ static int check_params(const sctx *c)
     case MTT_ERR_PARAM:
         if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
             mtt_params_info(row, &info) != MTT_OK ||
-            mtt_params_get(&c->s->params, bad, v,
-                           info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count) != MTT_OK) {
+            mtt_params_get(&c->s->params, bad, v, N_VALUES(info)) != MTT_OK) {
             mtt_io_error_key(c->file, bad != NULL ? bad : "?", "rejected by mtt_params_check");
             return MTT_IO_EINPUT;
         }
@@ -711,8 +736,7 @@ void mtt_io_list_settings(FILE *out)
         return;
     fputs("| key | type | range | default | meaning |\n|---|---|---|---|---|\n", out);
     for (i = 0; mtt_params_info(i, &info) == MTT_OK; ++i) {
-        if (mtt_params_get(&def, info->key, v,
-                           info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count) != MTT_OK)
+        if (mtt_params_get(&def, info->key, v, N_VALUES(info)) != MTT_OK)
             return;
         switch (info->type) {
         case MTT_PARAM_MODELS:
@@ -724,14 +748,21 @@ void mtt_io_list_settings(FILE *out)
                                         k == 0 ? "" : ", ", info->names[k]);
             len += (size_t)snprintf(range + len, sizeof range - len, "; `process_psd` ");
             range_text(info, range + len, sizeof range - len);
+            len = strlen(range);
+            snprintf(range + len, sizeof range - len, "; `turn_psd` > 0, for `ct` only and required by it");
             len = 0;
             deflt[0] = '\0';
             for (k = 0; k < (size_t)v[0]; ++k) {
-                char num[32];
-                format_real(v[2 + 2 * k], num, sizeof num);
+                const double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
+                char num[32], turn[48] = "";
+                format_real(s[1], num, sizeof num);
+                if (s[2] > 0.0) {
+                    size_t t = (size_t)snprintf(turn, sizeof turn, ", \"turn_psd\": ");
+                    format_real(s[2], turn + t, sizeof turn - t);
+                }
                 len += (size_t)snprintf(deflt + len, sizeof deflt - len,
-                                        "%s{\"model\": \"%s\", \"process_psd\": %s}", k == 0 ? "`[" : ", ",
-                                        info->names[(size_t)v[1 + 2 * k]], num);
+                                        "%s{\"model\": \"%s\", \"process_psd\": %s%s}", k == 0 ? "`[" : ", ",
+                                        info->names[(size_t)s[0]], num, turn);
             }
             snprintf(deflt + len, sizeof deflt - len, "]`");
             break;
@@ -794,21 +825,17 @@ void mtt_io_list_settings(FILE *out)
 }
 
 /* imm_models not given: docs/FORMATS.md's default follows process_psd,
- * [cv with process_psd, ca with 10 process_psd], keeping imm_transition
- * and imm_initial as read (r stays 2). */
+ * [cv with process_psd, ca with process_psd], keeping imm_transition and
+ * imm_initial as read (r stays 2). */
 static int default_models(const sctx *c)
 {
     mtt_params *p = &c->s->params;
     uint8_t i;
     if (p->imm_n_models < 2u)
         return MTT_IO_OK; /* a build without IMM */
+    (void)c;
     for (i = 0; i < 2u; ++i) {
-        p->imm_psd[i] = (i == 1u) ? MTT_R(10.0) * p->process_psd : p->process_psd;
-        if (!(p->imm_psd[i] <= MTT_REAL_MAX)) {
-            mtt_io_error_key(c->file, "process_psd", "10 x process_psd (the default CA model of "
-                             "imm_models) does not fit the tracker's real type");
-            return MTT_IO_EINPUT;
-        }
+        p->imm_psd[i] = p->process_psd;
     }
     return MTT_IO_OK;
 }

@@ -188,11 +188,12 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_pair np;
             np.track = i;
             np.meas = cm[a];
-            np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
 #if MTT_WITH_IMM
-            if (imm) {
-                np.p = mtt_imm_gate_p(trk, i, trk->meas[cm[a]].x, trk->meas[cm[a]].y);
-            }
+            /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
+            np.p = imm ? mtt_imm_gate_p(trk, i, trk->meas[cm[a]].x, trk->meas[cm[a]].y)
+                       : peak * mtt_exp(MTT_R(-0.5) * cd[a]);
+#else
+            np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
 #endif
             np.w = MTT_R(0.0);
             np.lam = MTT_R(0.0);

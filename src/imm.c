@@ -60,41 +60,52 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
 
 /* Moment-matched mixture of the common parts of r models with weights w
  * (Σ w = 1), as differences to model ref (see the header):
- *   xo = x_ref + Σ_{i≠ref} w_i (x_i - x_ref)
- *   Po = P_ref + Σ_i w_i [d_i d_i' + (P_i - P_ref)],  d_i = x_i - xo
- * Po symmetric by construction (upper triangle mirrored). */
+ *   D_i = x_i - x_ref,  s = Σ_{i≠ref} w_i D_i,  xo = x_ref + s,
+ *   Po = P_ref + Σ_{i≠ref} w_i [d_i D_i' + (P_i - P_ref)],  d_i = D_i - s.
+ * The spread term is Σ_i w_i d_i d_i' (d_i = x_i - xo) in exact arithmetic:
+ * Σ_i w_i d_i s' = 0 and D_ref = 0, so only the other models contribute,
+ * one product each.  Only the upper triangle is formed, then mirrored:
+ * symmetric by construction.  xo, Po may be rows of a larger state. */
 static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MTT_MAX_STATE],
-                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xo[MTT_IMM_COMMON],
-                     mtt_real Po[MTT_IMM_COMMON][MTT_IMM_COMMON])
+                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xo[],
+                     mtt_real Po[][MTT_MAX_STATE])
 {
-    mtt_real d[MTT_MAX_MODELS][MTT_IMM_COMMON];
+    mtt_real D[MTT_MAX_MODELS][MTT_IMM_COMMON], s[MTT_IMM_COMMON] = {MTT_R(0.0)};
+    mtt_real(*Pr)[MTT_MAX_STATE] = P[ref];
+    const mtt_real *xr = x[ref];
     uint8_t i, a, b;
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        mtt_real s = MTT_R(0.0);
-        for (i = 0; i < r; ++i) {
-            if (i != ref) {
-                s += w[i] * (x[i][a] - x[ref][a]);
-            }
-        }
-        xo[a] = x[ref][a] + s;
-    }
     for (i = 0; i < r; ++i) {
         for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            d[i][a] = x[i][a] - xo[a];
+            D[i][a] = x[i][a] - xr[a]; /* 0 for ref */
+            s[a] += w[i] * D[i][a];
         }
     }
     for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        for (b = a; b < MTT_IMM_COMMON; ++b) {
-            mtt_real s = MTT_R(0.0);
-            for (i = 0; i < r; ++i) {
-                mtt_real t = d[i][a] * d[i][b];
-                if (i != ref) {
-                    t += P[i][a][b] - P[ref][a][b];
+        xo[a] = xr[a] + s[a];
+    }
+    /* Whole rows (fixed length 4: straight or vector code), then the upper
+     * triangle mirrored onto the lower. */
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        mtt_real row[MTT_IMM_COMMON];
+        for (b = 0; b < MTT_IMM_COMMON; ++b) {
+            row[b] = Pr[a][b];
+        }
+        for (i = 0; i < r; ++i) {
+            if (i != ref) {
+                mtt_real(*Pi)[MTT_MAX_STATE] = P[i];
+                const mtt_real wd = w[i] * (D[i][a] - s[a]);
+                for (b = 0; b < MTT_IMM_COMMON; ++b) {
+                    row[b] += wd * D[i][b] + w[i] * (Pi[a][b] - Pr[a][b]);
                 }
-                s += w[i] * t;
             }
-            Po[a][b] = P[ref][a][b] + s;
-            Po[b][a] = Po[a][b];
+        }
+        for (b = 0; b < MTT_IMM_COMMON; ++b) {
+            Po[a][b] = row[b];
+        }
+    }
+    for (a = 1; a < MTT_IMM_COMMON; ++a) {
+        for (b = 0; b < a; ++b) {
+            Po[a][b] = Po[b][a];
         }
     }
 }
@@ -113,30 +124,25 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
         }
     }
     for (j = 0; j < r; ++j) {
-        mtt_real w[MTT_MAX_MODELS], xo[MTT_IMM_COMMON], Po[MTT_IMM_COMMON][MTT_IMM_COMMON];
+        mtt_real w[MTT_MAX_MODELS];
         for (i = 0; i < r; ++i) {
             w[i] = mix[i][j];
         }
         /* Common part: the mixture with reference model j. */
-        mixture4(r, j, w, x, P, xo, Po);
-        for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            x0[j][a] = xo[a];
-            for (b = 0; b < MTT_IMM_COMMON; ++b) {
-                P0[j][a][b] = Po[a][b];
-            }
-        }
-        /* Extras of model j: own mean and block, cross terms scaled by μ_{j|j}. */
+        mixture4(r, j, w, x, P, x0[j], P0[j]);
+        /* Extras of model j: own mean and block, cross terms scaled by
+         * μ_{j|j} (P[j] is symmetric: every stage writes it mirrored). */
         for (a = MTT_IMM_COMMON; a < n[j]; ++a) {
+            const mtt_real *pa = P[j][a];
+            mtt_real *qa = P0[j][a];
             x0[j][a] = x[j][a];
             for (b = 0; b < MTT_IMM_COMMON; ++b) {
-                mtt_real v = mix[j][j] * MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
-                P0[j][a][b] = v;
-                P0[j][b][a] = v;
+                qa[b] = mix[j][j] * pa[b];
+                P0[j][b][a] = qa[b];
             }
             for (b = a; b < n[j]; ++b) {
-                mtt_real v = MTT_R(0.5) * (P[j][a][b] + P[j][b][a]);
-                P0[j][a][b] = v;
-                P0[j][b][a] = v;
+                qa[b] = pa[b];
+                P0[j][b][a] = pa[b];
             }
         }
     }
@@ -167,8 +173,7 @@ mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real la
 }
 
 int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
-                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[MTT_IMM_COMMON],
-                    mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON])
+                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE])
 {
     if (r < 1u || r > MTT_MAX_MODELS) {
         return -1;

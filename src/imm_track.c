@@ -24,59 +24,21 @@
 /* State size of a model kind. */
 static uint8_t model_n(mtt_model_kind k)
 {
-    return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : (uint8_t)MTT_STATE_N;
+    return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : ((k == MTT_MODEL_CT) ? (uint8_t)MTT_CT_N : (uint8_t)MTT_STATE_N);
 }
 
-static void sym_n(uint8_t n, mtt_cov P)
-{
-    uint8_t i, j;
-    for (i = 0; i < n; ++i) {
-        for (j = (uint8_t)(i + 1u); j < n; ++j) {
-            const mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
-            P[i][j] = s;
-            P[j][i] = s;
-        }
-    }
-}
-
-/* Row (or column) c of F applied to a CA state vector v: F is per axis
- * [[1, T, T^2/2], [0, 1, T], [0, 0, 1]] with components (p, v, a) at
- * (ax, 2 + ax, 4 + ax), so row c adds T times component c + 2 (positions
- * and velocities) and T^2/2 times component c + 4 (positions). */
-static mtt_real ca_row(uint8_t c, mtt_real t, mtt_real h, mtt_real v0, mtt_real v2, mtt_real v4)
-{
-    return (c < 2u) ? v0 + t * v2 + h * v4 : ((c < 4u) ? v0 + t * v2 : v0);
-}
-
-/* xp = F x, Pp = F P F' + Q of one model (ALGORITHMS.md §2 for CV, §14.1
- * for CA: F's sparsity used, 3 terms per element instead of a 6x6 product). */
-static void model_predict(mtt_model_kind k, mtt_real dt, mtt_real q, const mtt_state x, mtt_cov P,
+/* xp = F x, Pp = F P F' + Q of model j (ALGORITHMS.md §2 for CV, §14.1
+ * for CA and CT), symmetric; in place (xp = x, Pp = P) allowed. */
+static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, const mtt_state x, mtt_cov P,
                           mtt_state xp, mtt_cov Pp)
 {
-    mtt_cov F, Q, FP;
-    const mtt_real h = MTT_R(0.5) * dt * dt;
-    uint8_t i, j;
-    if (k == MTT_MODEL_CV) {
-        mtt_motion_predict(dt, q, x, P, xp, Pp);
-        sym_n(MTT_STATE_N, Pp);
-        return;
+    if (p->imm_model[j] == MTT_MODEL_CV) {
+        mtt_kalman_predict(dt, p->imm_psd[j], x, P, xp, Pp);
+    } else if (p->imm_model[j] == MTT_MODEL_CA) {
+        mtt_ca_predict(dt, p->imm_psd[j], x, P, xp, Pp);
+    } else {
+        mtt_ct_predict(dt, p->imm_psd[j], p->imm_turn_psd[j], x, P, xp, Pp);
     }
-    mtt_ca_model(dt, q, F, Q);
-    /* components beyond 5 do not exist in CA: index them as 0 (weight 0) */
-    for (i = 0; i < MTT_CA_N; ++i) {
-        const uint8_t i2 = (uint8_t)((i + 2u < MTT_CA_N) ? i + 2u : i), i4 = (uint8_t)((i + 4u < MTT_CA_N) ? i + 4u : i);
-        xp[i] = ca_row(i, dt, h, x[i], x[i2], x[i4]);
-        for (j = 0; j < MTT_CA_N; ++j) {
-            FP[i][j] = ca_row(i, dt, h, P[i][j], P[i2][j], P[i4][j]);
-        }
-    }
-    for (i = 0; i < MTT_CA_N; ++i) {
-        for (j = 0; j < MTT_CA_N; ++j) {
-            const uint8_t j2 = (uint8_t)((j + 2u < MTT_CA_N) ? j + 2u : j), j4 = (uint8_t)((j + 4u < MTT_CA_N) ? j + 4u : j);
-            Pp[i][j] = ca_row(j, dt, h, FP[i][j], FP[i][j2], FP[i][j4]) + Q[i][j];
-        }
-    }
-    sym_n(MTT_CA_N, Pp);
 }
 
 int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -96,11 +58,7 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
         (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
         for (j = 0; j < r; ++j) {
-            mtt_state x0;
-            mtt_cov P0;
-            memcpy(x0, tf->xpm[j], sizeof x0);
-            memcpy(P0, tf->Ppm[j], sizeof P0);
-            model_predict(p->imm_model[j], dt, p->imm_psd[j], x0, P0, tf->xpm[j], tf->Ppm[j]);
+            model_predict(p, j, dt, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
         }
     } else {
         /* First frame: the state is already at this time (seeded tracks). */
@@ -206,9 +164,8 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     mtt_real(*e)[MTT_MAX_MODELS] = trk->row.imm_e;
     mtt_real(*bj)[MTT_MAX_GATED] = trk->row.imm_beta;
     mtt_real(*nu)[2] = trk->row.nu;
-    mtt_real xc[MTT_IMM_COMMON], Pc[MTT_IMM_COMMON][MTT_IMM_COMMON];
     uint16_t i;
-    uint8_t j, a;
+    uint8_t j;
     for (j = 0; j < r; ++j) {
         e0[j] = MTT_R(1.0);
     }
@@ -218,25 +175,32 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     }
     (void)mtt_imm_split(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
     for (j = 0; j < r; ++j) {
+        const uint8_t n = model_n(trk->par.imm_model[j]);
+        if (m == 0u) {
+            /* β_0 = 1: the PDA update is the prediction itself (as
+             * update.c's keep_prediction), copied rather than recomputed */
+            memcpy(t->xm[j], tf->xpm[j], n * sizeof t->xm[j][0]);
+            for (i = 0; i < n; ++i) {
+                memcpy(t->Pm[j][i], tf->Ppm[j][i], n * sizeof t->Pm[j][i][0]);
+            }
+            continue;
+        }
         for (i = 0; i < m; ++i) {
             const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
             nu[i][0] = ms->x - tf->xpm[j][0];
             nu[i][1] = ms->y - tf->xpm[j][1];
         }
-        mtt_kalman_pda_n(model_n(trk->par.imm_model[j]), tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j],
-                         trk->R, m, nu, bj[j], b0j[j], t->xm[j], t->Pm[j]);
+        mtt_kalman_pda_n(n, tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j], trk->R, m, nu, bj[j], b0j[j],
+                         t->xm[j], t->Pm[j]);
     }
-    (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, xc, Pc);
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        t->x[a] = xc[a];
-        memcpy(t->P[a], Pc[a], sizeof Pc[a]);
-    }
+    (void)mtt_imm_combine(r, t->mu, t->xm, t->Pm, t->x, t->P);
 }
 
 /* [CHOICE] ALGORITHMS.md §14.2: every model starts from the two-point (or
  * seeded) x, P; CA's acceleration from 0 with variance q_CA dt per axis
  * (one interval of its own white jerk: two points carry no information on
- * it); mode probabilities imm_initial. */
+ * it), CT's turn rate from 0 with variance q_turn dt (the same rule);
+ * mode probabilities imm_initial. */
 void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -254,6 +218,8 @@ void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         if (p->imm_model[j] == MTT_MODEL_CA) {
             t->Pm[j][4][4] = p->imm_psd[j] * dt;
             t->Pm[j][5][5] = p->imm_psd[j] * dt;
+        } else if (p->imm_model[j] == MTT_MODEL_CT) {
+            t->Pm[j][4][4] = p->imm_turn_psd[j] * dt;
         }
     }
 }

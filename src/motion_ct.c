@@ -11,7 +11,9 @@
  * Q: the CV model's white-noise acceleration (ALGORITHMS.md §2, PSD sw per
  * axis) on [x y vx vy] plus white noise of PSD sw_turn (rad^2/time^3) on
  * w, Q_ww = sw_turn T -- the usual approximation (the exact Q of a turning
- * target rotates with the velocity; its trace is the same). */
+ * target rotates with the velocity; its trace is the same).
+ * mtt_ct_predict is the extended Kalman prediction with them:
+ * xp = f(x), Pp = F P F' + Q with F the Jacobian at x. */
 #include "mtt_internal.h"
 
 #if MTT_WITH_IMM
@@ -79,6 +81,42 @@ void mtt_ct_q(mtt_real dt, mtt_real sw, mtt_real sw_turn, mtt_real Q[][MTT_MAX_S
         }
     }
     Q[4][4] = sw_turn * dt;
+}
+
+void mtt_ct_predict(mtt_real dt, mtt_real sw, mtt_real sw_turn, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
+                    mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE])
+{
+    mtt_real F[MTT_MAX_STATE][MTT_MAX_STATE], Q[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real FP[MTT_CT_N][MTT_CT_N], xn[MTT_CT_N];
+    int i, j, k;
+    mtt_ct_f(dt, x, xn, F);
+    mtt_ct_q(dt, sw, sw_turn, Q);
+    /* F P: F is I except rows 0 to 3, which reach columns 2 to 4 only */
+    for (i = 0; i < MTT_CT_N; ++i) {
+        for (j = 0; j < MTT_CT_N; ++j) {
+            mtt_real v = (i < 2) ? P[i][j] : MTT_R(0.0);
+            for (k = 2; k < MTT_CT_N; ++k) {
+                v += F[i][k] * P[k][j];
+            }
+            FP[i][j] = (i == 4) ? P[4][j] : v;
+        }
+    }
+    /* (F P) F' + Q, upper triangle mirrored (so that Pp may be P, after
+     * F P is formed) */
+    for (i = 0; i < MTT_CT_N; ++i) {
+        for (j = i; j < MTT_CT_N; ++j) {
+            mtt_real v = (j < 2) ? FP[i][j] : MTT_R(0.0);
+            for (k = 2; k < MTT_CT_N; ++k) {
+                v += FP[i][k] * F[j][k];
+            }
+            v = ((j == 4) ? FP[i][4] : v) + Q[i][j];
+            Pp[i][j] = v;
+            Pp[j][i] = v;
+        }
+    }
+    for (i = 0; i < MTT_CT_N; ++i) {
+        xp[i] = xn[i];
+    }
 }
 
 #endif /* MTT_WITH_IMM */

@@ -374,10 +374,10 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
  * returns 0; r out of range: returns 0, μ untouched. */
 mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real lam[], mtt_real mu[]);
 /* Combined 4-D estimate Σ μ_j x_j,c and its covariance with the spread
- * term (§14.1); the extras are not part of it.  Returns 0 or -1 (r). */
+ * term (§14.1), into the leading 4 entries of xc and 4 x 4 block of Pc;
+ * the extras are not part of it.  Returns 0 or -1 (r). */
 int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
-                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[MTT_IMM_COMMON],
-                    mtt_real Pc[MTT_IMM_COMMON][MTT_IMM_COMMON]);
+                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE]);
 /* Model-mixed detection probability PD* = Σ c̄_j PD_j (into *pd_mix) and
  * model-mixed likelihood of one measurement p* = Σ c̄_j PD_j p_j / PD*
  * (p_j: its gate-normalised likelihood under model j; 0 when PD* = 0 or
@@ -403,12 +403,20 @@ int mtt_imm_split(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
 #define MTT_CA_N 6
 void mtt_ca_axis(mtt_real dt, mtt_real q, mtt_real F[3][3], mtt_real Q[3][3]);
 void mtt_ca_model(mtt_real dt, mtt_real q, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE]);
+/* xp = F x, Pp = F P F' + Q of the CA model (Pp symmetric by construction);
+ * in place (xp = x, Pp = P) allowed. */
+void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
+                    mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE]);
 /* motion_ct.c: coordinated turn, [x y vx vy w].  xp = f(x) and the
  * Jacobian F = df/dx at x (extended Kalman prediction); Q: CV white-noise
  * acceleration (PSD sw) on [x y vx vy], sw_turn T on w. */
 #define MTT_CT_N 5
 void mtt_ct_f(mtt_real dt, const mtt_real x[MTT_CT_N], mtt_real xp[MTT_CT_N], mtt_real F[][MTT_MAX_STATE]);
 void mtt_ct_q(mtt_real dt, mtt_real sw, mtt_real sw_turn, mtt_real Q[][MTT_MAX_STATE]);
+/* Extended Kalman prediction: xp = f(x), Pp = F P F' + Q (symmetric by
+ * construction); in place (xp = x, Pp = P) allowed. */
+void mtt_ct_predict(mtt_real dt, mtt_real sw, mtt_real sw_turn, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
+                    mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE]);
 /* imm_track.c: the IMM stages of track ti (motion = imm). */
 /* Mixing, every model's prediction and innovation, the combined
  * prediction in tf.xp/Pp/S/Si/K; returns 1 when every S is valid. */

@@ -9,9 +9,11 @@
 #include "params_table.h"
 
 #if MTT_WITH_IMM
-/* docs/FORMATS.md's IMM defaults for r models: 0.95 on the diagonal of the
+/* docs/FORMATS.md's IMM defaults for r models: 0.99 on the diagonal of the
  * transition matrix, the rest of each row spread evenly, every track
- * starting in model 0; the slots beyond r are 0. */
+ * starting in model 0; the slots beyond r are 0.  (0.99 rather than a
+ * quicker 0.95: on straight targets in heavy clutter every switch into the
+ * manoeuvre model costs; docs/RESULTS.md "Manoeuvring targets: IMM".) */
 void mtt_params_imm_reset(mtt_params *p, uint8_t r)
 {
     uint8_t i, j;
@@ -21,22 +23,22 @@ void mtt_params_imm_reset(mtt_params *p, uint8_t r)
         for (j = 0; j < MTT_MAX_MODELS; ++j) {
             mtt_real v = MTT_R(0.0);
             if (i < r && j < r) {
-                v = (r == 1u) ? MTT_R(1.0) : ((i == j) ? MTT_R(0.95) : MTT_R(0.05) / (mtt_real)(r - 1u));
+                v = (r == 1u) ? MTT_R(1.0) : ((i == j) ? MTT_R(0.99) : MTT_R(0.01) / (mtt_real)(r - 1u));
             }
             p->imm_transition[i][j] = v;
         }
     }
 }
 
-/* imm_models' default: [cv with process_psd, ca with 10 process_psd] (one
- * cv model in a build with MTT_MAX_MODELS 1); unused slots cv with
- * process_psd. */
+/* imm_models' default: [cv with process_psd, ca with process_psd] (the
+ * same number as the CA model's jerk psd; one cv model in a build with
+ * MTT_MAX_MODELS 1); unused slots cv with process_psd. */
 static void imm_default(mtt_params *p)
 {
     uint8_t i;
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         p->imm_model[i] = (i == 1u) ? MTT_MODEL_CA : MTT_MODEL_CV;
-        p->imm_psd[i] = (i == 1u) ? MTT_R(10.0) * p->process_psd : p->process_psd;
+        p->imm_psd[i] = p->process_psd;
     }
     mtt_params_imm_reset(p, (MTT_MAX_MODELS >= 2) ? 2u : 1u);
 }
@@ -60,7 +62,12 @@ static const char *check_imm(const mtt_params *p)
     }
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         mtt_real s = MTT_R(0.0);
-        if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CA)) {
+        if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CT)) {
+            return "imm_models";
+        }
+        /* the turn-rate noise: > 0 (and finite) for ct, 0 for the others */
+        if (i < r && ((p->imm_model[i] == MTT_MODEL_CT) ? !(p->imm_turn_psd[i] > MTT_R(0.0) && p->imm_turn_psd[i] <= MTT_REAL_MAX)
+                                                        : p->imm_turn_psd[i] != MTT_R(0.0))) {
             return "imm_models";
         }
         for (j = 0; j < MTT_MAX_MODELS; ++j) {
@@ -153,7 +160,7 @@ static const range_rule rules[MTT_RULE_COUNT] = {
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
 const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
 const char *const mtt_motion_names[2] = {"cv", "imm"};
-const char *const mtt_model_names[2] = {"cv", "ca"};
+const char *const mtt_model_names[3] = {"cv", "ca", "ct"};
 
 mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
 {

@@ -21,7 +21,7 @@ typedef struct info_row {
 #define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
     {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
       ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
-      ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 2 : 0,                 \
+      ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 3 : 0,                 \
       ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
      MTT_RULE_##member},
 #define INFO_FLAG(key, member, text)                                                               \
@@ -75,7 +75,8 @@ static mtt_status row_of(const void *p, const char *key, const void *v, size_t n
     if (st != MTT_OK) {
         return st;
     }
-    if (n != ((rows[k].info.type == MTT_PARAM_MODELS) ? 1u + 2u * rows[k].info.count : rows[k].info.count)) {
+    if (n != ((rows[k].info.type == MTT_PARAM_MODELS) ? 1u + MTT_PARAM_MODEL_VALUES * (size_t)rows[k].info.count
+                                                      : rows[k].info.count)) {
         return MTT_ERR_RANGE;
     }
     *r = &rows[k];
@@ -112,7 +113,7 @@ static void set_int(mtt_params *p, const info_row *r, int value)
 }
 
 #if MTT_WITH_IMM
-/* imm_models: v = r, then (model, psd) per slot; slots from r on keep
+/* imm_models: v = r, then (model, psd, turn psd) per slot; slots from r on keep
  * their values.  A new r resets imm_transition and imm_initial to their
  * defaults for r models (so a settings file that sets only imm_models is
  * valid). */
@@ -125,16 +126,24 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
     }
     m = (size_t)v[0];
     for (k = 0; k < m; ++k) {
-        const double kind = v[1 + 2 * k], psd = v[2 + 2 * k];
+        const double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
+        const double kind = s[0], psd = s[1], turn = s[2];
         if (!(kind >= 0.0 && kind < (double)r->info.n_names && kind == (double)(int)kind) ||
-            !(psd > 0.0 && psd <= (double)MTT_REAL_MAX)) {
+            !(psd > 0.0 && psd <= (double)MTT_REAL_MAX) || !(turn >= 0.0 && turn <= (double)MTT_REAL_MAX)) {
             return MTT_ERR_PARAM;
         }
         q.imm_model[k] = (mtt_model_kind)(int)kind;
         q.imm_psd[k] = (mtt_real)psd;
+        q.imm_turn_psd[k] = (mtt_real)turn;
     }
     if (!mtt_params_rule_ok(&q, r->rule, 0)) {
         return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
+    }
+    for (k = 0; k < m; ++k) {
+        /* turn psd: > 0 (not rounded to 0) for ct, 0 for the others */
+        if ((q.imm_model[k] == MTT_MODEL_CT) != (q.imm_turn_psd[k] > MTT_R(0.0))) {
+            return MTT_ERR_PARAM;
+        }
     }
     if (m != q.imm_n_models) {
         mtt_params_imm_reset(&q, (uint8_t)m);
@@ -194,8 +203,14 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
         v[0] = (double)p->imm_n_models;
         for (k = 0; k < MTT_MAX_MODELS; ++k) {
             const int used = k < p->imm_n_models;
-            v[1 + 2 * k] = used ? (double)p->imm_model[k] : 0.0;
-            v[2 + 2 * k] = used ? (double)p->imm_psd[k] : 0.0;
+            double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
+            s[0] = used ? (double)p->imm_model[k] : 0.0;
+            s[1] = used ? (double)p->imm_psd[k] : 0.0;
+#if MTT_WITH_IMM
+            s[2] = used ? (double)p->imm_turn_psd[k] : 0.0;
+#else
+            s[2] = 0.0;
+#endif
         }
         return MTT_OK;
     }

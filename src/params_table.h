@@ -47,14 +47,14 @@ extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
 extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_lm_ihpda_variant_names[2];
 extern const char *const mtt_motion_names[2];
-extern const char *const mtt_model_names[2];
+extern const char *const mtt_model_names[3];
 
 /* The IMM rows (ALGORITHMS.md §14): only in a build with MTT_WITH_IMM; without
  * it only `motion` is a key (and `imm` is refused). */
 #if MTT_WITH_IMM
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                      \
     REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL,           \
-         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³) or `ca` (constant acceleration, white-noise jerk, q in length²/time⁵); not given: cv with process_psd and ca with 10·process_psd (§14.1)") \
+         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³), `ca` (constant acceleration, white-noise jerk, q in length²/time⁵) or `ct` (coordinated turn with unknown turn rate: q as cv on the velocity, and `turn_psd`, the turn rate's white-noise psd in rad²/time³, > 0, given for ct only); not given: cv and ca, both with process_psd (§14.1)") \
     REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
          "r rows of r (r models), each row summing to 1",                                           \
          "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \

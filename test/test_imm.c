@@ -131,7 +131,7 @@ static void test_tv14_mode_update_and_combine(void)
         0.4965277778,  -0.4965277778, 2.909722222,   0.4965277778,
         0.2482638889,  -0.2482638889, 0.4965277778,  2.164930556};
     const mtt_real lam[2] = {MTT_R(0.01), MTT_R(0.03)};
-    mtt_real mu[2], cbar[2], muk[2], xc[4], Pc[4][4];
+    mtt_real mu[2], cbar[2], muk[2], xc[4], Pc[4][MTT_MAX_STATE];
     tv14_inputs(mu);
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, g_Pi, mu, cbar, g_mix));
     TV_ASSERT_REAL(0.0144, mtt_imm_mode_update(2, cbar, lam, muk));
@@ -199,7 +199,7 @@ static void test_mix_cv_ca(void)
         6.545028373, -1.824587436, -5.58298096,  26.15131684};
     static const uint8_t n[2] = {4, 6};
     const mtt_real lam[2] = {MTT_R(0.4), MTT_R(1.7)};
-    mtt_real mu[2] = {MTT_R(0.7), MTT_R(0.3)}, cbar[2], muk[2], xc[4], Pc[4][4];
+    mtt_real mu[2] = {MTT_R(0.7), MTT_R(0.3)}, cbar[2], muk[2], xc[4], Pc[4][MTT_MAX_STATE];
     int i, j;
     clear_all();
     g_Pi[0][0] = MTT_R(0.9); g_Pi[0][1] = MTT_R(0.1);
@@ -357,7 +357,7 @@ static void test_identical_cv_models(void)
         mtt_cov Pp;
         /* IMM */
         mtt_real L_imm, b0_imm, b_imm[M], pm[M], e0[R], e[MTT_MAX_GATED][MTT_MAX_MODELS];
-        mtt_real b0j[R], bj[MTT_MAX_MODELS][MTT_MAX_GATED], xc[4], Pc[4][4];
+        mtt_real b0j[R], bj[MTT_MAX_MODELS][MTT_MAX_GATED], xc[4], Pc[4][MTT_MAX_STATE];
         mtt_kalman_predict(dt, sw, x, P, xp, Pp);
         TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, R3, Sm, Si, &det, K));
         for (i = 0; i < M; ++i) {
@@ -452,7 +452,7 @@ static void test_identical_cv_models(void)
 static void test_combine_equal_exact(void)
 {
     static const double Pd[16] = {30, 4, 6, 1, 4, 25, 1, 5, 6, 1, 9, 0.5, 1, 5, 0.5, 8};
-    mtt_real mu[MTT_MAX_MODELS], xc[4], Pc[4][4];
+    mtt_real mu[MTT_MAX_MODELS], xc[4], Pc[4][MTT_MAX_STATE];
     int j, i;
     clear_all();
     for (j = 0; j < MTT_MAX_MODELS; ++j) {
@@ -466,7 +466,7 @@ static void test_combine_equal_exact(void)
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_combine(MTT_MAX_MODELS, mu, g_x, g_P, xc, Pc));
     TEST_ASSERT_EQUAL_MEMORY(g_x[0], xc, sizeof xc);
     for (i = 0; i < 4; ++i) {
-        TEST_ASSERT_EQUAL_MEMORY(g_P[0][i], Pc[i], sizeof Pc[i]);
+        TEST_ASSERT_EQUAL_MEMORY(g_P[0][i], Pc[i], 4 * sizeof Pc[i][0]);
     }
 }
 

@@ -81,6 +81,58 @@ static void test_ct_q(void)
     }
 }
 
+/* mtt_ct_predict: xp = f(x) and F P F' + Q with the Jacobian and Q of
+ * mtt_ct_f / mtt_ct_q (tested above), formed densely in double; in place
+ * the same. */
+static void test_ct_predict(void)
+{
+    static const double P5[25] = {30, 2, 8, 1, 0.05,  2, 28, 0.5, 7, -0.04,  8, 0.5, 6, 0.3, 0.02,
+                                  1, 7, 0.3, 5, -0.01,  0.05, -0.04, 0.02, -0.01, 0.004};
+    const ct_case *k = &ct_cases[0]; /* turn, wT = 0.25 */
+    mtt_real x[MTT_MAX_STATE] = {0}, xp[MTT_MAX_STATE], xf[MTT_CT_N], P[MTT_MAX_STATE][MTT_MAX_STATE] = {{0}},
+             Pp[MTT_MAX_STATE][MTT_MAX_STATE], F[MTT_MAX_STATE][MTT_MAX_STATE], Q[MTT_MAX_STATE][MTT_MAX_STATE];
+    double FP[5][5], e;
+    int i, j, m;
+    char w[48];
+    for (i = 0; i < 5; ++i) {
+        x[i] = (mtt_real)k->x[i];
+        for (j = 0; j < 5; ++j) {
+            P[i][j] = (mtt_real)P5[5 * i + j];
+        }
+    }
+    mtt_ct_f((mtt_real)k->dt, x, xf, F);
+    mtt_ct_q((mtt_real)k->dt, MTT_R(5.0), MTT_R(0.01), Q);
+    for (i = 0; i < 5; ++i) {
+        for (j = 0; j < 5; ++j) {
+            FP[i][j] = 0.0;
+            for (m = 0; m < 5; ++m) {
+                FP[i][j] += (double)F[i][m] * P5[5 * m + j];
+            }
+        }
+    }
+    mtt_ct_predict((mtt_real)k->dt, MTT_R(5.0), MTT_R(0.01), x, P, xp, Pp);
+    for (i = 0; i < 5; ++i) {
+        snprintf(w, sizeof w, "xp[%d]", i);
+        TV_ASSERT_REAL_MSG(k->xp[i], xp[i], w);
+        for (j = 0; j < 5; ++j) {
+            e = (double)Q[i][j];
+            for (m = 0; m < 5; ++m) {
+                e += FP[i][m] * (double)F[j][m];
+            }
+            snprintf(w, sizeof w, "Pp[%d][%d]", i, j);
+            TV_ASSERT_REAL_MSG(e, Pp[i][j], w);
+            TEST_ASSERT_TRUE(Pp[i][j] == Pp[j][i]);
+        }
+    }
+    /* the turn rate's variance: its own plus sw_turn dt */
+    TV_ASSERT_REAL(0.014, Pp[4][4]);
+    mtt_ct_predict((mtt_real)k->dt, MTT_R(5.0), MTT_R(0.01), x, P, x, P);
+    TEST_ASSERT_EQUAL_MEMORY(xp, x, 5 * sizeof x[0]);
+    for (i = 0; i < 5; ++i) {
+        TEST_ASSERT_EQUAL_MEMORY(Pp[i], P[i], 5 * sizeof P[i][0]);
+    }
+}
+
 #else
 
 static void test_ct_left_out(void)
@@ -96,6 +148,7 @@ int main(void)
 #if MTT_WITH_IMM
     RUN_TEST(test_ct_transition_and_jacobian);
     RUN_TEST(test_ct_q);
+    RUN_TEST(test_ct_predict);
 #else
     RUN_TEST(test_ct_left_out);
 #endif

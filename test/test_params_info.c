@@ -21,11 +21,11 @@ static size_t n_keys(void)
 }
 
 /* Values of a key through mtt_params_set / get (imm_models: r, then a
- * model and a psd per slot). */
-#define VALS (MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS + 3)
+ * model, a psd and a turn psd per slot). */
+#define VALS (MTT_MAX_MODELS * MTT_MAX_MODELS + MTT_PARAM_MODEL_VALUES * MTT_MAX_MODELS + 3)
 static size_t n_values(const mtt_param_info *info)
 {
-    return info->type == MTT_PARAM_MODELS ? 1u + 2u * info->count : info->count;
+    return info->type == MTT_PARAM_MODELS ? 1u + MTT_PARAM_MODEL_VALUES * (size_t)info->count : info->count;
 }
 
 static void test_table_lists_the_settings_keys(void)
@@ -239,6 +239,53 @@ static void test_cross_rules_are_left_to_check(void)
     TEST_ASSERT_NULL(info->cross);
 }
 
+#if MTT_WITH_IMM
+/* imm_models through set / get: (model, psd, turn psd) per slot; ct needs
+ * a turn psd > 0, the other models refuse one; nothing changes on error. */
+static void test_models_with_a_turn_rate(void)
+{
+    mtt_params p, before;
+    const char *bad = NULL;
+    double v[1 + MTT_PARAM_MODEL_VALUES * MTT_MAX_MODELS] = {0.0};
+    const size_t n = sizeof v / sizeof v[0];
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.motion = MTT_MOTION_IMM;
+    v[0] = 2.0;
+    v[1] = (double)MTT_MODEL_CV; v[2] = 0.5; v[3] = 0.0;
+    v[4] = (double)MTT_MODEL_CT; v[5] = 30.0; v[6] = 0.005;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_set(&p, "imm_models", v, n));
+    TEST_ASSERT_EQUAL_INT(MTT_MODEL_CT, p.imm_model[1]);
+    TEST_ASSERT_TRUE(p.imm_psd[1] == MTT_R(30.0));
+    TEST_ASSERT_TRUE(p.imm_turn_psd[1] == MTT_R(0.005));
+    TEST_ASSERT_TRUE(p.imm_turn_psd[0] == MTT_R(0.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+    memset(v, 0, sizeof v);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_get(&p, "imm_models", v, n));
+    TEST_ASSERT_EQUAL_DOUBLE(2.0, v[0]);
+    TEST_ASSERT_EQUAL_DOUBLE((double)MTT_MODEL_CT, v[4]);
+    TEST_ASSERT_EQUAL_DOUBLE(30.0, v[5]);
+    TEST_ASSERT_EQUAL_DOUBLE((double)(mtt_real)0.005, v[6]);
+    before = p;
+    v[6] = 0.0; /* ct without its turn-rate noise */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_set(&p, "imm_models", v, n));
+    v[6] = 0.005;
+    v[3] = 0.1; /* cv with one */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_set(&p, "imm_models", v, n));
+    v[3] = 0.0;
+    v[6] = -1.0;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_set(&p, "imm_models", v, n));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
+    /* the same rule in mtt_params_check, for parameters written directly */
+    p.imm_turn_psd[1] = MTT_R(0.0);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("imm_models", bad);
+    p = before;
+    p.imm_turn_psd[0] = MTT_R(1.0);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("imm_models", bad);
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -248,5 +295,8 @@ int main(void)
     RUN_TEST(test_set_checks_the_table_ranges);
     RUN_TEST(test_set_refuses_bad_keys_counts_and_indices);
     RUN_TEST(test_cross_rules_are_left_to_check);
+#if MTT_WITH_IMM
+    RUN_TEST(test_models_with_a_turn_rate);
+#endif
     return UNITY_END();
 }

@@ -88,6 +88,20 @@ cfg_fail() {
     expect_fail 2 "$1.json: $2" "$data/$1.json" "$data/valid.det.csv"
 }
 
+# imm_ok CONFIG N: motion = imm runs; the tracks file gains mu_0 .. mu_{N-1},
+# the model probabilities, summing to 1 on every row (docs/FORMATS.md).
+imm_ok() {
+    rm -f "$out"
+    run --config "$data/$1.json" --detections "$data/valid.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    mu=$(awk -v n="$2" 'BEGIN { for (j = 0; j < n; ++j) printf ",mu_%d", j }')
+    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy$mu" ] ||
+        fail "header $(head -n 1 "$out")"
+    awk -F, -v n="$2" 'NR > 1 { s = 0; for (j = 13; j < 13 + n; ++j) s += $j
+                                if (NF != 12 + n || s < 0.9999 || s > 1.0001) bad = 1 }
+                       END { exit bad }' "$out" || fail "a row without $2 model probabilities summing to 1"
+}
+
 # expect_ok ARGS...: a run that must succeed silently and write the tracks.
 expect_ok() {
     rm -f "$out"
@@ -330,17 +344,11 @@ cfg_seed_bad_cov)
     ;;
 cfg_imm_unsupported)    cfg_fail cfg_imm_unsupported "key 'motion': motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda" ;;
 cfg_imm_transition_size) cfg_fail cfg_imm_transition_size "key 'imm_transition': must be r rows of r (r models), each row summing to 1 (with 2 models in imm_models)" ;;
-cfg_imm_bad_model)      cfg_fail cfg_imm_bad_model "key 'imm_models[0].model': unknown model 'ct' (expected one of: cv, ca)" ;;
-cfg_imm_valid)
-    # motion = imm: the tracks file gains mu_0, mu_1 (docs/FORMATS.md)
-    rm -f "$out"
-    run --config "$data/cfg_imm_valid.json" --detections "$data/valid.det.csv" --tracks "$out"
-    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
-    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1" ] ||
-        fail "header $(head -n 1 "$out")"
-    awk -F, 'NR > 1 && (NF != 14 || $13 + $14 < 0.9999 || $13 + $14 > 1.0001) { bad = 1 } END { exit bad }' "$out" ||
-        fail "a row without two model probabilities summing to 1"
-    ;;
+cfg_imm_bad_model)      cfg_fail cfg_imm_bad_model "key 'imm_models[0].model': unknown model 'cj' (expected one of: cv, ca, ct)" ;;
+cfg_imm_valid)          imm_ok cfg_imm_valid 2 ;;
+cfg_imm_ct_no_turn)     cfg_fail cfg_imm_ct_no_turn "key 'imm_models[1].turn_psd': missing (model ct needs its turn-rate noise)" ;;
+cfg_imm_turn_not_ct)    cfg_fail cfg_imm_turn_not_ct "key 'imm_models[0].turn_psd': only model ct has a turn rate" ;;
+cfg_imm_ct_valid)       imm_ok cfg_imm_ct_valid 3 ;; # CV, CA and a coordinated turn
 *)
     echo "run.sh: unknown case '$case'" >&2
     exit 2

@@ -98,7 +98,9 @@ typedef enum mtt_motion {
 /** A model of an IMM track (docs/FORMATS.md `imm_models`). */
 typedef enum mtt_model_kind {
     MTT_MODEL_CV = 0,   /**< nearly constant velocity, white-noise acceleration, psd length²/time³ */
-    MTT_MODEL_CA = 1    /**< nearly constant acceleration, white-noise jerk, psd length²/time⁵ */
+    MTT_MODEL_CA = 1,   /**< nearly constant acceleration, white-noise jerk, psd length²/time⁵ */
+    MTT_MODEL_CT = 2    /**< coordinated turn [x y vx vy ω] (extended Kalman): psd as cv on the velocity,
+                             and a turn-rate psd (imm_turn_psd) in rad²/time³ on ω */
 } mtt_model_kind;
 
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
@@ -168,22 +170,30 @@ typedef struct mtt_params {
     uint8_t imm_n_models;           /**< r: models of an IMM track, 2..MTT_MAX_MODELS */
     mtt_model_kind imm_model[MTT_MAX_MODELS]; /**< model j (imm_models[j].model) */
     mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd) */
+#if MTT_WITH_IMM
+    mtt_real imm_turn_psd[MTT_MAX_MODELS];    /**< its turn-rate noise (imm_models[j].turn_psd): > 0 for ct,
+                                                   0 for the other models; only in a build with the IMM */
+#endif
     mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
     mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
 
+/** Values per imm_models slot in mtt_params_set / get: model, process_psd, turn_psd. */
+#define MTT_PARAM_MODEL_VALUES 3
+
 /** Type of a settings key (mtt_param_info). */
 typedef enum mtt_param_type {
     MTT_PARAM_REAL = 0, /**< count mtt_real values */
     MTT_PARAM_BOOL,     /**< one value, 0 or 1 (a JSON boolean) */
     MTT_PARAM_ENUM,     /**< one value, the index of one of names[] */
-    MTT_PARAM_MODELS    /**< imm_models: a list of up to count {model, process_psd}.  mtt_params_set/get
-                             take 1 + 2 count values: r, then (model index into names[], psd) for each
-                             of count slots (slots from r on are ignored by set, zero from get); psd
-                             within lo, hi.  Setting it resets imm_transition and imm_initial to their
-                             defaults for r models */
+    MTT_PARAM_MODELS    /**< imm_models: a list of up to count {model, process_psd, turn_psd}.
+                             mtt_params_set/get take 1 + MTT_PARAM_MODEL_VALUES count values: r, then
+                             (model index into names[], psd, turn psd) for each of count slots (slots
+                             from r on are ignored by set, zero from get); psd within lo, hi; turn psd
+                             > 0 (and finite in mtt_real) for ct, 0 for the other models.  Setting it
+                             resets imm_transition and imm_initial to their defaults for r models */
 } mtt_param_type;
 
 /** One settings key of mtt_params: the table behind mtt_params_check,

@@ -173,8 +173,8 @@ static int numbers(PyObject *seq, double *v, Py_ssize_t n, const char *what)
 }
 
 /* Values of one key: 16 (a 4x4 covariance), imm_transition's
- * MTT_MAX_MODELS^2, imm_models' 1 + 2 MTT_MAX_MODELS. */
-#define PARAM_VALUES_MAX (16 + MTT_MAX_MODELS * MTT_MAX_MODELS + 2 * MTT_MAX_MODELS)
+ * MTT_MAX_MODELS^2, imm_models' 1 + MTT_PARAM_MODEL_VALUES MTT_MAX_MODELS. */
+#define PARAM_VALUES_MAX (16 + MTT_MAX_MODELS * MTT_MAX_MODELS + MTT_PARAM_MODEL_VALUES * MTT_MAX_MODELS)
 
 /* set_param(key, values) -> status of mtt_params_set (before init only) */
 static PyObject *tracker_set_param(CoreTracker *self, PyObject *args)
@@ -507,6 +507,7 @@ PyMODINIT_FUNC PyInit__core(void)
         PyModule_AddObject(m, "REAL_MAX", PyFloat_FromDouble((double)MTT_REAL_MAX)) < 0 ||
         PyModule_AddIntConstant(m, "MAX_TRACKS", MTT_MAX_TRACKS) < 0 ||
         PyModule_AddIntConstant(m, "MAX_MODELS", MTT_MAX_MODELS) < 0 ||
+        PyModule_AddIntConstant(m, "MODEL_VALUES", MTT_PARAM_MODEL_VALUES) < 0 ||
         PyModule_AddIntConstant(m, "TABLE_COLUMNS", TABLE_COLUMNS) < 0 ||
         PyModule_AddIntConstant(m, "MAX_MEAS", MTT_MAX_MEAS) < 0 ||
         PyModule_AddIntConstant(m, "ERR_TIME", MTT_ERR_TIME) < 0 ||

@@ -69,8 +69,8 @@ def params_table() -> list:
 
 def n_values(r) -> int:
     """Values of a key through set_param / get_param (imm_models: r, then a
-    model and a psd per slot)."""
-    return 1 + 2 * r.count if r.type == MODELS else r.count
+    model, a psd and a turn psd per slot)."""
+    return 1 + _core.MODEL_VALUES * r.count if r.type == MODELS else r.count
 
 
 class Seed:
@@ -233,7 +233,8 @@ class _Reader:
         return ", ".join(out)
 
     def models(self, r: _Row, v, key) -> list:
-        """imm_models: 2 to count objects {"model": M, "process_psd": q} (io/settings.c parse_models)."""
+        """imm_models: 2 to count objects {"model": M, "process_psd": q}, with "turn_psd": w
+        for M = ct and for ct only (io/settings.c parse_models)."""
         n = len(v) if _is_sequence(v) else -1
         if n < 2 or n > r.count:
             found = _json_type(v) if n < 0 else ("fewer" if n < 2 else "more")
@@ -247,20 +248,31 @@ class _Reader:
             if not isinstance(e, dict):
                 self.fail(sub, f'must be an object {{"model": M, "process_psd": q}}, found {_json_type(e)}')
             for m in e:
-                if m not in ("model", "process_psd"):
-                    self.fail(f"{sub}.{m}", "unknown key (expected model, process_psd)")
+                if m not in ("model", "process_psd", "turn_psd"):
+                    self.fail(f"{sub}.{m}", "unknown key (expected model, process_psd, turn_psd)")
             m = e.get("model")
             if not isinstance(m, str):
                 self.fail(f"{sub}.model", f"must be one of: {names}")
             if m not in r.names:
                 self.fail(f"{sub}.model", f"unknown model '{m}' (expected one of: {names})")
-            vals[1 + 2 * i] = float(r.names.index(m))
+            s = 1 + _core.MODEL_VALUES * i
+            vals[s] = float(r.names.index(m))
             if "process_psd" not in e:
                 self.fail(f"{sub}.process_psd", "missing")
             q = self.number(e["process_psd"], f"{sub}.process_psd")
             if not q > 0.0:
                 self.fail(f"{sub}.process_psd", f"must be > 0, found {_c_g(q)}")
-            vals[2 + 2 * i] = q
+            vals[s + 1] = q
+            ct = m == "ct"
+            if "turn_psd" not in e and ct:
+                self.fail(f"{sub}.turn_psd", "missing (model ct needs its turn-rate noise)")
+            if "turn_psd" in e and not ct:
+                self.fail(f"{sub}.turn_psd", "only model ct has a turn rate")
+            if ct:
+                w = self.number(e["turn_psd"], f"{sub}.turn_psd")
+                if not w > 0.0:
+                    self.fail(f"{sub}.turn_psd", f"must be > 0, found {_c_g(w)}")
+                vals[s + 2] = w
         return vals
 
     def per_model(self, r: _Row, v, key) -> list:
@@ -403,11 +415,8 @@ class _Reader:
         if int(v[0]) < 2:
             return  # a build without IMM
         _, p = self.core.get_param("process_psd", 1)
-        if 10.0 * p[0] > _core.REAL_MAX:
-            self.fail("process_psd", "10 x process_psd (the default CA model of imm_models) does not fit "
-                      "the tracker's real type")
         w = list(v)
-        w[2], w[4] = p[0], 10.0 * p[0]
+        w[2] = w[2 + _core.MODEL_VALUES] = p[0]  # cv and ca, both with process_psd
         self.core.set_param(row.key, tuple(w))
 
     def check(self):
