@@ -143,7 +143,7 @@ list_settings)
     stdout_has "| \`terminate_threshold\` | number | in [0, 1); below confirm_threshold | 0.01 | "
     stdout_has "| \`initial_tracks\` | list | "
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 32 ] || fail "expected 32 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 36 ] || fail "expected 36 key rows"
     ;;
 version)
     run --version
@@ -340,6 +340,17 @@ cfg_imm_valid)
         fail "header $(head -n 1 "$out")"
     awk -F, 'NR > 1 && (NF != 14 || $13 + $14 < 0.9999 || $13 + $14 > 1.0001) { bad = 1 } END { exit bad }' "$out" ||
         fail "a row without two model probabilities summing to 1"
+    ;;
+cfg_split_unsupported)  cfg_fail cfg_split_unsupported "key 'split': split = true needs motion = imm with a cv model in imm_models" ;;
+cfg_split_valid)
+    # split = true: after mu_0, mu_1 the split probability and the parent column (docs/FORMATS.md)
+    rm -f "$out"
+    run --config "$data/cfg_split_valid.json" --detections "$data/valid.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1,p_split,parent" ] ||
+        fail "header $(head -n 1 "$out")"
+    awk -F, 'NR > 1 && (NF != 16 || $15 < 0 || $15 > 1) { bad = 1 } END { exit bad }' "$out" ||
+        fail "a row without a split probability in [0, 1] and a parent column"
     ;;
 *)
     echo "run.sh: unknown case '$case'" >&2
