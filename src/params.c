@@ -132,9 +132,10 @@ mtt_status mtt_params_default(mtt_params *p)
      * without a second target falls back soon (p52), split targets seldom
      * recombine (p62) */
     p->split = 0;
-    p->split_p25 = MTT_R(0.02);
+    p->split_p25 = MTT_R(0.05);
     p->split_p52 = MTT_R(0.1);
     p->split_p62 = MTT_R(0.02);
+    p->split_dv = MTT_R(0.0);
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;

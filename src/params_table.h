@@ -75,7 +75,9 @@ extern const char *const mtt_model_names[2];
     REAL("split_p52", split_p52, 1, 0.0, 1.0, 0, NULL,                                            \
          "with `split`: probability that a \"just split\" finds no second target and falls back to cv; the rest goes to \"split\" (§14.3)") \
     REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL,                                            \
-         "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)")
+         "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)") \
+    REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                     \
+         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)")
 #else
 #define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 #endif

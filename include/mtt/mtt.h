@@ -175,6 +175,7 @@ typedef struct mtt_params {
     mtt_real split_p25;             /**< per scan: cv -> "just split" */
     mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
     mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */
+    mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std) */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
