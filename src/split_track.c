@@ -217,12 +217,39 @@ static mtt_real single_lik(const mtt_tracker *trk, uint16_t ti)
     return MTT_R(1.0) - pdpg + pdpg * sum;
 }
 
+/* With split_dv > 0 the velocity impulse is the child's alone: the parent
+ * half of model 5 (target 1, the largest-β cluster) is recomputed from the
+ * cv prediction without it, and the cross covariance of the halves is
+ * dropped (their prediction errors are no longer the same; a block-diagonal
+ * stacked covariance stays positive semi-definite).  Uses sc->xp, sc->Pp as
+ * scratch (model 6 is done with them). */
+static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t cm = cv_model(&trk->par);
+    mtt_real lik;
+    int a, b;
+    if (mtt_split_just(N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
+                       MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
+        return; /* the impulse then stays in both halves */
+    }
+    for (a = 0; a < N1; ++a) {
+        sc->x5[a] = sc->xp[a];
+        for (b = 0; b < NS; ++b) {
+            sc->P5[a][b] = (b < N1) ? sc->Pp[a][b] : MTT_R(0.0);
+            sc->P5[b][a] = (b < N1) ? sc->Pp[b][a] : MTT_R(0.0);
+        }
+    }
+}
+
 /* Model 5 of track ti into sc->x5, sc->P5; returns Λ_5 (0 with fewer than
  * 2 measurements in its gate).  Its prediction is the cv model's plus the
  * split's velocity impulse: P̄_5 = P̄_cv + Q(dt, split_dv² / dt), white
  * acceleration over the interval whose velocity variance is split_dv²
  * [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
- * (only their order and ratios matter, §14.3 model 5). */
+ * (only their order and ratios matter, §14.3 model 5); the impulse is then
+ * taken out of the parent half (impulse_to_child). */
 static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
     mtt_split_scratch *sc = &trk->split_scr;
@@ -257,6 +284,9 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (m < 2u || mtt_split_just(N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta, MTT_R(1.0) / tf->lambda,
                                  sc->x5, sc->P5, sc->cluster, sc->beta_n, &lik) != 0) {
         return MTT_R(0.0);
+    }
+    if (p->split_dv > MTT_R(0.0)) {
+        impulse_to_child(trk, ti, m);
     }
     return lik;
 }
@@ -335,7 +365,7 @@ static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real lam_s, lam5, lam6 = MTT_R(0.0), c, mu5, mu6;
     int dec = 0;
     uint16_t j;
-    if (c6 > MTT_R(0.0)) {
+    if (sl != NULL && c6 > MTT_R(0.0)) {
         const mtt_real w[2] = {(MTT_R(1.0) - p->split_p52) * m5 / c6, (MTT_R(1.0) - p->split_p62) * m6 / c6};
         lam6 = model6(trk, ti, sl, dt, w, &dec);
     }

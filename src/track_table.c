@@ -177,11 +177,12 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
         memcpy(view->mu, t->mu, sizeof view->mu);
     }
 #endif
-    view->parent = MTT_NO_PARENT;
 #if MTT_WITH_SPLIT
     view->split = (uint8_t)(trk->par.split != 0);
     view->p_split = t->p_split;
     view->parent = t->parent;
+#else
+    view->parent = MTT_NO_PARENT;
 #endif
     return MTT_OK;
 }
