@@ -84,6 +84,17 @@ det_fail() {
 }
 
 # cfg_fail NAME MESSAGE: settings file NAME.json must be rejected.
+# cfg_columns CFG EXTRA BAD_ROW MESSAGE: CFG runs; the tracks header is the
+# twelve columns then EXTRA; no row matches the awk condition BAD_ROW.
+cfg_columns() {
+    rm -f "$out"
+    run --config "$data/$1.json" --detections "$data/valid.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,$2" ] ||
+        fail "header $(head -n 1 "$out")"
+    awk -F, "NR > 1 && ($3) { bad = 1 } END { exit bad }" "$out" || fail "$4"
+}
+
 cfg_fail() {
     expect_fail 2 "$1.json: $2" "$data/$1.json" "$data/valid.det.csv"
 }
@@ -333,24 +344,14 @@ cfg_imm_transition_size) cfg_fail cfg_imm_transition_size "key 'imm_transition':
 cfg_imm_bad_model)      cfg_fail cfg_imm_bad_model "key 'imm_models[0].model': unknown model 'ct' (expected one of: cv, ca)" ;;
 cfg_imm_valid)
     # motion = imm: the tracks file gains mu_0, mu_1 (docs/FORMATS.md)
-    rm -f "$out"
-    run --config "$data/cfg_imm_valid.json" --detections "$data/valid.det.csv" --tracks "$out"
-    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
-    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1" ] ||
-        fail "header $(head -n 1 "$out")"
-    awk -F, 'NR > 1 && (NF != 14 || $13 + $14 < 0.9999 || $13 + $14 > 1.0001) { bad = 1 } END { exit bad }' "$out" ||
-        fail "a row without two model probabilities summing to 1"
+    cfg_columns cfg_imm_valid mu_0,mu_1 \
+        'NF != 14 || $13 + $14 < 0.9999 || $13 + $14 > 1.0001' "a row without two model probabilities summing to 1"
     ;;
 cfg_split_unsupported)  cfg_fail cfg_split_unsupported "key 'split': split = true needs motion = imm with a cv model in imm_models" ;;
 cfg_split_valid)
     # split = true: after mu_0, mu_1 the split probability and the parent column (docs/FORMATS.md)
-    rm -f "$out"
-    run --config "$data/cfg_split_valid.json" --detections "$data/valid.det.csv" --tracks "$out"
-    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
-    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,mu_0,mu_1,p_split,parent" ] ||
-        fail "header $(head -n 1 "$out")"
-    awk -F, 'NR > 1 && (NF != 16 || $15 < 0 || $15 > 1) { bad = 1 } END { exit bad }' "$out" ||
-        fail "a row without a split probability in [0, 1] and a parent column"
+    cfg_columns cfg_split_valid mu_0,mu_1,p_split,parent \
+        'NF != 16 || $15 < 0 || $15 > 1' "a row without a split probability in [0, 1] and a parent column"
     ;;
 *)
     echo "run.sh: unknown case '$case'" >&2
