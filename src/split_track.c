@@ -78,10 +78,12 @@ static uint8_t cv_model(const mtt_params *p)
 static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split_state x0,
                         mtt_split_cov P0)
 {
+    const int r = (w[1] >= w[0]) ? 1 : 0; /* the heavier mode is the reference */
     mtt_real d[2][NS];
     int a, b, k;
     for (a = 0; a < NS; ++a) {
-        x0[a] = sl->xs[0][a] + w[1] * (sl->xs[1][a] - sl->xs[0][a]);
+        x0[a] = (w[1 - r] > MTT_R(0.0)) ? sl->xs[r][a] + w[1 - r] * (sl->xs[1 - r][a] - sl->xs[r][a])
+                                        : sl->xs[r][a];
         d[0][a] = sl->xs[0][a] - x0[a];
         d[1][a] = sl->xs[1][a] - x0[a];
     }
@@ -89,7 +91,9 @@ static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split
         for (b = 0; b < NS; ++b) {
             mtt_real s = MTT_R(0.0);
             for (k = 0; k < 2; ++k) {
-                s += w[k] * (sl->Ps[k][a][b] + d[k][a] * d[k][b]);
+                if (w[k] > MTT_R(0.0)) { /* a mode of weight 0 may hold a stale state */
+                    s += w[k] * (sl->Ps[k][a][b] + d[k][a] * d[k][b]);
+                }
             }
             P0[a][b] = s;
         }
