@@ -504,7 +504,7 @@ PyMODINIT_FUNC PyInit__core(void)
         return NULL;
     }
 #define NAME_OF(f) #f,
-    fields = Py_BuildValue("(sssssssssssssssss)", COUNT_FIELDS(NAME_OF) NULL);
+    fields = Py_BuildValue("(sssssssssssssssssss)", COUNT_FIELDS(NAME_OF) NULL);
 #undef NAME_OF
     if (fields == NULL || PyModule_AddObject(m, "COUNT_FIELDS", fields) < 0 ||
         PyModule_AddStringConstant(m, "VERSION", MTT_VERSION_STRING) < 0 ||
