@@ -697,6 +697,12 @@ static int check_params(const sctx *c)
         }
         return MTT_IO_EINPUT;
     case MTT_ERR_UNSUPPORTED:
+        if (bad != NULL && strcmp(bad, "split") == 0) {
+            mtt_io_error_key(c->file, bad, "split = true needs motion = imm with a cv model in "
+                             "imm_models, and a build with MTT_WITH_SPLIT (motion is %s)",
+                             c->s->params.motion == MTT_MOTION_IMM ? "imm" : "cv");
+            return MTT_IO_EINPUT;
+        }
         if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
             mtt_params_info(row, &info) != MTT_OK ||
             mtt_params_get(&c->s->params, bad, v, 1) != MTT_OK || info->type != MTT_PARAM_ENUM ||

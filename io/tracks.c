@@ -38,6 +38,12 @@ mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_s
         /* motion = imm: the model probabilities, imm_models order */
         for (k = 0; v.n_models > 1u && k < v.n_models; ++k)
             fprintf(out, "," REAL_FMT, (double)v.mu[k]);
+        /* split = true: P(split), then the parent's id (empty for none) */
+        if (v.split) {
+            fprintf(out, "," REAL_FMT ",", (double)v.p_split);
+            if (v.parent != MTT_NO_PARENT)
+                fprintf(out, "%" PRIu32, v.parent);
+        }
         fputc('\n', out);
         ++*rows;
     }
@@ -50,5 +56,7 @@ void mtt_io_write_tracks_header(FILE *out, const mtt_params *p)
     fputs(MTT_IO_TRACKS_HEADER, out);
     for (k = 0; p->motion == MTT_MOTION_IMM && k < p->imm_n_models; ++k)
         fprintf(out, ",mu_%u", (unsigned)k);
+    if (p->split)
+        fputs(",p_split,parent", out);
     fputc('\n', out);
 }

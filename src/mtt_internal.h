@@ -270,8 +270,7 @@ void mtt_track_manage(mtt_tracker *trk);
 #if MTT_WITH_SPLIT
 /* chi-square 0.99 quantile, 2 degrees of freedom: -2 ln 0.01 ([S3] eq. 27) */
 #define MTT_SPLIT_CHI2_99 MTT_R(9.2103403719761836)
-typedef mtt_real mtt_split_state[MTT_SPLIT_STATE];
-typedef mtt_real mtt_split_cov[MTT_SPLIT_STATE][MTT_SPLIT_STATE];
+/* mtt_split_state, mtt_split_cov, mtt_split_assoc: mtt/state.h (tracker scratch) */
 
 /* One target's (x, P) as a stacked state: [x; x], [[P, P], [P, P]] (the
  * two targets of a split start from the one estimate, [S3] eq. 5, 11). */
@@ -295,25 +294,6 @@ int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
                    mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
                    mtt_real *lik);
 
-/* Model 6 "split": the joint association of the two targets of a stacked
- * prediction with m validated measurements ([S3] eq. 14, non-parametric). */
-typedef struct mtt_split_assoc {
-    mtt_real a[2][MTT_MAX_SPLIT_MEAS];    /* PD V N(z_j; zhat_t, S_t), 0 outside t's gate */
-    mtt_real b[2];                        /* 1 - PD PG: target t undetected */
-    mtt_real beta[2][MTT_MAX_SPLIT_MEAS]; /* P(z_j is target t's) */
-    mtt_real beta_miss[2];                /* P(target t undetected) */
-    mtt_real beta0;                       /* P(theta_0): neither detected */
-    mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
-    mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
-    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
-    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
-    mtt_real pd;
-    mtt_real scale;                       /* V, or 1/lambda */
-    uint16_t m;
-    uint8_t n;
-    uint8_t parametric;                   /* 1: known clutter density lambda */
-    uint8_t joint;                        /* 1: coupled two-detection density */
-} mtt_split_assoc;
 /* Per-target gates (d^2 <= gamma with S_t = H P_tt H' + R) and the event
  * factors a, b.  lam = 0: non-parametric ([S3] eq. 14, V = vg; lik is the
  * ratio to V^-m); lam > 0: Poisson clutter of known density lam (the
@@ -349,6 +329,10 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
  * dropped.  -1 when a half is not positive definite. */
 int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
                        mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE]);
+/* The split stage of every confirmed IMM track after the update (split =
+ * true; split_track.c): mode probabilities of the split modes, decoupling
+ * into a child track. */
+void mtt_split_frame(mtt_tracker *trk, mtt_real dt);
 #endif /* MTT_WITH_SPLIT */
 
 /* ==== IMM (ALGORITHMS.md §14): imm.c, motion_ca.c, motion_ct.c ==========

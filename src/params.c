@@ -136,9 +136,29 @@ mtt_status mtt_params_default(mtt_params *p)
 #if MTT_WITH_IMM
     imm_default(p);
 #endif
+    /* ALGORITHMS.md §14.3 [CHOICE]: a split is rare (p25), a "just split"
+     * without a second target falls back soon (p52), split targets seldom
+     * recombine (p62) */
+    p->split = 0;
+    p->split_p25 = MTT_R(0.05);
+    p->split_p52 = MTT_R(0.1);
+    p->split_p62 = MTT_R(0.1);
+    p->split_dv = MTT_R(0.0);
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;
+}
+
+/* 1 when imm_models has a cv entry (the model the split modes build on). */
+static int has_cv(const mtt_params *p)
+{
+    uint8_t j;
+    for (j = 0; j < p->imm_n_models && j < MTT_MAX_MODELS; ++j) {
+        if (p->imm_model[j] == MTT_MODEL_CV) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* Range rules of mtt_params_check: the REAL rows of params_table.h,
@@ -227,6 +247,10 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
 #endif
     if (bad == NULL && p->motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[p->association].imm)) {
         bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
+        st = MTT_ERR_UNSUPPORTED;
+    }
+    if (bad == NULL && p->split && (!MTT_WITH_SPLIT || p->motion != MTT_MOTION_IMM || !has_cv(p))) {
+        bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
         st = MTT_ERR_UNSUPPORTED;
     }
     if (bad == NULL && !MTT_WITH_CONTEST && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST) {

@@ -23,7 +23,8 @@
  *
  * imm_models is a REAL row over the psd slots with PF_MODELS: its public
  * type is MTT_PARAM_MODELS, and params_info.c sets and gets the model kinds
- * and r with it.  Not yet here: split (ALGORITHMS.md §14.3).
+ * and r with it.  `split` is a key of every build (a build without
+ * MTT_WITH_SPLIT refuses `true`); its transition keys only with it.
  * initial_tracks is not a parameter (it seeds the tracker): mtt-track reads
  * it itself. */
 #ifndef MTT_PARAMS_TABLE_H
@@ -63,6 +64,22 @@ extern const char *const mtt_model_names[3];
          "with `imm`: the model probabilities of a new or seeded track (§14.2)")
 #else
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
+#endif
+
+/* The split-target rows (ALGORITHMS.md §14.3): the transitions of the
+ * split modes only in a build with MTT_WITH_SPLIT. */
+#if MTT_WITH_SPLIT
+#define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)                                                  \
+    REAL("split_p25", split_p25, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                                   \
+         "with `split`: per-scan probability that a target in the cv model splits (cv → \"just split\"); the cv row of imm_transition is scaled by 1 − split_p25 (§14.3)") \
+    REAL("split_p52", split_p52, 1, 0.0, 1.0, 0, NULL,                                            \
+         "with `split`: probability that a \"just split\" finds no second target and falls back to cv; the rest goes to \"split\" (§14.3)") \
+    REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL,                                            \
+         "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)") \
+    REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                     \
+         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)")
+#else
+#define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 #endif
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
@@ -122,7 +139,10 @@ extern const char *const mtt_model_names[3];
          "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
     ENUM("motion", motion, mtt_motion, 2, mtt_motion_names,                                        \
          "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda") \
-    MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
+    MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                          \
+    FLAG("split", split,                                                                           \
+         "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \
+    MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
 #define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,

@@ -36,6 +36,11 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
     t->confirmed = (uint8_t)(confirmed != 0);
     t->born = (uint8_t)(born != 0);
     t->dead = 0;
+#if MTT_WITH_SPLIT
+    t->p_split = MTT_R(0.0);
+    t->parent = MTT_NO_PARENT;
+    t->split_slot = MTT_SPLIT_NONE;
+#endif
     return (int)trk->n_tracks++;
 }
 
@@ -171,6 +176,13 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
         view->n_models = trk->par.imm_n_models;
         memcpy(view->mu, t->mu, sizeof view->mu);
     }
+#endif
+#if MTT_WITH_SPLIT
+    view->split = (uint8_t)(trk->par.split != 0);
+    view->p_split = t->p_split;
+    view->parent = t->parent;
+#else
+    view->parent = MTT_NO_PARENT;
 #endif
     return MTT_OK;
 }

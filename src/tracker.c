@@ -40,6 +40,8 @@ static void add_counts(mtt_counts *tot, const mtt_counts *c)
     tot->confirmations += c->confirmations;
     tot->assign_fallbacks += c->assign_fallbacks;
     tot->jpda_fallbacks += c->jpda_fallbacks;
+    tot->splits += c->splits;
+    tot->split_dropped += c->split_dropped;
 }
 
 /* ---- public ---- */
@@ -115,6 +117,9 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     mtt_associate_frame(trk);
     charge(trk, MTT_STAGE_ASSOCIATE, &mark);
     mtt_update_frame(trk);
+#if MTT_WITH_SPLIT
+    mtt_split_frame(trk, dt); /* split = true: the split modes, decoupling (ALGORITHMS.md §14.3) */
+#endif
     charge(trk, MTT_STAGE_UPDATE, &mark);
     mtt_initiate_frame(trk, dt);
     charge(trk, MTT_STAGE_INITIATE, &mark);

@@ -40,6 +40,10 @@ static void test_table_lists_the_settings_keys(void)
 #if MTT_WITH_IMM
         , "imm_models", "imm_transition", "imm_initial"
 #endif
+        , "split"
+#if MTT_WITH_SPLIT
+        , "split_p25", "split_p52", "split_p62", "split_dv"
+#endif
     };
     const mtt_param_info *info = NULL;
     size_t k, i;

@@ -96,6 +96,13 @@
 #define TV_MERGE_A(t, i) ((t)->merge[i].a)
 #define TV_MERGE_B(t, i) ((t)->merge[i].b)
 #define TV_MERGE_D2(t, i) ((t)->merge[i].d2)
+#if MTT_WITH_SPLIT
+/* split = true (ALGORITHMS.md §14.3): track i's slot of the pool, and slot k
+ * (its mode probabilities mu[0] "just split", mu[1] "split", stacked
+ * states xs[0], xs[1] and covariances Ps[0], Ps[1], used) */
+#define TV_SPLIT_SLOT(t, i) ((t)->tracks[i].split_slot)
+#define TV_SPLIT(t, k) ((t)->split[k])
+#endif
 /* IHPDA rank weights: row MTT_PRANK_ROW(m) holds m entries */
 #define TV_PRANK(t, r) ((t)->prank[r])
 /* the frame's counters */

@@ -84,6 +84,17 @@ det_fail() {
 }
 
 # cfg_fail NAME MESSAGE: settings file NAME.json must be rejected.
+# cfg_columns CFG EXTRA BAD_ROW MESSAGE: CFG runs; the tracks header is the
+# twelve columns then EXTRA; no row matches the awk condition BAD_ROW.
+cfg_columns() {
+    rm -f "$out"
+    run --config "$data/$1.json" --detections "$data/valid.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy,$2" ] ||
+        fail "header $(head -n 1 "$out")"
+    awk -F, "NR > 1 && ($3) { bad = 1 } END { exit bad }" "$out" || fail "$4"
+}
+
 cfg_fail() {
     expect_fail 2 "$1.json: $2" "$data/$1.json" "$data/valid.det.csv"
 }
@@ -91,15 +102,10 @@ cfg_fail() {
 # imm_ok CONFIG N: motion = imm runs; the tracks file gains mu_0 .. mu_{N-1},
 # the model probabilities, summing to 1 on every row (docs/FORMATS.md).
 imm_ok() {
-    rm -f "$out"
-    run --config "$data/$1.json" --detections "$data/valid.det.csv" --tracks "$out"
-    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
-    mu=$(awk -v n="$2" 'BEGIN { for (j = 0; j < n; ++j) printf ",mu_%d", j }')
-    [ "$(head -n 1 "$out")" = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy$mu" ] ||
-        fail "header $(head -n 1 "$out")"
-    awk -F, -v n="$2" 'NR > 1 { s = 0; for (j = 13; j < 13 + n; ++j) s += $j
-                                if (NF != 12 + n || s < 0.9999 || s > 1.0001) bad = 1 }
-                       END { exit bad }' "$out" || fail "a row without $2 model probabilities summing to 1"
+    mu=$(awk -v n="$2" 'BEGIN { for (j = 0; j < n; ++j) printf "%smu_%d", (j ? "," : ""), j }')
+    sum=$(awk -v n="$2" 'BEGIN { s = "$13"; for (j = 14; j < 13 + n; ++j) s = s " + $" j; print s }')
+    cfg_columns "$1" "$mu" "NF != $((12 + $2)) || $sum < 0.9999 || $sum > 1.0001" \
+        "a row without $2 model probabilities summing to 1"
 }
 
 # expect_ok ARGS...: a run that must succeed silently and write the tracks.
@@ -157,7 +163,7 @@ list_settings)
     stdout_has "| \`terminate_threshold\` | number | in [0, 1); below confirm_threshold | 0.01 | "
     stdout_has "| \`initial_tracks\` | list | "
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 32 ] || fail "expected 32 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 37 ] || fail "expected 37 key rows"
     ;;
 version)
     run --version
@@ -349,6 +355,12 @@ cfg_imm_valid)          imm_ok cfg_imm_valid 2 ;;
 cfg_imm_ct_no_turn)     cfg_fail cfg_imm_ct_no_turn "key 'imm_models[1].turn_psd': missing (model ct needs its turn-rate noise)" ;;
 cfg_imm_turn_not_ct)    cfg_fail cfg_imm_turn_not_ct "key 'imm_models[0].turn_psd': only model ct has a turn rate" ;;
 cfg_imm_ct_valid)       imm_ok cfg_imm_ct_valid 3 ;; # CV, CA and a coordinated turn
+cfg_split_unsupported)  cfg_fail cfg_split_unsupported "key 'split': split = true needs motion = imm with a cv model in imm_models" ;;
+cfg_split_valid)
+    # split = true: after mu_0, mu_1 the split probability and the parent column (docs/FORMATS.md)
+    cfg_columns cfg_split_valid mu_0,mu_1,p_split,parent \
+        'NF != 16 || $15 < 0 || $15 > 1' "a row without a split probability in [0, 1] and a parent column"
+    ;;
 *)
     echo "run.sh: unknown case '$case'" >&2
     exit 2

@@ -173,16 +173,34 @@
  * split track (the union of its two targets' gates): the joint events are
  * the (m + 1)^2 pairs (measurement or none, per target), enumerated by
  * brute force.  The stacked two-target state has 2 x MTT_MAX_STATE
- * components (MTT_SPLIT_STATE, derived, not configurable). */
+ * components (MTT_SPLIT_STATE, derived, not configurable).  The split
+ * modes are modes of the IMM, so MTT_WITH_SPLIT follows MTT_WITH_IMM by
+ * default (a firmware configuration, MTT_WITH_IMM 0, leaves both out).
+ * MTT_MAX_SPLIT_TRACKS: tracks that carry the split modes at once (a pool
+ * of stacked states in the tracker, src/split_track.c); a track whose split
+ * probability is negligible needs none. */
 #ifndef MTT_WITH_SPLIT
-#define MTT_WITH_SPLIT 1
+#define MTT_WITH_SPLIT MTT_WITH_IMM
 #endif
 #ifndef MTT_MAX_SPLIT_MEAS
 #define MTT_MAX_SPLIT_MEAS (2 * MTT_MAX_GATED)
 #endif
+#ifndef MTT_MAX_SPLIT_TRACKS
+#if MTT_WITH_SPLIT
+#define MTT_MAX_SPLIT_TRACKS 8
+#else
+#define MTT_MAX_SPLIT_TRACKS 0
+#endif
+#endif
 #define MTT_SPLIT_STATE (2 * MTT_MAX_STATE)
 #if MTT_WITH_SPLIT != 0 && MTT_WITH_SPLIT != 1
 #error "MTT_WITH_SPLIT must be 0 or 1"
+#endif
+#if MTT_WITH_SPLIT && !MTT_WITH_IMM
+#error "MTT_WITH_SPLIT needs MTT_WITH_IMM (the split models are IMM modes, ALGORITHMS.md §14.3)"
+#endif
+#if MTT_WITH_SPLIT && (MTT_MAX_SPLIT_TRACKS < 1 || MTT_MAX_SPLIT_TRACKS > 254)
+#error "MTT_MAX_SPLIT_TRACKS must be in [1, 254] with MTT_WITH_SPLIT"
 #endif
 #if MTT_MAX_SPLIT_MEAS < 2 || MTT_MAX_SPLIT_MEAS > 128
 #error "MTT_MAX_SPLIT_MEAS must be in [2, 128] (model 5 needs 2 measurements)"

@@ -39,14 +39,14 @@ extern "C" {
  * value, and the library refuses one that differs from its own. */
 #define MTT_CONFIG_MIX_(h, v) ((((uint32_t)(h)) ^ (uint32_t)(v)) * 16777619u)
 #define MTT_CONFIG_ID                                                                              \
-    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                                                                   \
         MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
         MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
         MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real)), \
-        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST)
+        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST), MTT_WITH_SPLIT), MTT_MAX_SPLIT_TRACKS)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
@@ -176,6 +176,12 @@ typedef struct mtt_params {
 #endif
     mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
     mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
+    int split;                      /**< nonzero: split-target detection (ALGORITHMS.md §14.3); needs
+                                         motion = imm, a cv entry in imm_models and MTT_WITH_SPLIT */
+    mtt_real split_p25;             /**< per scan: cv -> "just split" */
+    mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
+    mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */
+    mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std) */
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
@@ -225,6 +231,9 @@ typedef struct mtt_meas {
     int has_amplitude;    /**< 0: intensity unknown for this detection */
 } mtt_meas;
 
+/** mtt_track_view.parent of a track that did not split off another. */
+#define MTT_NO_PARENT ((uint32_t)0xFFFFFFFFu)
+
 /** Read-only view of one live track. */
 typedef struct mtt_track_view {
     uint32_t id;          /**< unique for the tracker's life, never reused */
@@ -237,6 +246,10 @@ typedef struct mtt_track_view {
     uint8_t n_models;     /**< 1 (motion = cv), or r of motion = imm */
     mtt_real mu[MTT_MAX_MODELS]; /**< model probabilities after this frame's update, imm_models
                                       order, sum 1 (ALGORITHMS.md §14.1); mu[0] = 1 with cv */
+    uint8_t split;        /**< 1 when the tracker runs split = true (p_split and parent below) */
+    mtt_real p_split;     /**< split = true: P(split) = μ("just split") + μ("split") after this
+                               frame's update (ALGORITHMS.md §14.3); 0 otherwise */
+    uint32_t parent;      /**< id of the track this one split off from, MTT_NO_PARENT if none */
 } mtt_track_view;
 
 /** Event counters (one frame, or cumulative). */
@@ -259,6 +272,8 @@ typedef struct mtt_counts {
     uint32_t assign_fallbacks;/**< ihpda-2d clusters over MTT_MAX_ASSIGN_TRACKS, resolved by MMR */
     uint32_t jpda_fallbacks;  /**< clusters over the exact-JPDA bounds (tracks, measurements, events):
                                    Cheap JPDA instead (per-track IPDA in jipda) */
+    uint32_t splits;          /**< split = true: tracks split off a parent (decoupled, ALGORITHMS.md §14.3) */
+    uint32_t split_dropped;   /**< split = true: split hypotheses dropped (split pool or track table full) */
 } mtt_counts;
 
 /** Statistics: the last frame, the tracker's life, and per-stage cycles. */

@@ -32,6 +32,12 @@ typedef struct mtt_track {
     mtt_real xm[MTT_MAX_MODELS][MTT_MAX_STATE];
     mtt_real Pm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
 #endif
+#if MTT_WITH_SPLIT
+    /* split = true (ALGORITHMS.md §14.3, src/split_track.c) */
+    mtt_real p_split;    /* μ("just split") + μ("split") after this frame */
+    uint32_t parent;     /* id of the track this one split off from, MTT_NO_PARENT */
+    uint8_t split_slot;  /* its stacked states in mtt_tracker.split, MTT_SPLIT_NONE */
+#endif
 } mtt_track;
 
 /** Per-frame, per-track scratch (prediction, innovation, gate). */
@@ -71,6 +77,56 @@ typedef struct mtt_track_frame {
     mtt_real wm[MTT_MAX_MODELS][2]; /* gate half-widths sqrt(gamma S_j) */
 #endif
 } mtt_track_frame;
+
+#if MTT_WITH_SPLIT
+/* Split-target storage (ALGORITHMS.md §14.3): the stacked two-target
+ * state [x_1; x_2] (2n components in MTT_SPLIT_STATE storage). */
+typedef mtt_real mtt_split_state[MTT_SPLIT_STATE];
+typedef mtt_real mtt_split_cov[MTT_SPLIT_STATE][MTT_SPLIT_STATE];
+#define MTT_SPLIT_NONE 0xFFu
+
+/* Model 6 "split": the joint association of the two targets of a stacked
+ * prediction with m validated measurements ([S3] eq. 14, non-parametric). */
+typedef struct mtt_split_assoc {
+    mtt_real a[2][MTT_MAX_SPLIT_MEAS];    /* PD V N(z_j; zhat_t, S_t), 0 outside t's gate */
+    mtt_real b[2];                        /* 1 - PD PG: target t undetected */
+    mtt_real beta[2][MTT_MAX_SPLIT_MEAS]; /* P(z_j is target t's) */
+    mtt_real beta_miss[2];                /* P(target t undetected) */
+    mtt_real beta0;                       /* P(theta_0): neither detected */
+    mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
+    mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
+    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
+    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
+    mtt_real pd;
+    mtt_real scale;                       /* V, or 1/lambda */
+    uint16_t m;
+    uint8_t n;
+    uint8_t parametric;                   /* 1: known clutter density lambda */
+    uint8_t joint;                        /* 1: coupled two-detection density */
+} mtt_split_assoc;
+
+/** One track's split modes: mode probabilities μ_5 ("just split") and μ_6
+ *  ("split"), and their updated stacked states (index 0: mode 5, 1: mode 6). */
+typedef struct mtt_split_slot {
+    mtt_real mu[2];
+    mtt_split_state xs[2];
+    mtt_split_cov Ps[2];
+    uint8_t used;
+} mtt_split_slot;
+
+/** Scratch of the split stage, one track at a time. */
+typedef struct mtt_split_scratch {
+    mtt_split_assoc as;
+    mtt_real z[MTT_MAX_SPLIT_MEAS][2];   /* model 6's validated set */
+    uint16_t zi[MTT_MAX_SPLIT_MEAS];     /* their measurement indices */
+    uint16_t owner[MTT_MAX_MEAS];        /* 1 + the confirmed track that took measurement j, 0 */
+    mtt_real beta[MTT_MAX_GATED];        /* model 5's input betas */
+    mtt_real beta_n[MTT_MAX_GATED];
+    uint8_t cluster[MTT_MAX_GATED];
+    mtt_split_state x5, x0, xp;
+    mtt_split_cov P5, P0, Pp;
+} mtt_split_scratch;
+#endif
 
 /** A gated (track, measurement) pair. */
 typedef struct mtt_pair {
@@ -217,6 +273,10 @@ typedef struct mtt_tracker {
     mtt_mstore prev[MTT_MAX_MEAS];
     uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
     uint16_t init_cand[MTT_MAX_MEAS];  /* U_{k-1} within reach of one z_k */
+#if MTT_WITH_SPLIT
+    mtt_split_slot split[MTT_MAX_SPLIT_TRACKS]; /* split = true: the pool (ALGORITHMS.md §14.3) */
+    mtt_split_scratch split_scr;
+#endif
     mtt_stats stats;
 } mtt_tracker;
 

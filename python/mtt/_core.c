@@ -342,9 +342,11 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
 
 /* table() -> bytes: one row of TABLE_COLUMNS float64 per live track, ascending id:
  * id, confirmed, x, y, vx, vy, existence, age, detection, P (16, row-major),
- * n_models, mu (MTT_MAX_MODELS; motion = imm: the model probabilities).
+ * n_models, mu (MTT_MAX_MODELS; motion = imm: the model probabilities),
+ * p_split and parent (split = true: P(split) and the parent's id, -1 for none;
+ * 0 and -1 otherwise).
  * One call per step instead of one tuple per track (mtt_sim's Monte Carlo). */
-#define TABLE_COLUMNS (26 + MTT_MAX_MODELS)
+#define TABLE_COLUMNS (28 + MTT_MAX_MODELS)
 static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
 {
     size_t n = 0, i;
@@ -381,6 +383,8 @@ static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
         row[25] = (double)tv.n_models;
         for (k = 0; k < MTT_MAX_MODELS; ++k)
             row[26 + k] = (double)tv.mu[k];
+        row[26 + MTT_MAX_MODELS] = (double)tv.p_split;
+        row[27 + MTT_MAX_MODELS] = tv.parent == MTT_NO_PARENT ? -1.0 : (double)tv.parent;
     }
     return bytes;
 }
@@ -389,7 +393,8 @@ static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
 #define COUNT_FIELDS(X)                                                                            \
     X(frames) X(meas_in) X(meas_bad) X(meas_dropped) X(pairs) X(pairs_dropped) X(gated_dropped)   \
     X(clusters) X(births) X(births_dropped) X(merges) X(merge_dropped) X(deletions)               \
-    X(numeric_deletions) X(confirmations) X(assign_fallbacks) X(jpda_fallbacks)
+    X(numeric_deletions) X(confirmations) X(assign_fallbacks) X(jpda_fallbacks) X(splits)         \
+    X(split_dropped)
 
 /* A field added to mtt_counts must be added to COUNT_FIELDS: this breaks the
  * build until it is (every field is a uint32_t). */
@@ -499,7 +504,7 @@ PyMODINIT_FUNC PyInit__core(void)
         return NULL;
     }
 #define NAME_OF(f) #f,
-    fields = Py_BuildValue("(sssssssssssssssss)", COUNT_FIELDS(NAME_OF) NULL);
+    fields = Py_BuildValue("(sssssssssssssssssss)", COUNT_FIELDS(NAME_OF) NULL);
 #undef NAME_OF
     if (fields == NULL || PyModule_AddObject(m, "COUNT_FIELDS", fields) < 0 ||
         PyModule_AddStringConstant(m, "VERSION", MTT_VERSION_STRING) < 0 ||

@@ -439,6 +439,10 @@ class _Reader:
             _, a = self.core.get_param("association", 1)
             self.fail(bad, "motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda, and a "
                       f"build with MTT_WITH_IMM (association is {assoc.names[int(a[0])]})")
+        if st == _core.ERR_UNSUPPORTED and bad == "split":
+            _, m = self.core.get_param("motion", 1)
+            self.fail(bad, "split = true needs motion = imm with a cv model in imm_models, and a build with "
+                      f"MTT_WITH_SPLIT (motion is {self._row('motion').names[int(m[0])]})")
         if st == _core.ERR_UNSUPPORTED and row is not None and row.type == ENUM:
             _, v = self.core.get_param(bad, 1)
             self.fail(bad, f"{bad} '{row.names[int(v[0])]}' is not implemented in this version "

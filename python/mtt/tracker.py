@@ -25,7 +25,7 @@ __all__ = ["Tracker", "Track", "SettingsError", "TABLE_COLUMNS"]
 #: Columns of Tracker.track_table(): one row per live track.
 TABLE_COLUMNS = ("id", "confirmed", "x", "y", "vx", "vy", "existence", "age", "detection",
                  *(f"P{i}{j}" for i in range(4) for j in range(4)), "n_models",
-                 *(f"mu{j}" for j in range(_core.MAX_MODELS)))
+                 *(f"mu{j}" for j in range(_core.MAX_MODELS)), "p_split", "parent")
 
 
 class Track:
@@ -180,10 +180,12 @@ class Tracker:
         return list(self._tracks)
 
     def track_table(self) -> np.ndarray:
-        """The live tracks as one float64 array (n, 26 + MAX_MODELS), ascending id;
+        """The live tracks as one float64 array (n, 28 + MAX_MODELS), ascending id;
         the columns are ``mtt.tracker.TABLE_COLUMNS``: id, confirmed (0/1), x, y,
         vx, vy, existence, age, detection (-1: none), the covariance row-major,
-        n_models (1 with motion = cv) and the model probabilities mu0, mu1, ...
+        n_models (1 with motion = cv), the model probabilities mu0, mu1, ...,
+        p_split and parent (split = true: P(split) and the id of the track this
+        one split off from, -1 for none; docs/FORMATS.md).
         Cheaper than ``tracks`` for many steps (no object per track)."""
         a = np.frombuffer(self._core.table(), dtype=np.float64).reshape(-1, _core.TABLE_COLUMNS)
         return a

@@ -212,24 +212,33 @@ def _track_row(p, n, f):
             tuple(_num(p, n, f"mu_{j}", v) for j, v in enumerate(f[12:])))
 
 
-def _tracks_header_models(name, header: str) -> int:
-    """Number r of trailing model-probability columns mu_0..mu_{r-1}
-    (motion = imm, docs/FORMATS.md), 0 without them."""
+SPLIT_COLUMNS = ["p_split", "parent"]  # split = true (docs/FORMATS.md), after the mu_j
+
+
+def _tracks_header_models(name, header: str):
+    """(r, split): the number r of trailing model-probability columns
+    mu_0..mu_{r-1} (motion = imm, docs/FORMATS.md), 0 without them, and
+    whether p_split, parent follow them (split = true)."""
     h = header.strip()
     if h == TRACKS_HEADER:
-        return 0
+        return 0, False
     extra = h[len(TRACKS_HEADER):].split(",")[1:] if h.startswith(TRACKS_HEADER + ",") else None
-    if not extra or extra != [f"mu_{j}" for j in range(len(extra))]:
+    split = bool(extra) and extra[-2:] == SPLIT_COLUMNS
+    mu = extra[:-2] if split else extra
+    if not extra or not mu or mu != [f"mu_{j}" for j in range(len(mu))]:
         raise FormatError(f"{name}:1: header must be '{TRACKS_HEADER}' (with motion = imm followed by "
-                          f"mu_0, mu_1, ...), got '{h}'")
-    return len(extra)
+                          f"mu_0, mu_1, ..., and with split by p_split, parent), got '{h}'")
+    return len(mu), split
 
 
-def _tracks_table(rows, r: int = 0):
+def _tracks_table(rows, r: int = 0, split: bool = False):
     if not rows:
         out = empty_tracks()
         if r:
             out["mu"] = np.zeros((0, r))
+        if split:
+            out["p_split"] = np.zeros(0)
+            out["parent"] = np.zeros(0, int)
         return out
     a = list(zip(*rows))
     keys = ["scan", "time", "track", "confirmed", "x", "y", "vx", "vy", "existence", "pxx", "pxy", "pyy"]
@@ -239,6 +248,9 @@ def _tracks_table(rows, r: int = 0):
         out[k] = np.array(col, dt)
     if r:
         out["mu"] = np.array(a[12], float).reshape(len(rows), r)  # model probabilities per row
+    if split:
+        out["p_split"] = np.array(a[13], float)
+        out["parent"] = np.array(a[14], int)  # -1: no parent
     return out
 
 
@@ -246,15 +258,20 @@ def _parse_track_lines(name, lines) -> dict:
     """lines: (line number, text) with the header first."""
     if not lines:
         raise FormatError(f"{name}: empty file (no header)")
-    r = _tracks_header_models(name, lines[0][1])
-    ncol = 12 + r
+    r, split = _tracks_header_models(name, lines[0][1])
+    ncol = 12 + r + (2 if split else 0)
     rows = []
     for n, line in lines[1:]:
         f = [a.strip() for a in line.split(",")]
         if len(f) != ncol:
             raise FormatError(f"{name}:{n}: expected {ncol} fields, got {len(f)}")
-        rows.append(_track_row(name, n, f))
-    return _tracks_table(rows, r)
+        if split:
+            row = _track_row(name, n, f[:12 + r])
+            parent = -1 if f[-1] == "" else _num(name, n, "parent", f[-1], integer=True)
+            rows.append(row + (_num(name, n, "p_split", f[-2]), parent))
+        else:
+            rows.append(_track_row(name, n, f))
+    return _tracks_table(rows, r, split)
 
 
 def read_tracks(path: str) -> dict:

@@ -26,6 +26,15 @@ Conventions used throughout
   alpha = 2 and cut-off c, per scan, exact assignment.
 * **CLEAR-MOT** (Bernardin and Stiefelhagen 2008) with match threshold
   ``d_a``; see :func:`clear_mot` for the exact correspondence rule.
+* **Split outcome** (:func:`split_outcome`, scenarios with ``splits``): the
+  child's confirmation delay is, per split, the first scan k >= the split
+  scan at which confirmed tracks are matched by the per-scan rule to both
+  the child and its parent target (two tracks: while one track covers both,
+  the child is not counted as tracked), minus the split scan (None if it
+  never happens).  A **false
+  split** is a track with a parent (the tracks file's ``parent`` column,
+  ``split`` = true) that is not matched to a split child target at any of
+  its first 3 scans.
 * **RMSE on straight legs and in turns** (:func:`rmse_legs`, scenarios with
   manoeuvres): the same squared errors pooled over two disjoint sets of
   (target, scan): the scans inside a target's manoeuvre windows
@@ -44,7 +53,7 @@ from .assign import linear_assignment
 __all__ = [
     "distances", "match", "confirmed_true_false", "gospa", "clear_mot",
     "seeded_outcome", "counts_per_scan", "time_per_frame", "frames", "score_run",
-    "turn_mask", "rmse_legs",
+    "turn_mask", "rmse_legs", "split_outcome",
 ]
 
 
@@ -312,8 +321,46 @@ def frames(truth: dict, tracks: dict, nscan: int, confirmed_only: bool = True):
     return out
 
 
+def split_outcome(splits, fr, tracks: dict, match_distance: float, window: int = 3) -> dict:
+    """Split outcome of one run (module docstring).
+
+    ``splits``: [(child target id, parent target id, split scan)]; ``fr``: :func:`frames` of
+    the confirmed tracks; ``tracks``: the tracks table (its ``parent``
+    column, -1 for none, when the tracker ran with split = true);
+    matching as :func:`match` with ``match_distance``.  Returns
+    {"delays": [scans from the split to the child's confirmation, or None],
+    "spawned": tracks with a parent, "false_splits": those not matched to a
+    split's parent or child within their first ``window`` scans}.
+    """
+    children = {int(c): (int(p), int(k)) for c, p, k in splits}
+    delays = {c: None for c in children}
+    matched_split = {}  # track id -> scans at which it is matched to a split's parent or child
+    for k, (gid, gxy, hid, hxy) in enumerate(fr):
+        d = distances(gxy, hxy)
+        pairs = match(None, None, match_distance, dist=d) if len(gid) and len(hxy) else []
+        covered = {int(gid[i]) for i, _ in pairs}
+        for i, j in pairs:
+            t = int(gid[i])
+            if t in children and k >= children[t][1]:
+                if delays[t] is None and children[t][0] in covered:
+                    delays[t] = k - children[t][1]
+            if any(t in (c, pk[0]) and k >= pk[1] for c, pk in children.items()):
+                matched_split.setdefault(int(hid[j]), []).append(k)
+    spawned, false = 0, 0
+    if "parent" in tracks and len(tracks["scan"]):
+        par = np.asarray(tracks["parent"], int)
+        ids = np.asarray(tracks["track"], int)
+        scan = np.asarray(tracks["scan"], int)
+        for tid in np.unique(ids[par >= 0]):
+            spawned += 1
+            born = int(scan[ids == tid].min())
+            if not any(born <= k < born + window for k in matched_split.get(int(tid), [])):
+                false += 1
+    return {"delays": [delays[c] for c in children], "spawned": spawned, "false_splits": false}
+
+
 def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gospa_c: float,
-              seeded_targets=(), eval_scan: int = -1) -> dict:
+              seeded_targets=(), eval_scan: int = -1, splits=()) -> dict:
     """All per-run metrics of one run (tables as in csvio).
 
     Returns per-scan arrays (length nscan): n_truth, n_tentative,
@@ -351,7 +398,11 @@ def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gosp
         allfr = frames(truth, tracks, nscan, confirmed_only=False)[k]
         seeded = seeded_outcome(list(seeded_targets), allfr[0], allfr[1], allfr[2], allfr[3], match_distance)
         seeded["eval_scan"] = int(k)
+    split = None
+    if splits or "parent" in tracks:
+        split = split_outcome(splits, fr, tracks, match_distance)
     out.update({
+        "split": split,
         "n_truth": n_truth, "n_tentative": tent, "n_confirmed": conf, "conf_true": ct, "conf_false": cf,
         "idsw": mot["idsw_scan"], "sq_err": sq,
         "mot": {k: mot[k] for k in ("gt", "matches", "fn", "fp", "idsw", "swaps", "dist", "mota", "motp")},

@@ -7,6 +7,8 @@
         [--scans 12 13 14 15] --out scene.png
     PYTHONPATH=python python3 -m mtt_sim.plot models --truth D.truth.csv --tracks D.tracks.csv \
         --scenario scenarios/manoeuvre.json --out models.png     # IMM: model probabilities
+    PYTHONPATH=python python3 -m mtt_sim.plot split --truth D.truth.csv --tracks D.tracks.csv \
+        --scenario scenarios/split_fast.json --out split.png       # split = true: P(split) over time
 """
 
 import argparse
@@ -40,8 +42,20 @@ def main(argv=None):
     mo.add_argument("--names", nargs="*", help="model names (default: imm_models of the scenario)")
     mo.add_argument("--title", default="")
     mo.add_argument("--out", required=True)
+    sp = sub.add_parser("split", help="split = true: P(split) of one run over time, and the split-off tracks")
+    sp.add_argument("--truth", required=True)
+    sp.add_argument("--tracks", required=True)
+    sp.add_argument("--scenario", required=True, help="scenario JSON (its splits, units)")
+    sp.add_argument("--title", default="")
+    sp.add_argument("--out", required=True)
     a = ap.parse_args(argv)
     try:
+        if a.cmd == "split":
+            scn = scenario.load(a.scenario)
+            plots.split_probability(csvio.read_tracks(a.tracks), csvio.read_truth(a.truth), scn.get("splits", []),
+                                    a.out, title=a.title, units=scn.get("units"))
+            print(a.out)
+            return 0
         if a.cmd == "models":
             scn = scenario.load(a.scenario)
             models = scn["tracker"].get("imm_models") or []

@@ -297,3 +297,68 @@ def model_probabilities(tracks: dict, truth: dict, windows: dict, out_png: str, 
     fig.savefig(out_png, dpi=110)
     plt.close(fig)
     return out_png
+
+
+def split_probability(tracks: dict, truth: dict, splits, out_png: str, *, title: str = "", units=None):
+    """One run with split detection (split = true): above, the x-y plane
+    with the true paths and the confirmed tracks (a split-off track drawn
+    from its first scan, joined by a dashed line to its parent's position
+    there); below, P(split) (the tracks file's p_split) over the scans of
+    every track that ever had one above 1 %, with the true split scans
+    (dotted) and the decouplings (solid) marked.  ``splits``: the
+    scenario's splits list."""
+    import matplotlib.pyplot as plt
+
+    if "p_split" not in tracks:
+        raise ValueError("the tracks file has no p_split column (written with split = true)")
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 7.5), gridspec_kw={"height_ratios": [3, 2]})
+    for tid in sorted(set(int(t) for t in truth["target"])):
+        m = truth["target"] == tid
+        ax.plot(truth["x"][m], truth["y"][m], "-", color="0.6", lw=3, alpha=0.6, zorder=1)
+        ax.annotate(f"target {tid}", (truth["x"][m][-1], truth["y"][m][-1]), fontsize=7, color="0.4")
+    conf = np.asarray(tracks["confirmed"], bool)
+    scan = np.asarray(tracks["scan"], int)
+    ids = np.asarray(tracks["track"], int)
+    par = np.asarray(tracks["parent"], int)
+    births = []
+    order = sorted(set(ids[conf].tolist()) | set(ids[np.asarray(tracks["p_split"], float) > 0.01].tolist()))
+    col = {t: _COLORS[i % len(_COLORS)] for i, t in enumerate(order)}  # distinct in this plot
+    for tid in sorted(set(ids[conf].tolist())):
+        m = conf & (ids == tid)
+        ax.plot(tracks["x"][m], tracks["y"][m], ".-", color=col.get(tid, "k"), ms=3, lw=1, label=f"track {tid}", zorder=2)
+    for tid in sorted(set(ids[par >= 0].tolist())):
+        m = ids == tid
+        k0 = int(scan[m].min())
+        p = int(par[m][0])
+        births.append((k0, tid, p))
+        i = np.nonzero(m & (scan == k0))[0][0]
+        j = np.nonzero((ids == p) & (scan == k0))[0]
+        if len(j):
+            ax.plot([tracks["x"][j[0]], tracks["x"][i]], [tracks["y"][j[0]], tracks["y"][i]], "k--", lw=1, zorder=3)
+        ax.plot(tracks["x"][i], tracks["y"][i], "k*", ms=9, zorder=4)
+    u = (units or {}).get("length", "")
+    ax.set_xlabel(f"x {u}".strip())
+    ax.set_ylabel(f"y {u}".strip())
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="best", ncol=2)
+    ax.set_title("confirmed tracks (star: a track split off its parent, dashed to the parent)", fontsize=9)
+    ps = np.asarray(tracks["p_split"], float)
+    for tid in sorted(set(ids[ps > 0.01].tolist())):
+        m = ids == tid
+        bx.plot(scan[m], ps[m], ".-", color=col.get(tid, "k"), lw=1.2, ms=3, label=f"track {tid}")
+    for sp in splits:
+        bx.axvline(int(sp["scan"]), color="0.3", ls=":", lw=1.2)
+    for k0, tid, p in births:
+        bx.axvline(k0, color=col.get(tid, "k"), ls="-", lw=1)
+    bx.set_ylim(-0.02, 1.02)
+    bx.set_xlim(0, int(scan.max()) if len(scan) else 1)
+    bx.set_xlabel("scan (dotted: the true split; solid: decoupling, a track split off)")
+    bx.set_ylabel("P(split)")
+    bx.grid(alpha=0.3)
+    if bx.lines:
+        bx.legend(fontsize=7, loc="upper left")
+    fig.suptitle(title or "split probability of one run", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out_png, dpi=110)
+    plt.close(fig)
+    return out_png

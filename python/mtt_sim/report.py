@@ -139,6 +139,14 @@ def table_summary(s: dict) -> str:
     if any("rmse_turn" in R[m]["totals"] for m in modes):  # scenarios with manoeuvres only
         rows.append(["  on straight legs"] + [_fmt(R[m]["totals"].get("rmse_straight")) for m in modes])
         rows.append(["  in turns"] + [_fmt(R[m]["totals"].get("rmse_turn")) for m in modes])
+    if any(R[m]["totals"].get("split") for m in modes):  # scenarios with splits only (metrics.split_outcome)
+        sp = {m: R[m]["totals"].get("split") or {} for m in modes}
+        rows.append(["scans split -> child confirmed (median / p90)"] + [
+            f"{_fmt(sp[m].get('delay_median'), 1)} / {_fmt(sp[m].get('delay_p90'), 1)}" for m in modes])
+        rows.append(["  child confirmed within 3 scans (runs)"] + [_fmt(sp[m].get("within3")) for m in modes])
+        rows.append(["  child never confirmed (runs)"] + [str(sp[m].get("never", "-")) for m in modes])
+        rows.append(["tracks split off / false splits per run"] + [
+            f"{_fmt(sp[m].get('spawned_per_run'), 2)} / {_fmt(sp[m].get('false_splits_per_run'), 2)}" for m in modes])
     tids = sorted({t for m in modes for t in R[m]["totals"]["rmse_per_target"]}, key=int)
     if len(tids) <= 16:
         for t in tids:

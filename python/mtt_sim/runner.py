@@ -134,6 +134,9 @@ def track_in_process(run: dict, printed=("x", "y")) -> tuple[dict, float]:
     for k, c in (("x", "x"), ("y", "y"), ("vx", "vx"), ("vy", "vy"), ("existence", "existence"),
                  ("pxx", "P00"), ("pxy", "P01"), ("pyy", "P11")):
         out[k] = _as_text(col[c], digits) if k in printed else col[c].copy()
+    if run["settings"].get("split"):
+        out["p_split"] = col["p_split"].copy()
+        out["parent"] = col["parent"].astype(int)
     return out, elapsed
 
 
@@ -212,7 +215,8 @@ def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir:
         met = scn.get("metrics", {})
         sc = metrics.score_run(run["truth"], tracks, nscan,
                                float(met.get("match_distance", 1.0)), float(met.get("gospa_c", met.get("match_distance", 1.0))),
-                               run["seeded_targets"], int(met.get("seeded_eval_scan", -1)))
+                               run["seeded_targets"], int(met.get("seeded_eval_scan", -1)),
+                               [(int(sp["child"]), int(sp["parent"]), int(sp["scan"])) for sp in scn.get("splits", [])])
         res.update(ok=True, elapsed=elapsed, time_per_frame=metrics.time_per_frame(elapsed, nscan), score=sc)
     except TrackerError as e:
         res["error"] = str(e)
@@ -256,6 +260,7 @@ class Aggregate:
         self.seeded = {"runs": 0, "failed": 0, "coalescence": 0, "switch": 0, "lost": 0,
                        "coalescence_or_switch": 0}
         self.run0 = None
+        self.split = {"runs": 0, "delays": [], "never": 0, "spawned": 0, "false_splits": 0}
 
     def add(self, res: dict) -> None:
         if not res["ok"]:
@@ -278,6 +283,16 @@ class Aggregate:
             for k in ("failed", "coalescence", "switch", "lost"):
                 self.seeded[k] += int(bool(sc["seeded"][k]))
             self.seeded["coalescence_or_switch"] += int(sc["seeded"]["coalescence"] or sc["seeded"]["switch"])
+        if sc.get("split") is not None:
+            sp = self.split
+            sp["runs"] += 1
+            for d in sc["split"]["delays"]:
+                if d is None:
+                    sp["never"] += 1
+                else:
+                    sp["delays"].append(d)
+            sp["spawned"] += sc["split"]["spawned"]
+            sp["false_splits"] += sc["split"]["false_splits"]
         if res["run"] == 0:
             self.run0 = {"tentative": sc["n_tentative"].tolist(), "confirmed": sc["n_confirmed"].tolist(),
                          "seeded": sc["seeded"]}
@@ -335,6 +350,20 @@ class Aggregate:
             k = int(np.argmax(t0))
             totals["peak_run0"] = {"scan": k, "tentative": int(self.run0["tentative"][k]),
                                    "confirmed": int(self.run0["confirmed"][k])}
+        if self.split["runs"]:
+            sp = self.split
+            d = np.array(sp["delays"], float)
+            n_split = len(d) + sp["never"]
+            totals["split"] = {
+                "children": n_split, "never": sp["never"],
+                # delays of the children never confirmed count as infinite in the quantiles
+                "delay_median": float(np.quantile(np.concatenate([d, np.full(sp["never"], np.inf)]), 0.5))
+                if n_split else math.nan,
+                "delay_p90": float(np.quantile(np.concatenate([d, np.full(sp["never"], np.inf)]), 0.9,
+                                               method="inverted_cdf")) if n_split else math.nan,
+                "within3": float((d <= 3).sum() / n_split) if n_split else math.nan,
+                "spawned_per_run": sp["spawned"] / sp["runs"], "false_splits_per_run": sp["false_splits"] / sp["runs"],
+            }
         seeded = None
         if self.seeded["runs"]:
             r = self.seeded["runs"]

@@ -7,7 +7,7 @@ import unittest
 
 import numpy as np
 
-from mtt_sim import assign, metrics, report, runner
+from mtt_sim import assign, csvio, metrics, report, runner
 
 
 class TestAssignment(unittest.TestCase):
@@ -274,6 +274,66 @@ class TestRmseLegs(unittest.TestCase):
         self.assertNotIn("rmse_turn", summaries["straight"]["results"]["m"]["totals"])
         self.assertIn("in turns", report.table_summary(summaries["turns"]))
         self.assertNotIn("in turns", report.table_summary(summaries["straight"]))
+
+
+class TestSplitOutcome(unittest.TestCase):
+    # Target 0 at x = 0 for scans 0..5; target 1 splits off it at scan 2 and
+    # is at x = 0, 30, 60, 90 at scans 2..5.  Track 7 follows target 0
+    # throughout; track 9 (parent 7) starts at scan 4 on target 1; track 11
+    # (parent 7) starts at scan 3 at x = 500, on nothing.
+    def case(self):
+        truth = {"scan": np.array([0, 1, 2, 3, 4, 5, 2, 3, 4, 5]),
+                 "target": np.array([0] * 6 + [1] * 4),
+                 "x": np.array([0.0] * 6 + [0.0, 30.0, 60.0, 90.0]), "y": np.zeros(10)}
+        tracks = {"scan": np.array([0, 1, 2, 3, 4, 5, 4, 5, 3, 4]),
+                  "track": np.array([7] * 6 + [9, 9, 11, 11]), "confirmed": np.ones(10, bool),
+                  "x": np.array([0.0] * 6 + [61.0, 92.0, 500.0, 510.0]), "y": np.zeros(10),
+                  "parent": np.array([-1] * 6 + [7, 7, 7, 7])}
+        return truth, tracks
+
+    def test_delay_and_false_splits(self):
+        truth, tracks = self.case()
+        fr = metrics.frames(truth, tracks, 6)
+        out = metrics.split_outcome([(1, 0, 2)], fr, tracks, 10.0)
+        # scan 2: track 7 is matched to one of the two (both at x = 0), not
+        # both; scan 3: target 1 is 30 away from track 7, unmatched; scan 4:
+        # track 9 on target 1 and track 7 on target 0: delay 4 - 2 = 2
+        self.assertEqual(out["delays"], [2])
+        self.assertEqual(out["spawned"], 2)
+        self.assertEqual(out["false_splits"], 1)  # track 11: 500 away from both
+
+    def test_never_and_no_parent_column(self):
+        truth, tracks = self.case()
+        del tracks["parent"]
+        keep = tracks["track"] != 9
+        tracks = {k: v[keep] for k, v in tracks.items()}
+        out = metrics.split_outcome([(1, 0, 2)], metrics.frames(truth, tracks, 6), tracks, 10.0)
+        self.assertEqual(out, {"delays": [None], "spawned": 0, "false_splits": 0})
+
+    def test_tracks_file_columns(self):
+        head = csvio.TRACKS_HEADER + ",mu_0,mu_1,p_split,parent\n"
+        t = csvio.parse_tracks(head + "3,3,0,confirmed,1,2,3,4,0.9,1,0,1,0.5,0.5,0.25,\n"
+                               "3,3,4,confirmed,1,2,3,4,0.9,1,0,1,1,0,0,0\n")
+        self.assertEqual(t["mu"].shape, (2, 2))
+        self.assertEqual(list(t["p_split"]), [0.25, 0.0])
+        self.assertEqual(list(t["parent"]), [-1, 0])
+        with self.assertRaises(csvio.FormatError):  # p_split without parent
+            csvio.parse_tracks(csvio.TRACKS_HEADER + ",mu_0,mu_1,p_split\n")
+
+    def test_aggregate_quantiles(self):
+        # delays 1, 2, 3, 8 and one child never confirmed: median 3, 90th
+        # percentile (inverted cdf over 5) the never one, within 3 scans 3 of 5
+        agg = runner.Aggregate(6)
+        truth, tracks = self.case()
+        sc = metrics.score_run(truth, tracks, 6, 10.0, 10.0, splits=[(1, 0, 2)])
+        for d in ([1], [2], [3], [8], [None]):
+            sc = dict(sc, split={"delays": d, "spawned": 1, "false_splits": 0})
+            agg.add({"ok": True, "run": 1, "seed": 1, "score": sc, "time_per_frame": 0.001})
+        sp = agg.result()["totals"]["split"]
+        self.assertEqual(sp["delay_median"], 3.0)
+        self.assertIsNone(sp["delay_p90"])  # infinite: printed as '-'
+        self.assertAlmostEqual(sp["within3"], 0.6)
+        self.assertEqual(sp["never"], 1)
 
 
 if __name__ == "__main__":

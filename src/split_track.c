@@ -1,0 +1,454 @@
+/* split_track.c - the split-target stage (ALGORITHMS.md §14.3): the "just
+ * split" (model 5) and "split" (model 6) modes of every confirmed IMM
+ * track, their mode probabilities from the model likelihoods over the
+ * track's validated set, and the decoupling of a split track into two
+ * tracks.  The arithmetic is split.c's; this file sequences it over the
+ * track table, after the update stage (tracker.c), with split = true.
+ *
+ * The mode set is the IMM's r single-target models (imm.c, imm_track.c,
+ * unchanged) followed by the two split modes.  The track's mu[] stay the
+ * single-target mode probabilities conditioned on "no split"; the split
+ * modes' probabilities μ_5, μ_6 (and their stacked states) live in a slot
+ * of the tracker's pool (MTT_MAX_SPLIT_TRACKS), taken only while μ_5 + μ_6
+ * is not negligible.  Transitions (ALGORITHMS.md §14.3 [CHOICE]: splits
+ * start from cv, a "just split" lasts one scan):
+ *   c̄_5 = p25 (1 - μ_5 - μ_6) c̄_cv          (c̄_cv: the predicted cv mode of imm_track.c)
+ *   c̄_6 = (1 - p52) μ_5 + (1 - p62) μ_6
+ *   c̄_s = 1 - c̄_5 - c̄_6                      (the single-target modes together)
+ * and the mode update μ ∝ c̄ Λ with, on the scale of the IPDA likelihood
+ * ratio (all-clutter density = 1, ALGORITHMS.md §14.2):
+ *   Λ_s = 1 - PD PG + PD PG Σ_j p*_j / λ_j     (the track's gated pairs, p* model-mixed)
+ *   Λ_5 = mtt_split_just on its own prediction and gate (below), V = 1/λ
+ *   Λ_6 = mtt_split_joint (parametric events, λ known or estimated);
+ * a measurement outside a model's gate is clutter under it, factor 1 on
+ * this scale, so the three compare over the union of their gates.
+ * Measurements that another confirmed track took this frame (its reported
+ * measurement) are not in the split modes' sets [CHOICE]: a target already
+ * tracked is not a second half of this one (after a decoupling the child's
+ * detections stay in the parent's gate for a while).
+ * Model 5 starts from the cv model's prediction widened by the split's
+ * velocity impulse (split_dv); model 6 from the
+ * moment-matched mixture of the two split modes' stacked states, predicted
+ * with the cv model's F and Q per target (mtt_split_predict).  Model 6's
+ * validated set is the frame's measurements in either of its two
+ * per-target gates.
+ *
+ * Decoupling ([S3] eq. 27): when model 6's stacked estimate passes
+ * mtt_split_decouple (d² >= 9.21) and μ_5 + μ_6 >= 0.9 after the update
+ * [CHOICE: tuned on seeds 1000+; 0.5 decouples clutter-driven splits in
+ * crossing3], the updated stacked state of model 6 is separated.  The test
+ * reads the updated stacked estimate (ẑ_t = H x_t, S_t = H P_tt H' + R)
+ * [CHOICE]: [S3] tests the prediction, which decides on the previous
+ * scan's evidence and reports the child one scan later.  Separated: the parent's every
+ * model takes (x_1, P_11) as its common part, and a new track (fresh
+ * identity, parent recorded) starts from (x_2, P_22) in every model
+ * (mtt_imm_seed_track), existence P_parent (μ_5 + μ_6) [CHOICE: the
+ * probability that the split happened and the parent exists], confirmed at
+ * once when that reaches confirm_threshold (and the parent is confirmed):
+ * a confident split is reported at once, a doubtful one starts tentative
+ * and is confirmed or deleted by the ordinary rule (ALGORITHMS.md §12.4).
+ * Only confirmed tracks carry the split modes (a tentative track is not
+ * yet a target that can split).  The reported estimate of a track stays
+ * the single-target IMM's (the split modes enter it at decoupling). */
+#include <string.h>
+
+#include "mtt_internal.h"
+
+#if MTT_WITH_SPLIT
+
+#define SPLIT_KEEP MTT_R(1e-4)  /* μ_5 + μ_6 below: the split modes are dropped */
+#define SPLIT_DECIDE MTT_R(0.9) /* μ_5 + μ_6 at or above: a decoupled split is two tracks */
+#define N1 MTT_STATE_N          /* the split modes are built on the cv model */
+#define NS (2 * MTT_STATE_N)
+
+/* Index of the first cv model of imm_models (mtt_params_check: there is one). */
+static uint8_t cv_model(const mtt_params *p)
+{
+    uint8_t j;
+    for (j = 0; j + 1u < p->imm_n_models; ++j) {
+        if (p->imm_model[j] == MTT_MODEL_CV) {
+            break;
+        }
+    }
+    return j;
+}
+
+/* Model 6's start: the moment-matched mixture of the split modes' stacked
+ * states with weights w[0] (mode 5) and w[1] (mode 6), Σ w = 1. */
+static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split_state x0,
+                        mtt_split_cov P0)
+{
+    const int r = (w[1] >= w[0]) ? 1 : 0; /* the heavier mode is the reference */
+    mtt_real d[2][NS];
+    int a, b, k;
+    for (a = 0; a < NS; ++a) {
+        x0[a] = (w[1 - r] > MTT_R(0.0)) ? sl->xs[r][a] + w[1 - r] * (sl->xs[1 - r][a] - sl->xs[r][a])
+                                        : sl->xs[r][a];
+        d[0][a] = sl->xs[0][a] - x0[a];
+        d[1][a] = sl->xs[1][a] - x0[a];
+    }
+    for (a = 0; a < NS; ++a) {
+        for (b = 0; b < NS; ++b) {
+            mtt_real s = MTT_R(0.0);
+            for (k = 0; k < 2; ++k) {
+                if (w[k] > MTT_R(0.0)) { /* a mode of weight 0 may hold a stale state */
+                    s += w[k] * (sl->Ps[k][a][b] + d[k][a] * d[k][b]);
+                }
+            }
+            P0[a][b] = s;
+        }
+    }
+}
+
+/* 1 when measurement j is free for track ti's split modes: no other
+ * confirmed track took it this frame. */
+static int free_for(const mtt_tracker *trk, uint16_t ti, uint16_t j)
+{
+    const uint16_t o = trk->split_scr.owner[j];
+    return o == 0u || o == ti + 1u;
+}
+
+/* owner[j]: the first confirmed track whose update took measurement j (its
+ * reported measurement: assigned, selected or largest β). */
+static void owners(mtt_tracker *trk)
+{
+    uint16_t i, k;
+    memset(trk->split_scr.owner, 0, trk->n_meas * sizeof trk->split_scr.owner[0]);
+    for (i = 0; i < trk->n_tracks; ++i) {
+        const mtt_track *t = &trk->tracks[i];
+        const mtt_track_frame *tf = &trk->tf[i];
+        if (!tf->valid || t->born || !t->confirmed || t->meas < 0) {
+            continue;
+        }
+        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+            const uint16_t j = trk->pairs[k].meas;
+            if ((int32_t)trk->meas[j].src == t->meas && trk->split_scr.owner[j] == 0u) {
+                trk->split_scr.owner[j] = (uint16_t)(i + 1u);
+            }
+        }
+    }
+}
+
+/* A split mode's validated set: the frame's measurements inside the
+ * bounding box of one of its nt target gates (centre c[t], half-widths
+ * w[t] = sqrt(γ S_t) per axis), free for track ti; split.c gates them
+ * exactly.  Beyond MTT_MAX_SPLIT_MEAS the rest are left out. */
+static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], mtt_real w[2][2])
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    uint16_t j, m = 0;
+    int t;
+    for (j = 0; j < trk->n_meas && m < MTT_MAX_SPLIT_MEAS; ++j) {
+        const mtt_mstore *ms = &trk->meas[j];
+        int in = 0;
+        for (t = 0; t < nt; ++t) {
+            in |= mtt_fabs(ms->x - c[t][0]) <= w[t][0] && mtt_fabs(ms->y - c[t][1]) <= w[t][1];
+        }
+        if (in && free_for(trk, ti, j)) {
+            sc->z[m][0] = ms->x;
+            sc->z[m][1] = ms->y;
+            sc->zi[m] = j;
+            ++m;
+        }
+    }
+    return m;
+}
+
+/* Model 6's validated set: either target's gate of the stacked prediction. */
+static uint16_t split_candidates(mtt_tracker *trk, uint16_t ti, const mtt_split_state xp,
+                                 mtt_split_cov Pp)
+{
+    mtt_real c[2][2], w[2][2];
+    int t;
+    for (t = 0; t < 2; ++t) {
+        const int o = t * N1;
+        c[t][0] = xp[o];
+        c[t][1] = xp[o + 1];
+        w[t][0] = mtt_sqrt(trk->gamma * (Pp[o][o] + trk->R[0]));
+        w[t][1] = mtt_sqrt(trk->gamma * (Pp[o + 1][o + 1] + trk->R[2]));
+    }
+    return gather(trk, ti, 2, c, w);
+}
+
+/* Model 6 of track ti from its slot: mixing, prediction, joint events and
+ * the coupled update into sc->x0, sc->P0.  Returns Λ_6 (0 when it cannot
+ * run), *dec = 1 when the updated estimate passes the decoupling test. */
+static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, mtt_real dt,
+                       const mtt_real w[2], int *dec)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    const mtt_params *p = &trk->par;
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_cov F, Q;
+    mtt_real d2;
+    uint16_t m;
+    int a;
+    *dec = 0;
+    mix_stacked(sl, w, sc->x0, sc->P0);
+    memset(F, 0, sizeof F);
+    for (a = 0; a < N1; ++a) {
+        F[a][a] = MTT_R(1.0);
+    }
+    F[0][2] = dt;
+    F[1][3] = dt;
+    mtt_motion_q(dt, p->imm_psd[cv_model(p)], Q);
+    if (mtt_split_predict(N1, F, Q, sc->x0, sc->P0, sc->xp, sc->Pp) != 0) {
+        return MTT_R(0.0);
+    }
+    m = split_candidates(trk, ti, sc->xp, sc->Pp);
+    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, trk->R, m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
+                             tf->lambda, &sc->as) != 0 ||
+        mtt_split_joint(&sc->as) != 0 ||
+        mtt_split_update(&sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
+        return MTT_R(0.0);
+    }
+    /* [CHOICE] on the updated stacked state (the header) */
+    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, trk->R, MTT_SPLIT_CHI2_99, &d2) == 1;
+    return sc->as.lik;
+}
+
+/* Λ_s of the single-target modes over the track's gated pairs. */
+static mtt_real single_lik(const mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    const mtt_real pdpg = trk->par.pd * trk->par.pg;
+    mtt_real sum = MTT_R(0.0);
+    uint16_t j;
+    for (j = 0; j < tf->pair_count; ++j) {
+        const mtt_pair *pp = &trk->pairs[tf->pair_first + j];
+        sum += (pp->lam > MTT_R(0.0)) ? pp->p / pp->lam : MTT_R(0.0);
+    }
+    return MTT_R(1.0) - pdpg + pdpg * sum;
+}
+
+/* With split_dv > 0 the velocity impulse is the child's alone: the parent
+ * half of model 5 (target 1, the largest-β cluster) is recomputed from the
+ * cv prediction without it, and the cross covariance of the halves is
+ * dropped (their prediction errors are no longer the same; a block-diagonal
+ * stacked covariance stays positive semi-definite).  Uses sc->xp, sc->Pp as
+ * scratch (model 6 is done with them). */
+static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t cm = cv_model(&trk->par);
+    mtt_real lik;
+    int a, b;
+    if (mtt_split_just(N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
+                       MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
+        return; /* the impulse then stays in both halves */
+    }
+    for (a = 0; a < N1; ++a) {
+        sc->x5[a] = sc->xp[a];
+        for (b = 0; b < NS; ++b) {
+            sc->P5[a][b] = (b < N1) ? sc->Pp[a][b] : MTT_R(0.0);
+            sc->P5[b][a] = (b < N1) ? sc->Pp[b][a] : MTT_R(0.0);
+        }
+    }
+}
+
+/* Model 5 of track ti into sc->x5, sc->P5; returns Λ_5 (0 with fewer than
+ * 2 measurements in its gate).  Its prediction is the cv model's plus the
+ * split's velocity impulse: P̄_5 = P̄_cv + Q(dt, split_dv² / dt), white
+ * acceleration over the interval whose velocity variance is split_dv²
+ * [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
+ * (only their order and ratios matter, §14.3 model 5); the impulse is then
+ * taken out of the parent half (impulse_to_child). */
+static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    const mtt_params *p = &trk->par;
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t cm = cv_model(p);
+    mtt_cov P5, Q;
+    mtt_real K[MTT_MAX_STATE][2];
+    mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
+    uint16_t j, m;
+    int a, b;
+    mtt_motion_q(dt, p->split_dv * p->split_dv / dt, Q);
+    for (a = 0; a < MTT_MAX_STATE; ++a) {
+        for (b = 0; b < MTT_MAX_STATE; ++b) {
+            P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? Q[a][b] : MTT_R(0.0));
+        }
+    }
+    if (mtt_kalman_innov_n(N1, P5, trk->R, S, Si, &det, K) != 0 || !(tf->lambda > MTT_R(0.0))) {
+        return MTT_R(0.0);
+    }
+    c[0][0] = tf->xpm[cm][0];
+    c[0][1] = tf->xpm[cm][1];
+    w[0][0] = mtt_sqrt(trk->gamma * S[0]);
+    w[0][1] = mtt_sqrt(trk->gamma * S[2]);
+    m = gather(trk, ti, 1, c, w);
+    if (m > MTT_MAX_GATED) {
+        m = MTT_MAX_GATED; /* the first ones, in measurement order */
+    }
+    for (j = 0; j < m; ++j) {
+        sc->beta[j] = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1]));
+    }
+    if (m < 2u || mtt_split_just(N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta, MTT_R(1.0) / tf->lambda,
+                                 sc->x5, sc->P5, sc->cluster, sc->beta_n, &lik) != 0) {
+        return MTT_R(0.0);
+    }
+    if (p->split_dv > MTT_R(0.0)) {
+        impulse_to_child(trk, ti, m);
+    }
+    return lik;
+}
+
+/* Free slot of the pool, or MTT_SPLIT_NONE. */
+static uint8_t slot_take(mtt_tracker *trk)
+{
+    uint8_t k;
+    for (k = 0; k < MTT_MAX_SPLIT_TRACKS; ++k) {
+        if (!trk->split[k].used) {
+            trk->split[k].used = 1;
+            return k;
+        }
+    }
+    return MTT_SPLIT_NONE;
+}
+
+/* Decoupling: the parent takes (x_1, P_11) of the stacked state in every
+ * model (extras kept, their cross covariance with the common part zeroed),
+ * the child starts from (x_2, P_22).  0, or -1 when nothing was done. */
+static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    mtt_track *t = &trk->tracks[ti];
+    mtt_state x1, x2;
+    mtt_cov P1, P2;
+    uint8_t j, a, b;
+    int ci;
+    memset(x1, 0, sizeof x1);
+    memset(x2, 0, sizeof x2);
+    memset(P1, 0, sizeof P1);
+    memset(P2, 0, sizeof P2);
+    if (mtt_split_separate(N1, sc->x0, sc->P0, x1, P1, x2, P2) != 0) {
+        return -1;
+    }
+    ci = mtt_track_append(trk, x2, P2, t->existence * ps,
+                          t->confirmed && t->existence * ps >= trk->par.confirm_threshold, 1);
+    if (ci < 0) {
+        trk->stats.last.split_dropped++;
+        return -1;
+    }
+    mtt_imm_seed_track(trk, (uint16_t)ci, dt);
+    trk->tracks[ci].parent = t->id;
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        for (a = 0; a < MTT_MAX_STATE; ++a) {
+            if (a < N1) {
+                t->xm[j][a] = x1[a];
+            }
+            for (b = 0; b < MTT_MAX_STATE; ++b) {
+                if (a < N1 && b < N1) {
+                    t->Pm[j][a][b] = P1[a][b];
+                } else if (a < N1 || b < N1) {
+                    t->Pm[j][a][b] = MTT_R(0.0);
+                }
+            }
+        }
+    }
+    memcpy(t->x, x1, sizeof t->x);
+    memcpy(t->P, P1, sizeof t->P);
+    trk->stats.last.splits++;
+    return 0;
+}
+
+/* The split modes of one confirmed IMM track after its update. */
+static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
+{
+    const mtt_params *p = &trk->par;
+    mtt_track *t = &trk->tracks[ti];
+    mtt_split_scratch *sc = &trk->split_scr;
+    mtt_split_slot *sl = (t->split_slot != MTT_SPLIT_NONE) ? &trk->split[t->split_slot] : NULL;
+    const mtt_real m5 = (sl != NULL) ? sl->mu[0] : MTT_R(0.0);
+    const mtt_real m6 = (sl != NULL) ? sl->mu[1] : MTT_R(0.0);
+    const mtt_real c5 = p->split_p25 * (MTT_R(1.0) - m5 - m6) * trk->tf[ti].cbar[cv_model(p)];
+    const mtt_real c6 = (MTT_R(1.0) - p->split_p52) * m5 + (MTT_R(1.0) - p->split_p62) * m6;
+    const mtt_real cs = MTT_R(1.0) - c5 - c6;
+    mtt_real lam_s, lam5, lam6 = MTT_R(0.0), c, mu5, mu6;
+    int dec = 0;
+    uint16_t j;
+    if (sl != NULL && c6 > MTT_R(0.0)) {
+        const mtt_real w[2] = {(MTT_R(1.0) - p->split_p52) * m5 / c6, (MTT_R(1.0) - p->split_p62) * m6 / c6};
+        lam6 = model6(trk, ti, sl, dt, w, &dec);
+    }
+    lam_s = single_lik(trk, ti);
+    lam5 = model5(trk, ti, dt);
+    c = cs * lam_s + c5 * lam5 + c6 * lam6;
+    if (c > MTT_R(0.0) && mtt_isfinite(c)) {
+        mu5 = c5 * lam5 / c;
+        mu6 = c6 * lam6 / c;
+    } else {
+        mu5 = MTT_R(0.0);
+        mu6 = MTT_R(0.0);
+    }
+    t->p_split = mu5 + mu6;
+    if (mu6 > MTT_R(0.0) && t->p_split >= SPLIT_DECIDE) {
+        /* the child's measurements are not a new target for initiation */
+        for (j = 0; j < sc->as.m; ++j) {
+            if (sc->as.beta[1][j] >= MTT_R(0.5)) {
+                trk->meas[sc->zi[j]].used = 1;
+            }
+        }
+        if (dec && decouple(trk, ti, t->p_split, dt) == 0) {
+            mu5 = MTT_R(0.0);
+            mu6 = MTT_R(0.0);
+        }
+    }
+    if (!(mu5 + mu6 >= SPLIT_KEEP)) {
+        if (sl != NULL) {
+            sl->used = 0;
+            t->split_slot = MTT_SPLIT_NONE;
+        }
+        return;
+    }
+    if (sl == NULL) {
+        t->split_slot = slot_take(trk);
+        if (t->split_slot == MTT_SPLIT_NONE) {
+            trk->stats.last.split_dropped++; /* pool full: this track cannot split now */
+            return;
+        }
+        sl = &trk->split[t->split_slot];
+    }
+    sl->mu[0] = mu5;
+    sl->mu[1] = mu6;
+    if (mu5 > MTT_R(0.0)) {
+        memcpy(sl->xs[0], sc->x5, sizeof sl->xs[0]);
+        memcpy(sl->Ps[0], sc->P5, sizeof sl->Ps[0]);
+    }
+    if (mu6 > MTT_R(0.0)) {
+        memcpy(sl->xs[1], sc->x0, sizeof sl->xs[1]);
+        memcpy(sl->Ps[1], sc->P0, sizeof sl->Ps[1]);
+    }
+}
+
+void mtt_split_frame(mtt_tracker *trk, mtt_real dt)
+{
+    const uint16_t n = trk->n_tracks; /* children appended here are not visited */
+    uint16_t i;
+    if (!trk->par.split) {
+        return;
+    }
+    /* The pool: a slot is used while a live track names it (deleted and
+     * merged tracks have left the table). */
+    for (i = 0; i < MTT_MAX_SPLIT_TRACKS; ++i) {
+        trk->split[i].used = 0;
+    }
+    owners(trk);
+    for (i = 0; i < n; ++i) {
+        if (trk->tracks[i].split_slot != MTT_SPLIT_NONE) {
+            trk->split[trk->tracks[i].split_slot].used = 1;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        mtt_track *t = &trk->tracks[i];
+        if (!trk->tf[i].valid || t->born || !t->confirmed || !(dt > MTT_R(0.0))) {
+            t->p_split = MTT_R(0.0);
+            continue;
+        }
+        split_track(trk, i, dt);
+    }
+}
+
+#endif /* MTT_WITH_SPLIT */

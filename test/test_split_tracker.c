@@ -1,0 +1,216 @@
+/* test_split_tracker.c - split targets through mtt_tracker_step
+ * (ALGORITHMS.md §14.3, src/split_track.c): a hand-built split (one seeded
+ * track, two diverging measurement streams) spawns exactly one child that
+ * records its parent; a target that does not split never spawns; the
+ * decoupling test at its threshold (d² = 9.2103 just above and just below);
+ * the settings that refuse split. */
+#include <math.h>
+#include <string.h>
+
+#include "mtt/mtt.h"
+#include "sim.h"
+#include "tv_assert.h"
+#include "tv_fixture.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static mtt_tracker trk;
+
+#if MTT_WITH_SPLIT
+
+#define FRAMES 30
+#define SPLIT_AT 10
+
+/* One seeded target at (0, 0) moving at (10, 0) per frame, sigma 1 in
+ * the units of the test, PD 1; from frame SPLIT_AT a child leaves it at
+ * (10, vy_child) per frame; a few clutter points far from both. */
+static void split_params(mtt_params *p)
+{
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(p));
+    p->association = MTT_ASSOC_LM_IHPDA;
+    p->motion = MTT_MOTION_IMM;
+    p->split = 1;
+    p->split_dv = MTT_R(4.0);
+    p->process_psd = MTT_R(0.05);
+    p->imm_psd[0] = MTT_R(0.05);
+    p->imm_psd[1] = MTT_R(0.5);
+    p->clutter_density = MTT_R(1e-4);
+    p->pd = MTT_R(0.99);
+    p->existence_init = MTT_R(0.02);
+    p->confirm_threshold = MTT_R(0.97);
+    p->vmax = MTT_R(20.0);
+}
+
+/* Runs the scene; returns the number of tracks that split off, and the
+ * parent id and the number of confirmed tracks at the end. */
+static int run_scene(double vy_child, uint32_t *parent_of_child, int *n_confirmed, double *child_dy)
+{
+    mtt_params p;
+    const mtt_real x0[4] = {0, 0, 10, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    sim_rng r = {777u};
+    mtt_stats st;
+    size_t n, i;
+    uint32_t seeded;
+    int k, children = 0;
+    split_params(&p);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, &seeded));
+    *parent_of_child = MTT_NO_PARENT;
+    *child_dy = 0.0;
+    for (k = 0; k < FRAMES; ++k) {
+        mtt_meas z[8];
+        int m = 0, c;
+        z[m++] = sim_meas((mtt_real)(10.0 * k + sim_gauss(&r)), (mtt_real)sim_gauss(&r), MTT_R(0.0), 0);
+        if (k > SPLIT_AT && vy_child != 0.0) {
+            z[m++] = sim_meas((mtt_real)(10.0 * k + sim_gauss(&r)),
+                              (mtt_real)(vy_child * (k - SPLIT_AT) + sim_gauss(&r)), MTT_R(0.0), 0);
+        }
+        for (c = 0; c < 3; ++c) { /* clutter 200 or more away from both */
+            z[m++] = sim_meas((mtt_real)(10.0 * k - 200.0 + 400.0 * sim_unif(&r)),
+                              (mtt_real)(-400.0 - 200.0 * sim_unif(&r)), MTT_R(0.0), 0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, z, (size_t)m));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    *n_confirmed = 0;
+    for (i = 0; i < n; ++i) {
+        mtt_track_view v;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, i, &v));
+        TEST_ASSERT_EQUAL_UINT8(1, v.split);
+        TEST_ASSERT_TRUE(v.p_split >= MTT_R(0.0) && v.p_split <= MTT_R(1.0));
+        *n_confirmed += v.confirmed;
+        if (v.parent != MTT_NO_PARENT) {
+            ++children;
+            *parent_of_child = v.parent;
+            /* the child is on the child's stream: y = vy (FRAMES - 1 - SPLIT_AT) */
+            *child_dy = (double)v.x[1] - vy_child * (FRAMES - 1 - SPLIT_AT);
+        } else {
+            TEST_ASSERT_EQUAL_UINT32(seeded, v.id);
+            TEST_ASSERT_TRUE(fabs((double)v.x[1]) < 5.0); /* the parent stays on the parent */
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)children, st.total.splits);
+    TEST_ASSERT_EQUAL_UINT32(0, st.total.split_dropped);
+    return children;
+}
+
+static void test_a_hand_built_split_spawns_one_child_with_its_parent(void)
+{
+    uint32_t parent;
+    int conf;
+    double dy;
+    TEST_ASSERT_EQUAL_INT(1, run_scene(4.0, &parent, &conf, &dy));
+    TEST_ASSERT_EQUAL_UINT32(0, parent); /* the seeded track's id */
+    TEST_ASSERT_EQUAL_INT(2, conf);      /* parent and child, nothing else */
+    TEST_ASSERT_TRUE(fabs(dy) < 5.0);
+}
+
+static void test_a_target_that_does_not_split_never_spawns(void)
+{
+    uint32_t parent;
+    int conf;
+    double dy;
+    TEST_ASSERT_EQUAL_INT(0, run_scene(0.0, &parent, &conf, &dy));
+    TEST_ASSERT_EQUAL_UINT32(MTT_NO_PARENT, parent);
+    TEST_ASSERT_EQUAL_INT(1, conf);
+}
+
+/* A track in the "split" mode (μ_6 = 1) with the halves dx apart, P_tt =
+ * diag(4, 4, 1, 1), no cross covariance, equal velocities, then one frame
+ * (dt = 1) without measurements: the stacked estimate is the prediction,
+ * S_t = 4 + 1 + q/3 + r per axis, d² = dx² / (2 S).  PD 0.5 and p62 = 0.001
+ * keep μ_6 about 0.998 (>= 0.9).  Returns the tracks that split off. */
+static uint32_t spawn_at(double factor)
+{
+    mtt_params p;
+    const mtt_real x0[4] = {0, 0, 1, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const double q = 0.05, S = 4.0 + 1.0 + q / 3.0 + 1.0;
+    const double dx = sqrt(9.2103403719761836 * 2.0 * S) * factor;
+    mtt_stats st;
+    mtt_split_slot *sl;
+    int a;
+    split_params(&p);
+    p.pd = MTT_R(0.5);
+    p.split_p62 = MTT_R(0.001);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
+    TEST_ASSERT_EQUAL_UINT8(MTT_SPLIT_NONE, TV_SPLIT_SLOT(&trk, 0));
+    sl = &TV_SPLIT(&trk, 0);
+    memset(sl, 0, sizeof *sl);
+    sl->used = 1;
+    sl->mu[1] = MTT_R(1.0);
+    for (a = 0; a < 4; ++a) {
+        sl->xs[1][a] = x0[a];
+        sl->xs[1][4 + a] = x0[a];
+        sl->Ps[1][a][a] = P0[5 * a];
+        sl->Ps[1][4 + a][4 + a] = P0[5 * a];
+    }
+    sl->xs[1][4] = (mtt_real)dx; /* the child half dx to the right */
+    TV_SPLIT_SLOT(&trk, 0) = 0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), NULL, 0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    return st.last.splits;
+}
+
+static void test_decoupling_threshold_edge(void)
+{
+    mtt_track_view v;
+    TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001)); /* d² = 9.2121 >= 9.2103: two tracks */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
+    TEST_ASSERT_EQUAL_UINT32(0, v.parent);         /* the child of track 0 ... */
+    TEST_ASSERT_EQUAL_UINT32(1, v.id);             /* ... with the next identity */
+    TEST_ASSERT_EQUAL_UINT32(0, spawn_at(0.9999)); /* d² = 9.2085: still one */
+    TEST_ASSERT_EQUAL_UINT8(0, TV_SPLIT_SLOT(&trk, 0)); /* and still in the split mode */
+}
+
+static void test_split_needs_imm_with_a_cv_model(void)
+{
+    mtt_params p;
+    const char *bad = NULL;
+    split_params(&p);
+    p.motion = MTT_MOTION_CV;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("split", bad);
+    split_params(&p);
+    p.imm_model[0] = MTT_MODEL_CA;
+    p.imm_model[1] = MTT_MODEL_CA;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("split", bad);
+    split_params(&p);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+}
+
+#else
+
+static void test_split_is_refused_without_mtt_with_split(void)
+{
+    mtt_params p;
+    const char *bad = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.split = 1;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("split", bad);
+    (void)trk;
+}
+
+#endif
+
+int main(void)
+{
+    UNITY_BEGIN();
+#if MTT_WITH_SPLIT
+    RUN_TEST(test_a_hand_built_split_spawns_one_child_with_its_parent);
+    RUN_TEST(test_a_target_that_does_not_split_never_spawns);
+    RUN_TEST(test_decoupling_threshold_edge);
+    RUN_TEST(test_split_needs_imm_with_a_cv_model);
+#else
+    RUN_TEST(test_split_is_refused_without_mtt_with_split);
+#endif
+    return UNITY_END();
+}
