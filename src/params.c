@@ -144,6 +144,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->split_p52 = MTT_R(0.1);
     p->split_p62 = MTT_R(0.1);
     p->split_dv = MTT_R(0.0);
+    p->split_decouple_r = 0;
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;

@@ -37,9 +37,13 @@
  * mtt_split_decouple (d² >= 9.21) and μ_5 + μ_6 >= 0.9 after the update
  * [CHOICE: tuned on seeds 1000+; 0.5 decouples clutter-driven splits in
  * crossing3], the updated stacked state of model 6 is separated.  The test
- * reads the updated stacked estimate (ẑ_t = H x_t, S_t = H P_tt H' + R)
- * [CHOICE]: [S3] tests the prediction, which decides on the previous
- * scan's evidence and reports the child one scan later.  Separated: the parent's every
+ * reads the updated stacked estimate (ẑ_t = H x_t) [CHOICE]: [S3] tests
+ * the prediction, which decides on the previous scan's evidence and
+ * reports the child one scan later.  Its covariance is H P_tt H' (the
+ * halves' position estimates are apart at 99 %) [CHOICE], or with
+ * split_decouple_r [S3]'s S_t = H P_tt H' + R (the halves' measurements
+ * would be apart): R adds 2 R to the sum, which at 10 m noise held the
+ * decoupling until the halves were 40 to 60 m apart.  Separated: the parent's every
  * model takes (x_1, P_11) as its common part, and a new track (fresh
  * identity, parent recorded) starts from (x_2, P_22) in every model
  * (mtt_imm_seed_track), existence P_parent (μ_5 + μ_6) [CHOICE: the
@@ -176,6 +180,7 @@ static uint16_t split_candidates(mtt_tracker *trk, uint16_t ti, const mtt_split_
 static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, mtt_real dt,
                        const mtt_real w[2], int *dec)
 {
+    static const mtt_real no_noise[3] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
     mtt_split_scratch *sc = &trk->split_scr;
     const mtt_params *p = &trk->par;
     const mtt_track_frame *tf = &trk->tf[ti];
@@ -202,8 +207,10 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
         mtt_split_update(&sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
-    /* [CHOICE] on the updated stacked state (the header) */
-    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, trk->R, MTT_SPLIT_CHI2_99, &d2) == 1;
+    /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
+     * split_decouple_r (the header) */
+    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, p->split_decouple_r ? trk->R : no_noise,
+                              MTT_SPLIT_CHI2_99, &d2) == 1;
     return sc->as.lik;
 }
 

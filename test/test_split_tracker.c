@@ -2,7 +2,8 @@
  * (ALGORITHMS.md §14.3, src/split_track.c): a hand-built split (one seeded
  * track, two diverging measurement streams) spawns exactly one child that
  * records its parent; a target that does not split never spawns; the
- * decoupling test at its threshold (d² = 9.2103 just above and just below);
+ * decoupling test at its threshold (d² = 9.2103 just above and just below),
+ * on P_11 + P_22 (the default) and on S_1 + S_2 (split_decouple_r);
  * the settings that refuse split. */
 #include <math.h>
 #include <string.h>
@@ -122,14 +123,15 @@ static void test_a_target_that_does_not_split_never_spawns(void)
 /* A track in the "split" mode (μ_6 = 1) with the halves dx apart, P_tt =
  * diag(4, 4, 1, 1), no cross covariance, equal velocities, then one frame
  * (dt = 1) without measurements: the stacked estimate is the prediction,
- * S_t = 4 + 1 + q/3 + r per axis, d² = dx² / (2 S).  PD 0.5 and p62 = 0.001
- * keep μ_6 about 0.998 (>= 0.9).  Returns the tracks that split off. */
-static uint32_t spawn_at(double factor)
+ * S_t = 4 + 1 + q/3 per axis (+ r = 1 with split_decouple_r, [S3] eq. 27),
+ * d² = dx² / (2 S).  PD 0.5 and p62 = 0.001 keep μ_6 about 0.998 (>= 0.9).
+ * Returns the tracks that split off. */
+static uint32_t spawn_at(double factor, int with_r)
 {
     mtt_params p;
     const mtt_real x0[4] = {0, 0, 1, 0};
     const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const double q = 0.05, S = 4.0 + 1.0 + q / 3.0 + 1.0;
+    const double q = 0.05, S = 4.0 + 1.0 + q / 3.0 + (with_r ? 1.0 : 0.0);
     const double dx = sqrt(9.2103403719761836 * 2.0 * S) * factor;
     mtt_stats st;
     mtt_split_slot *sl;
@@ -137,6 +139,7 @@ static uint32_t spawn_at(double factor)
     split_params(&p);
     p.pd = MTT_R(0.5);
     p.split_p62 = MTT_R(0.001);
+    p.split_decouple_r = with_r;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
@@ -161,12 +164,19 @@ static uint32_t spawn_at(double factor)
 static void test_decoupling_threshold_edge(void)
 {
     mtt_track_view v;
-    TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001)); /* d² = 9.2121 >= 9.2103: two tracks */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
-    TEST_ASSERT_EQUAL_UINT32(0, v.parent);         /* the child of track 0 ... */
-    TEST_ASSERT_EQUAL_UINT32(1, v.id);             /* ... with the next identity */
-    TEST_ASSERT_EQUAL_UINT32(0, spawn_at(0.9999)); /* d² = 9.2085: still one */
-    TEST_ASSERT_EQUAL_UINT8(0, TV_SPLIT_SLOT(&trk, 0)); /* and still in the split mode */
+    int with_r;
+    for (with_r = 0; with_r <= 1; ++with_r) {
+        TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001, with_r)); /* d² = 9.2121 >= 9.2103: two tracks */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
+        TEST_ASSERT_EQUAL_UINT32(0, v.parent);                 /* the child of track 0 ... */
+        TEST_ASSERT_EQUAL_UINT32(1, v.id);                     /* ... with the next identity */
+        TEST_ASSERT_EQUAL_UINT32(0, spawn_at(0.9999, with_r)); /* d² = 9.2085: still one */
+        TEST_ASSERT_EQUAL_UINT8(0, TV_SPLIT_SLOT(&trk, 0));    /* and still in the split mode */
+    }
+    /* The halves apart by the estimate test's edge (S = 5.017 per axis)
+     * are not yet apart by [S3]'s (S = 6.017: d² = 7.68). */
+    TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, spawn_at(sqrt(5.0 + 0.05 / 3.0) / sqrt(6.0 + 0.05 / 3.0) * 1.0001, 1));
 }
 
 static void test_split_needs_imm_with_a_cv_model(void)
