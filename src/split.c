@@ -640,6 +640,31 @@ int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_s
     return mixed_update(2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
 }
 
+/* ---- model 5's velocity impulse ---- */
+
+void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q)
+{
+    const mtt_real v = mtt_sqrt(vx * vx + vy * vy);
+    mtt_real qb[2][2], nv[2];
+    int a, b;
+    mtt_motion_q(dt, dv * dv / dt, Q);
+    if (!across || !(v > MTT_R(0.0))) {
+        return;
+    }
+    /* the cv blocks (position, velocity) of one axis, then n n' per block */
+    qb[0][0] = Q[0][0];
+    qb[0][1] = Q[0][2];
+    qb[1][0] = Q[2][0];
+    qb[1][1] = Q[2][2];
+    nv[0] = -vy / v;
+    nv[1] = vx / v;
+    for (a = 0; a < 4; ++a) {
+        for (b = 0; b < 4; ++b) {
+            Q[a][b] = qb[a / 2][b / 2] * nv[a % 2] * nv[b % 2];
+        }
+    }
+}
+
 /* ---- decoupling and conversion ---- */
 
 int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],

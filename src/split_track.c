@@ -258,7 +258,9 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
  * 2 measurements in its gate).  Its prediction is the cv model's plus the
  * split's velocity impulse: P̄_5 = P̄_cv + Q(dt, split_dv² / dt), white
  * acceleration over the interval whose velocity variance is split_dv²
- * [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
+ * [CHOICE], with split_across only across the cv model's course
+ * (mtt_split_impulse_q: the gate is not widened along the course, where a
+ * split does not separate the halves) [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
  * (only their order and ratios matter, §14.3 model 5); the impulse is then
  * taken out of the parent half (impulse_to_child). */
 static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -272,7 +274,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
     uint16_t j, m;
     int a, b;
-    mtt_motion_q(dt, p->split_dv * p->split_dv / dt, Q);
+    mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], Q);
     for (a = 0; a < MTT_MAX_STATE; ++a) {
         for (b = 0; b < MTT_MAX_STATE; ++b) {
             P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? Q[a][b] : MTT_R(0.0));
