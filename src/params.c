@@ -140,7 +140,7 @@ mtt_status mtt_params_default(mtt_params *p)
      * without a second target falls back soon (p52), split targets seldom
      * recombine (p62) */
     p->split = 0;
-    p->split_p25 = MTT_R(0.05);
+    p->split_p25 = MTT_R(0.1);
     p->split_p52 = MTT_R(0.1);
     p->split_p62 = MTT_R(0.1);
     p->split_dv = MTT_R(0.0);
