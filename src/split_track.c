@@ -48,7 +48,9 @@
  * identity, parent recorded) starts from (x_2, P_22) in every model
  * (mtt_imm_seed_track), existence P_parent (μ_5 + μ_6) [CHOICE: the
  * probability that the split happened and the parent exists], confirmed at
- * once when that reaches confirm_threshold (and the parent is confirmed):
+ * once when that reaches split_confirm (and the parent is confirmed) [CHOICE:
+ * a rule of its own, the split's evidence in place of the ordinary
+ * confirm_threshold]:
  * a confident split is reported at once, a doubtful one starts tentative
  * and is confirmed or deleted by the ordinary rule (ALGORITHMS.md §12.4).
  * Only confirmed tracks carry the split modes (a tentative track is not
@@ -336,7 +338,7 @@ static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
         return -1;
     }
     ci = mtt_track_append(trk, x2, P2, t->existence * ps,
-                          t->confirmed && t->existence * ps >= trk->par.confirm_threshold, 1);
+                          t->confirmed && t->existence * ps >= trk->par.split_confirm, 1);
     if (ci < 0) {
         trk->stats.last.split_dropped++;
         return -1;

@@ -126,6 +126,8 @@ static void test_a_target_that_does_not_split_never_spawns(void)
  * S_t = 4 + 1 + q/3 per axis (+ r = 1 with split_decouple_r, [S3] eq. 27),
  * d² = dx² / (2 S).  PD 0.5 and p62 = 0.001 keep μ_6 about 0.998 (>= 0.9).
  * Returns the tracks that split off. */
+static mtt_real child_confirm = MTT_R(0.95); /* split_confirm of spawn_at */
+
 static uint32_t spawn_at(double factor, int with_r)
 {
     mtt_params p;
@@ -140,6 +142,7 @@ static uint32_t spawn_at(double factor, int with_r)
     p.pd = MTT_R(0.5);
     p.split_p62 = MTT_R(0.001);
     p.split_decouple_r = with_r;
+    p.split_confirm = child_confirm;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
@@ -177,6 +180,26 @@ static void test_decoupling_threshold_edge(void)
      * are not yet apart by [S3]'s (S = 6.017: d² = 7.68). */
     TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001, 0));
     TEST_ASSERT_EQUAL_UINT32(0, spawn_at(sqrt(5.0 + 0.05 / 3.0) / sqrt(6.0 + 0.05 / 3.0) * 1.0001, 1));
+}
+
+/* The child's existence at decoupling is P_parent μ_6, about 0.959 in
+ * spawn_at (the parent's existence falls to 0.961 on the empty frame):
+ * confirmed at once with split_confirm 0.95, tentative with 0.97. */
+static void test_child_confirmed_by_split_confirm(void)
+{
+    mtt_track_view parent, child;
+    const mtt_real lims[2] = {MTT_R(0.95), MTT_R(0.97)};
+    int k;
+    for (k = 0; k < 2; ++k) {
+        child_confirm = lims[k];
+        TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.5, 0));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &parent));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &child));
+        TEST_ASSERT_TRUE(child.existence > MTT_R(0.95) && child.existence < MTT_R(0.97));
+        TEST_ASSERT_EQUAL_UINT8(1, parent.confirmed);
+        TEST_ASSERT_EQUAL_UINT8(k == 0 ? 1 : 0, child.confirmed);
+    }
+    child_confirm = MTT_R(0.95);
 }
 
 static void test_split_needs_imm_with_a_cv_model(void)
@@ -218,6 +241,7 @@ int main(void)
     RUN_TEST(test_a_hand_built_split_spawns_one_child_with_its_parent);
     RUN_TEST(test_a_target_that_does_not_split_never_spawns);
     RUN_TEST(test_decoupling_threshold_edge);
+    RUN_TEST(test_child_confirmed_by_split_confirm);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);
