@@ -145,7 +145,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->split_p62 = MTT_R(0.1);
     p->split_dv = MTT_R(0.0);
 #if MTT_WITH_SPLIT
-    p->split_confirm = MTT_R(0.95);
+    p->split_confirm = MTT_R(0.97);
     p->split_across = 1;
     p->split_decouple_r = 0;
 #endif

@@ -645,22 +645,29 @@ int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_s
 void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q)
 {
     const mtt_real v = mtt_sqrt(vx * vx + vy * vy);
-    mtt_real qb[2][2], nv[2];
+    const mtt_real q = dv * dv;
+    mtt_real qb[2][2], D[2][2];
     int a, b;
-    mtt_motion_q(dt, dv * dv / dt, Q);
-    if (!across || !(v > MTT_R(0.0))) {
-        return;
+    /* per axis: position q dt^2 / 2, cross q dt / 2, velocity q */
+    qb[0][0] = MTT_R(0.5) * q * dt * dt;
+    qb[0][1] = MTT_R(0.5) * q * dt;
+    qb[1][0] = qb[0][1];
+    qb[1][1] = q;
+    /* the directions: every axis (D = I), or across the course (D = n n') */
+    D[0][0] = MTT_R(1.0);
+    D[0][1] = MTT_R(0.0);
+    D[1][0] = MTT_R(0.0);
+    D[1][1] = MTT_R(1.0);
+    if (across && v > MTT_R(0.0)) {
+        const mtt_real nx = -vy / v, ny = vx / v;
+        D[0][0] = nx * nx;
+        D[0][1] = nx * ny;
+        D[1][0] = nx * ny;
+        D[1][1] = ny * ny;
     }
-    /* the cv blocks (position, velocity) of one axis, then n n' per block */
-    qb[0][0] = Q[0][0];
-    qb[0][1] = Q[0][2];
-    qb[1][0] = Q[2][0];
-    qb[1][1] = Q[2][2];
-    nv[0] = -vy / v;
-    nv[1] = vx / v;
-    for (a = 0; a < 4; ++a) {
-        for (b = 0; b < 4; ++b) {
-            Q[a][b] = qb[a / 2][b / 2] * nv[a % 2] * nv[b % 2];
+    for (a = 0; a < MTT_MAX_STATE; ++a) {
+        for (b = 0; b < MTT_MAX_STATE; ++b) {
+            Q[a][b] = (a < 4 && b < 4) ? qb[a / 2][b / 2] * D[a % 2][b % 2] : MTT_R(0.0);
         }
     }
 }

@@ -258,9 +258,8 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
 
 /* Model 5 of track ti into sc->x5, sc->P5; returns Λ_5 (0 with fewer than
  * 2 measurements in its gate).  Its prediction is the cv model's plus the
- * split's velocity impulse: P̄_5 = P̄_cv + Q(dt, split_dv² / dt), white
- * acceleration over the interval whose velocity variance is split_dv²
- * [CHOICE], with split_across only across the cv model's course
+ * split's velocity impulse: P̄_5 = P̄_cv + Q_s, per axis split_dv² [dt²/2,
+ * dt/2; dt/2, 1] [CHOICE], with split_across only across the cv model's course
  * (mtt_split_impulse_q: the gate is not widened along the course, where a
  * split does not separate the halves) [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
  * (only their order and ratios matter, §14.3 model 5); the impulse is then
