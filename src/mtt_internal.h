@@ -153,8 +153,8 @@ void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
 void mtt_ipda_frame(mtt_tracker *trk);
 
 /* ---- existence.c: Markov chain one and the existence update (ALGORITHMS.md §11, §6) ---- */
-mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21);
-mtt_real mtt_existence_update(mtt_real ex_pred, mtt_real L);
+mtt_prob mtt_existence_predict(mtt_prob p, mtt_prob p11, mtt_prob p21);
+mtt_prob mtt_existence_update(mtt_prob ex_pred, mtt_ratio L);
 
 /* ---- cluster.c: clusters by union-find (ALGORITHMS.md §9) ---- */
 void mtt_cluster_frame(mtt_tracker *trk);

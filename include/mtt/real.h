@@ -4,14 +4,33 @@
  * through MTT_R() and every function through the mtt_ macros below, so a
  * float build never promotes to double: on a soft-float or single-precision
  * FPU target a stray double costs a library call per operation.
+ *
+ * MTT_REAL_FIXED selects the fixed-point build (docs/FIXED_POINT.md): every
+ * real is an int32_t in the Q format of its quantity, and the converted
+ * stages are written with the quantity types and operation macros of the
+ * second half of this file.  In the float and double builds those types are
+ * mtt_real and every macro expands to exactly the expression it replaces
+ * (same operands, same order), so converting a stage does not change one
+ * bit of their results.  MTT_R, mtt_sqrt, mtt_exp and mtt_log do not exist
+ * in the fixed build: a stage that still uses them does not compile there.
  */
 #ifndef MTT_REAL_H
 #define MTT_REAL_H
 
-#include <math.h>
+#if defined(MTT_REAL_FIXED) && defined(MTT_REAL_DOUBLE)
+#error "MTT_REAL_FIXED and MTT_REAL_DOUBLE exclude each other"
+#endif
 
-/* MTT_REAL_KIND: 1 float, 2 double (part of the configuration identity). */
-#ifdef MTT_REAL_DOUBLE
+/* MTT_REAL_KIND: 1 float, 2 double, 3 fixed point (part of the
+ * configuration identity). */
+#if defined(MTT_REAL_FIXED)
+#include <stdint.h>
+
+#include "mtt/fixed.h"
+typedef int32_t mtt_real; /* a Q-format integer; its format is its quantity's */
+#define MTT_REAL_KIND 3
+#elif defined(MTT_REAL_DOUBLE)
+#include <math.h>
 typedef double mtt_real;
 #define MTT_REAL_KIND 2
 #define MTT_R(x) (x)
@@ -24,6 +43,7 @@ typedef double mtt_real;
 #define MTT_REAL_EPS 2.220446049250313e-16
 #define MTT_REAL_MAX 1.7976931348623157e308
 #else
+#include <math.h>
 typedef float mtt_real;
 #define MTT_REAL_KIND 1
 #define MTT_R(x) ((float)(x)) /* a constant expression: folded at compile time */
@@ -37,8 +57,111 @@ typedef float mtt_real;
 #define MTT_REAL_MAX 3.4028235e38f
 #endif
 
+/* ---------------------------------------------------------------------
+ * Quantity types and operations (docs/FIXED_POINT.md §3, §4).
+ *
+ *   mtt_prob   probabilities, existence, betas         Q30, [0, 2)
+ *   mtt_ratio  likelihood ratios p/lambda, L, Lambda    Q16, [0, 32768)
+ *   mtt_d2     squared Mahalanobis distances, gamma     Q24, [0, 128)
+ *   mtt_pos    positions, velocities, measurements      Q MTT_FX_POS_FRAC
+ *
+ * Operation macros name their result format: MTT_MUL_PP is prob x prob ->
+ * prob, MTT_MUL_RP ratio x prob -> ratio, MTT_DIV_P a quotient of two
+ * values of one format as a prob.  MTT_ADD/MTT_SUB are plain adds (the
+ * formats prove the headroom); MTT_ADDS/MTT_SUBS saturate.  Comparisons of
+ * two values of one format stay <, <=, ==.  MTT_P(), MTT_RATIO(), MTT_D2(),
+ * MTT_POS() are constants of each format (folded at compile time).
+ * --------------------------------------------------------------------- */
+#if defined(MTT_REAL_FIXED)
+
+/* Position LSB 2^-MTT_FX_POS_FRAC of the user's length unit; positions and
+ * measurements must lie in +-MTT_FX_POS_LIMIT (one bit is kept so that an
+ * innovation z - x^ never overflows).  Declared at compile time
+ * (docs/FIXED_POINT.md §3). */
+#ifndef MTT_FX_POS_FRAC
+#define MTT_FX_POS_FRAC 16
+#endif
+#if MTT_FX_POS_FRAC < 0 || MTT_FX_POS_FRAC > 24
+#error "MTT_FX_POS_FRAC must lie in 0..24"
+#endif
+#define MTT_FX_POS_LIMIT ((int32_t)1 << 30)
+
+/* Amplitude LSB 2^-MTT_FX_AMP_FRAC (amplitudes are only ranked and fed to
+ * the amplitude likelihood ratio). */
+#ifndef MTT_FX_AMP_FRAC
+#define MTT_FX_AMP_FRAC 16
+#endif
+
+typedef int32_t mtt_prob;
+typedef int32_t mtt_ratio;
+typedef int32_t mtt_d2;
+typedef int32_t mtt_pos;
+
+#define MTT_FX_PROB_FRAC 30
+#define MTT_FX_RATIO_FRAC 16
+#define MTT_FX_D2_FRAC 24
+
+/* round(x 2^f) of a constant x: an arithmetic constant expression that the
+ * compiler folds, so no double arithmetic reaches the image. */
+#define MTT_FX_CONST(x, f)                                                                         \
+    ((int32_t)((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
+#define MTT_P(x) MTT_FX_CONST(x, MTT_FX_PROB_FRAC)
+#define MTT_RATIO(x) MTT_FX_CONST(x, MTT_FX_RATIO_FRAC)
+#define MTT_D2(x) MTT_FX_CONST(x, MTT_FX_D2_FRAC)
+#define MTT_POS(x) MTT_FX_CONST(x, MTT_FX_POS_FRAC)
+#define MTT_ZERO 0
+/* Existence floor of ALGORITHMS.md §16 (1e-30 in float): one Q30 unit. */
+#define MTT_P_FLOOR 0
+
+#define MTT_ADD(a, b) ((a) + (b))
+#define MTT_SUB(a, b) ((a) - (b))
+#define MTT_ADDS(a, b) mtt_fx_add((a), (b))
+#define MTT_SUBS(a, b) mtt_fx_sub((a), (b))
+#define MTT_MUL_PP(a, b) mtt_fx_mulq((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_RP(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_RR(a, b) mtt_fx_mul((a), (b), MTT_FX_RATIO_FRAC)
+#define MTT_DIV_P(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_DIV_R(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC)
+#define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
+#define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
+
+/* "Finite" in a fixed format: not a saturated value (every kernel
+ * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
+#define mtt_isfinite(x) (((x) > MTT_FX_MIN) && ((x) < MTT_FX_MAX))
+/* A coordinate inside the declared range (docs/FIXED_POINT.md §3). */
+#define MTT_POS_OK(x) (((x) >= -MTT_FX_POS_LIMIT) && ((x) <= MTT_FX_POS_LIMIT))
+
+#else /* float, double: every macro is the expression it stands for */
+
+typedef mtt_real mtt_prob;
+typedef mtt_real mtt_ratio;
+typedef mtt_real mtt_d2;
+typedef mtt_real mtt_pos;
+
+#define MTT_P(x) MTT_R(x)
+#define MTT_RATIO(x) MTT_R(x)
+#define MTT_D2(x) MTT_R(x)
+#define MTT_POS(x) MTT_R(x)
+#define MTT_ZERO MTT_R(0.0)
+#define MTT_P_FLOOR MTT_R(1e-30)
+
+#define MTT_ADD(a, b) ((a) + (b))
+#define MTT_SUB(a, b) ((a) - (b))
+#define MTT_ADDS(a, b) ((a) + (b))
+#define MTT_SUBS(a, b) ((a) - (b))
+#define MTT_MUL_PP(a, b) ((a) * (b))
+#define MTT_MUL_RP(a, b) ((a) * (b))
+#define MTT_MUL_RR(a, b) ((a) * (b))
+#define MTT_DIV_P(a, b) ((a) / (b))
+#define MTT_DIV_R(a, b) ((a) / (b))
+#define MTT_CVT_P_R(x) (x)
+#define MTT_CVT_R_P(x) (x)
+
 /* Finite test without isfinite(), whose float overloads some freestanding
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
 #define mtt_isfinite(x) (((x) == (x)) && (mtt_fabs(x) <= MTT_REAL_MAX))
+#define MTT_POS_OK(x) mtt_isfinite(x)
+
+#endif /* MTT_REAL_FIXED */
 
 #endif /* MTT_REAL_H */
