@@ -144,7 +144,7 @@ void mtt_params_imm_reset(mtt_params *p, uint8_t r);
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
  * beta; beta_0 and L. */
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L);
+void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob *beta0, mtt_ratio *L);
 /* IPDA row of track ti over its gate: pair.beta, tf.beta0 and the updated
  * existence tf.ex_post. */
 void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);

@@ -67,7 +67,8 @@ typedef float mtt_real;
  *
  * Operation macros name their result format: MTT_MUL_PP is prob x prob ->
  * prob, MTT_MUL_RP ratio x prob -> ratio, MTT_DIV_P a quotient of two
- * values of one format as a prob.  MTT_ADD/MTT_SUB are plain adds (the
+ * values of one format as a prob, MTT_DIV_R the same as a ratio,
+ * MTT_DIV_PR prob / ratio -> prob.  MTT_ADD/MTT_SUB are plain adds (the
  * formats prove the headroom); MTT_ADDS/MTT_SUBS saturate.  Comparisons of
  * two values of one format stay <, <=, ==.  MTT_P(), MTT_RATIO(), MTT_D2(),
  * MTT_POS() are constants of each format (folded at compile time).
@@ -122,6 +123,7 @@ typedef int32_t mtt_pos;
 #define MTT_MUL_RR(a, b) mtt_fx_mul((a), (b), MTT_FX_RATIO_FRAC)
 #define MTT_DIV_P(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_DIV_R(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC)
+#define MTT_DIV_PR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC)
 #define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
 #define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
 
@@ -154,6 +156,7 @@ typedef mtt_real mtt_pos;
 #define MTT_MUL_RR(a, b) ((a) * (b))
 #define MTT_DIV_P(a, b) ((a) / (b))
 #define MTT_DIV_R(a, b) ((a) / (b))
+#define MTT_DIV_PR(a, b) ((a) / (b))
 #define MTT_CVT_P_R(x) (x)
 #define MTT_CVT_R_P(x) (x)
 
