@@ -21,14 +21,38 @@
 #error "MTT_REAL_FIXED and MTT_REAL_DOUBLE exclude each other"
 #endif
 
-/* MTT_REAL_KIND: 1 float, 2 double, 3 fixed point (part of the
- * configuration identity). */
+/* MTT_REAL_KIND: 1 float, 2 double, 3 fixed point with the declared
+ * position and amplitude formats folded in (3 + 4 (MTT_FX_POS_FRAC + 32
+ * MTT_FX_AMP_FRAC)): part of the configuration identity, so a caller
+ * compiled with other declared units is refused like one with other bounds. */
 #if defined(MTT_REAL_FIXED)
 #include <stdint.h>
 
 #include "mtt/fixed.h"
 typedef int32_t mtt_real; /* a Q-format integer; its format is its quantity's */
-#define MTT_REAL_KIND 3
+
+/* Position LSB 2^-MTT_FX_POS_FRAC of the user's length unit; positions and
+ * measurements must lie in +-MTT_FX_POS_LIMIT (one bit is kept so that an
+ * innovation z - x^ never overflows).  Declared at compile time
+ * (docs/FIXED_POINT.md §3). */
+#ifndef MTT_FX_POS_FRAC
+#define MTT_FX_POS_FRAC 16
+#endif
+#if MTT_FX_POS_FRAC < 0 || MTT_FX_POS_FRAC > 24
+#error "MTT_FX_POS_FRAC must lie in 0..24"
+#endif
+#define MTT_FX_POS_LIMIT ((int32_t)1 << 30)
+
+/* Amplitude LSB 2^-MTT_FX_AMP_FRAC (amplitudes are only ranked and fed to
+ * the amplitude likelihood ratio). */
+#ifndef MTT_FX_AMP_FRAC
+#define MTT_FX_AMP_FRAC 16
+#endif
+#if MTT_FX_AMP_FRAC < 0 || MTT_FX_AMP_FRAC > 30
+#error "MTT_FX_AMP_FRAC must lie in 0..30"
+#endif
+
+#define MTT_REAL_KIND (3 + 4 * (MTT_FX_POS_FRAC + 32 * MTT_FX_AMP_FRAC))
 #elif defined(MTT_REAL_DOUBLE)
 #include <math.h>
 typedef double mtt_real;
@@ -74,24 +98,6 @@ typedef float mtt_real;
  * MTT_POS() are constants of each format (folded at compile time).
  * --------------------------------------------------------------------- */
 #if defined(MTT_REAL_FIXED)
-
-/* Position LSB 2^-MTT_FX_POS_FRAC of the user's length unit; positions and
- * measurements must lie in +-MTT_FX_POS_LIMIT (one bit is kept so that an
- * innovation z - x^ never overflows).  Declared at compile time
- * (docs/FIXED_POINT.md §3). */
-#ifndef MTT_FX_POS_FRAC
-#define MTT_FX_POS_FRAC 16
-#endif
-#if MTT_FX_POS_FRAC < 0 || MTT_FX_POS_FRAC > 24
-#error "MTT_FX_POS_FRAC must lie in 0..24"
-#endif
-#define MTT_FX_POS_LIMIT ((int32_t)1 << 30)
-
-/* Amplitude LSB 2^-MTT_FX_AMP_FRAC (amplitudes are only ranked and fed to
- * the amplitude likelihood ratio). */
-#ifndef MTT_FX_AMP_FRAC
-#define MTT_FX_AMP_FRAC 16
-#endif
 
 typedef int32_t mtt_prob;
 typedef int32_t mtt_ratio;
