@@ -81,21 +81,21 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
 void mtt_gate_frame(mtt_tracker *trk);
 
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
-mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg);
+mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg);
 /* Frame stage: per-track lambda (known or ALGORITHMS.md §5.2), then pair.lam = lambda
  * (lm = 0) or the LM density lambda~ (lm = 1, ALGORITHMS.md §8.2). */
 void mtt_clutter_frame(mtt_tracker *trk, int lm);
 
 /* ---- ihpda.c: intensity order statistics and IHPDA (ALGORITHMS.md §7) ---- */
 /* P_r(l | m, rho), l = 1..m, into out[0..m-1], product/recurrence form (ALGORITHMS.md §7.2). */
-void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out);
+void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out);
 /* Index of row m (1-based m) of the tabulated P_r triangle. */
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
 /* beta_j and L_j (ALGORITHMS.md §7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
  * NULL) receives the 1-based rank of each candidate. */
-void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
-                     const mtt_cand *c, uint16_t m, mtt_real *beta, mtt_real *L, uint8_t *rank_out);
+void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
+                     const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out);
 /* Compute the IHPDA row of track ti over its gated pairs: with excl_used,
  * pairs whose measurement is used (assigned) are left out, except the pair
  * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);

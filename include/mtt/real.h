@@ -88,11 +88,16 @@ typedef float mtt_real;
  *   mtt_ratio  likelihood ratios p/lambda, L, Lambda    Q16, [0, 32768)
  *   mtt_d2     squared Mahalanobis distances, gamma     Q24, [0, 128)
  *   mtt_pos    positions, velocities, measurements      Q MTT_FX_POS_FRAC
+ *   counts     m, ranks and sums of them (MTT_CNT)      Q24, [0, 128)
+ * Densities are held relative to the clutter density (p_j / lambda,
+ * lambda~ / lambda: ratios) and the gate area times it (MTT_REL_DENS).
  *
  * Operation macros name their result format: MTT_MUL_PP is prob x prob ->
  * prob, MTT_MUL_RP ratio x prob -> ratio, MTT_DIV_P a quotient of two
  * values of one format as a prob, MTT_DIV_R the same as a ratio,
- * MTT_DIV_PR prob / ratio -> prob.  MTT_ADD/MTT_SUB are plain adds (the
+ * MTT_DIV_PR prob / ratio -> prob, MTT_DIV_RP ratio / prob -> ratio; the
+ * count format has MTT_MUL_PC (prob x count -> count), MTT_MUL_CR (count x
+ * ratio -> ratio), MTT_DIV_CR (count / ratio -> ratio).  MTT_ADD/MTT_SUB are plain adds (the
  * formats prove the headroom); MTT_ADDS/MTT_SUBS saturate.  Comparisons of
  * two values of one format stay <, <=, ==.  MTT_P(), MTT_RATIO(), MTT_D2(),
  * MTT_POS() are constants of each format (folded at compile time).
@@ -107,6 +112,7 @@ typedef int32_t mtt_pos;
 #define MTT_FX_PROB_FRAC 30
 #define MTT_FX_RATIO_FRAC 16
 #define MTT_FX_D2_FRAC 24
+#define MTT_FX_CNT_FRAC 24
 
 /* round(x 2^f) of a constant x: an arithmetic constant expression that the
  * compiler folds, so no double arithmetic reaches the image. */
@@ -116,7 +122,13 @@ typedef int32_t mtt_pos;
 #define MTT_RATIO(x) MTT_FX_CONST(x, MTT_FX_RATIO_FRAC)
 #define MTT_D2(x) MTT_FX_CONST(x, MTT_FX_D2_FRAC)
 #define MTT_POS(x) MTT_FX_CONST(x, MTT_FX_POS_FRAC)
+#define MTT_AMP(x) MTT_FX_CONST(x, MTT_FX_AMP_FRAC)
+/* Clutter density per unit^2 (a parameter; provisional format Q30). */
+#define MTT_FX_DENS_FRAC 30
+#define MTT_DENS(x) MTT_FX_CONST(x, MTT_FX_DENS_FRAC)
 #define MTT_ZERO 0
+#define MTT_CNT(n) ((int32_t)(n) * ((int32_t)1 << MTT_FX_CNT_FRAC))
+#define MTT_REL_DENS(d) (((d) > 0) ? MTT_RATIO(1.0) : 0)
 /* Existence floor of ALGORITHMS.md §16 (1e-30 in float): one Q30 unit. */
 #define MTT_P_FLOOR 0
 
@@ -130,6 +142,11 @@ typedef int32_t mtt_pos;
 #define MTT_DIV_P(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_DIV_R(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC)
 #define MTT_DIV_PR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC)
+#define MTT_DIV_RP(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_PC(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_CR(a, b) mtt_fx_mul((a), (b), MTT_FX_CNT_FRAC)
+#define MTT_DIV_CR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC + MTT_FX_RATIO_FRAC - MTT_FX_CNT_FRAC)
+#define MTT_CVT_P_C(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_CNT_FRAC)
 #define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
 #define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
 
@@ -150,7 +167,11 @@ typedef mtt_real mtt_pos;
 #define MTT_RATIO(x) MTT_R(x)
 #define MTT_D2(x) MTT_R(x)
 #define MTT_POS(x) MTT_R(x)
+#define MTT_AMP(x) MTT_R(x)
+#define MTT_DENS(x) MTT_R(x)
 #define MTT_ZERO MTT_R(0.0)
+#define MTT_CNT(n) ((mtt_real)(n))
+#define MTT_REL_DENS(d) (d)
 #define MTT_P_FLOOR MTT_R(1e-30)
 
 #define MTT_ADD(a, b) ((a) + (b))
@@ -163,6 +184,11 @@ typedef mtt_real mtt_pos;
 #define MTT_DIV_P(a, b) ((a) / (b))
 #define MTT_DIV_R(a, b) ((a) / (b))
 #define MTT_DIV_PR(a, b) ((a) / (b))
+#define MTT_DIV_RP(a, b) ((a) / (b))
+#define MTT_MUL_PC(a, b) ((a) * (b))
+#define MTT_MUL_CR(a, b) ((a) * (b))
+#define MTT_DIV_CR(a, b) ((a) / (b))
+#define MTT_CVT_P_C(x) (x)
 #define MTT_CVT_P_R(x) (x)
 #define MTT_CVT_R_P(x) (x)
 
