@@ -113,11 +113,21 @@ typedef int32_t mtt_pos;
 #define MTT_FX_RATIO_FRAC 16
 #define MTT_FX_D2_FRAC 24
 #define MTT_FX_CNT_FRAC 24
+/* Variances and their rates (R's sigma^2, the process noise density):
+ * unit^2 (per T0^3), Q16. */
+#define MTT_FX_VAR_FRAC 16
 
 /* round(x 2^f) of a constant x: an arithmetic constant expression that the
  * compiler folds, so no double arithmetic reaches the image. */
 #define MTT_FX_CONST(x, f)                                                                         \
     ((int32_t)((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
+/* The same, saturated to [MTT_FX_MIN, MTT_FX_MAX] (parameter bounds). */
+#define MTT_FX_CONST_SAT(x, f)                                                                     \
+    (((x) * (double)((int32_t)1 << (f)) >= 2147483647.0)    ? MTT_FX_MAX                            \
+     : ((x) * (double)((int32_t)1 << (f)) <= -2147483647.0) ? MTT_FX_MIN                            \
+                                                            : MTT_FX_CONST(x, f))
+/* "No bound" of the parameter table (params_table.h): saturates. */
+#define MTT_REAL_MAX 3.4028235e38
 #define MTT_P(x) MTT_FX_CONST(x, MTT_FX_PROB_FRAC)
 #define MTT_RATIO(x) MTT_FX_CONST(x, MTT_FX_RATIO_FRAC)
 #define MTT_D2(x) MTT_FX_CONST(x, MTT_FX_D2_FRAC)
