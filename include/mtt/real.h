@@ -121,11 +121,11 @@ typedef int32_t mtt_pos;
  * compiler folds, so no double arithmetic reaches the image. */
 #define MTT_FX_CONST(x, f)                                                                         \
     ((int32_t)((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
-/* The same, saturated to [MTT_FX_MIN, MTT_FX_MAX] (parameter bounds). */
+/* The same, saturated to [MTT_FX_MIN, MTT_FX_MAX] (parameter bounds): the
+ * double is clamped before the conversion, which is then always defined. */
+#define MTT_FX_CLAMPD_(v) (((v) > 2147483647.0) ? 2147483647.0 : (((v) < -2147483647.0) ? -2147483647.0 : (v)))
 #define MTT_FX_CONST_SAT(x, f)                                                                     \
-    (((x) * (double)((int32_t)1 << (f)) >= 2147483647.0)    ? MTT_FX_MAX                            \
-     : ((x) * (double)((int32_t)1 << (f)) <= -2147483647.0) ? MTT_FX_MIN                            \
-                                                            : MTT_FX_CONST(x, f))
+    ((int32_t)MTT_FX_CLAMPD_((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
 /* "No bound" of the parameter table (params_table.h): saturates. */
 #define MTT_REAL_MAX 3.4028235e38
 #define MTT_P(x) MTT_FX_CONST(x, MTT_FX_PROB_FRAC)
