@@ -70,6 +70,31 @@ static void test_tv4_prank(void)
     check_prank(8, MTT_RATIO(10.0), w8); /* TV4 m = 8, rho = 10 */
 }
 
+/* TV4 precision study in this build: every l, m = 1..64, rho in {0, 0.5,
+ * 1, 3, 10, 100} against the closed form in long double, within the
+ * tolerance above (fixed point) or the build's rule. */
+static void test_tv4_prank_to_64(void)
+{
+    static const double rhos[6] = {0.0, 0.5, 1.0, 3.0, 10.0, 100.0};
+    int r;
+    uint16_t m, l;
+    for (r = 0; r < 6; ++r) {
+        for (m = 1; m <= 64; ++m) {
+            mtt_prob out[64];
+            long double a = 1.0L / (1.0L + (long double)rhos[r]), ref = 1.0L;
+            const double tol = (double)m / 16777216.0 + 4e-7;
+            mtt_ihpda_prank(m, MTT_RATIO(rhos[r]), out);
+            for (l = 1; l < m; ++l) {
+                ref *= (long double)l / ((long double)l + a);
+            }
+            for (l = 1; l <= m; ++l) {
+                TV_ASSERT_PROB((double)ref, out[l - 1u], tol);
+                ref = ref * ((long double)l - 1.0L + a) / (long double)l;
+            }
+        }
+    }
+}
+
 /* ---- TV5: IHPDA rows (PD 0.9, PG 0.99, lambda 0.002, rho 3) ---- */
 #define LAMBDA 0.002
 static const double tv5_p[3] = {0.01517412536, 0.005719835949, 0.003383802596};
@@ -182,6 +207,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_tv4_prank);
+    RUN_TEST(test_tv4_prank_to_64);
     RUN_TEST(test_tv5_rows);
     RUN_TEST(test_tv8_lm_density);
     return UNITY_END();
