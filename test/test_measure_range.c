@@ -9,6 +9,7 @@
 #include "mtt_internal.h"
 #include "tv_assert.h"
 #include "tv_fixture.h"
+#include "sim.h"
 #include "unity.h"
 
 static mtt_tracker trk; /* measure.c reads no parameter: zeroed is enough */
@@ -18,16 +19,6 @@ void setUp(void)
     memset(&trk, 0, sizeof trk);
 }
 void tearDown(void) {}
-
-static mtt_meas det(mtt_real x, mtt_real y, mtt_real amp, int has_amp)
-{
-    mtt_meas m;
-    m.x = x;
-    m.y = y;
-    m.amplitude = amp;
-    m.has_amplitude = has_amp;
-    return m;
-}
 
 static void test_unrepresentable_skipped_and_counted(void)
 {
@@ -41,14 +32,14 @@ static void test_unrepresentable_skipped_and_counted(void)
     const mtt_real sat = (mtt_real)NAN;
 #endif
     mtt_meas in[8];
-    in[0] = det(MTT_POS(1.0), MTT_POS(2.0), MTT_ZERO, 0); /* kept */
-    in[1] = det(big, MTT_POS(2.0), MTT_ZERO, 0);
-    in[2] = det(MTT_POS(1.0), -big, MTT_ZERO, 0);
-    in[3] = det(edge, -edge, MTT_ZERO, 0);                /* kept */
-    in[4] = det(MTT_POS(3.0), MTT_POS(4.0), sat, 1);
-    in[5] = det(MTT_POS(3.0), MTT_POS(4.0), -sat, 1);
-    in[6] = det(sat, MTT_POS(4.0), MTT_ZERO, 0);
-    in[7] = det(MTT_POS(-5.0), MTT_POS(6.0), MTT_ZERO, 1); /* kept: amplitude 0 */
+    in[0] = sim_meas(MTT_POS(1.0), MTT_POS(2.0), MTT_ZERO, 0); /* kept */
+    in[1] = sim_meas(big, MTT_POS(2.0), MTT_ZERO, 0);
+    in[2] = sim_meas(MTT_POS(1.0), -big, MTT_ZERO, 0);
+    in[3] = sim_meas(edge, -edge, MTT_ZERO, 0);                /* kept */
+    in[4] = sim_meas(MTT_POS(3.0), MTT_POS(4.0), sat, 1);
+    in[5] = sim_meas(MTT_POS(3.0), MTT_POS(4.0), -sat, 1);
+    in[6] = sim_meas(sat, MTT_POS(4.0), MTT_ZERO, 0);
+    in[7] = sim_meas(MTT_POS(-5.0), MTT_POS(6.0), MTT_ZERO, 1); /* kept: amplitude 0 */
     mtt_measure_select(&trk, in, 8u);
     TEST_ASSERT_EQUAL_UINT(3u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
