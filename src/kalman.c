@@ -11,7 +11,7 @@ void mtt_sym(mtt_cov P)
     int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = i + 1; j < MTT_STATE_N; ++j) {
-            mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
+            mtt_real s = MTT_HALF(MTT_ADD(P[i][j], P[j][i]));
             P[i][j] = s;
             P[j][i] = s;
         }
@@ -34,7 +34,10 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
 {
     mtt_motion_predict(dt, sw, x, P, xp, Pp);
     mtt_sym(Pp);
+    MTT_COV_NORM(Pp);
 }
+
+#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
 
 /* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
  * build without IMM, so the firmware code is the fixed-size one. */
@@ -252,3 +255,4 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     *d2 = acc;
     return 0;
 }
+#endif /* MTT_REAL_FIXED */

@@ -53,6 +53,17 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
 void mtt_sym(mtt_cov P);
+#ifdef MTT_REAL_FIXED
+/* ---- fx_cov.c: block floating point of the covariances (fixed point only) ---- */
+/* Largest mantissa to `top` bits (exact shifts left, rounded right). */
+void mtt_fx_cov_norm(mtt_cov P, int top);
+/* Headroom for a prediction over dt (Q16 frames). */
+void mtt_fx_cov_fit(mtt_cov P, int32_t dt);
+/* Both blocks to the larger exponent. */
+void mtt_fx_cov_align(mtt_cov A, mtt_cov B);
+/* Q(dt) of the CV model for sw (Q16), with the headroom of mtt_fx_cov_fit. */
+void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q);
+#endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive
  * and finite.  The one L D L' of the library (kalman.c). */

@@ -160,6 +160,21 @@ typedef int32_t mtt_pos;
 #define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
 #define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
 
+/* Covariances in block floating point (docs/FIXED_POINT.md §2, Status
+ * findings 1 and 5): mtt_cov has one more row, whose first element is the
+ * block exponent e (values = mantissas 2^e); between stages the largest
+ * mantissa has MTT_FX_COV_TOP bits.  dt is in Q16 frames (T0). */
+#define MTT_FX_COV_TOP 28
+#define MTT_FX_T_FRAC 16
+#define MTT_COV_ROWS(n) ((n) + 1)
+#define MTT_COV_E(P) ((P)[MTT_MAX_STATE][0])
+#define MTT_MUL_T(dt, v) mtt_fx_mul((dt), (v), MTT_FX_T_FRAC)
+#define MTT_HALF(x) mtt_fx_mul((x), 1, 1)
+#define MTT_COV_FIT(P, dt) mtt_fx_cov_fit((P), (dt))
+#define MTT_COV_ALIGN(A, B) mtt_fx_cov_align((A), (B))
+#define MTT_COV_COPY_E(D, S) (MTT_COV_E(D) = MTT_COV_E(S))
+#define MTT_COV_NORM(P) mtt_fx_cov_norm((P), MTT_FX_COV_TOP)
+
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
 #define mtt_isfinite(x) (((x) > MTT_FX_MIN) && ((x) < MTT_FX_MAX))
@@ -201,6 +216,14 @@ typedef mtt_real mtt_pos;
 #define MTT_CVT_P_C(x) (x)
 #define MTT_CVT_P_R(x) (x)
 #define MTT_CVT_R_P(x) (x)
+
+#define MTT_COV_ROWS(n) (n)
+#define MTT_MUL_T(dt, v) ((dt) * (v))
+#define MTT_HALF(x) (MTT_R(0.5) * (x))
+#define MTT_COV_FIT(P, dt) ((void)0)
+#define MTT_COV_ALIGN(A, B) ((void)0)
+#define MTT_COV_COPY_E(D, S) ((void)0)
+#define MTT_COV_NORM(P) ((void)0)
 
 /* Finite test without isfinite(), whose float overloads some freestanding
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
