@@ -132,4 +132,38 @@ void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
     MTT_COV_E(Q) = eq;
 }
 
+int32_t mtt_fx_at(int32_t m, int from, int to)
+{
+    const int s = to - from;
+    if (s >= 0) {
+        return (s > 62) ? 0 : mtt_fx_mul(m, 1, s);
+    }
+    return (-s > 30) ? ((m == 0) ? 0 : ((m > 0) ? MTT_FX_MAX : MTT_FX_MIN)) : mtt_fx_mul(m, (int32_t)1 << -s, 0);
+}
+
+int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
+{
+    int b = 0, k, e;
+    for (k = 0; k < 3; ++k) {
+        const int l = bitlen(R[k]);
+        b = (l > b) ? l : b;
+    }
+    /* R's values at the exponent where its largest has MTT_FX_COV_TOP bits */
+    e = (b > 0) ? -MTT_FX_VAR_FRAC + b - MTT_FX_COV_TOP : -127;
+    e = (MTT_COV_E(Pp) > e) ? MTT_COV_E(Pp) : e;
+    return e + 1; /* a sum of two terms below 2^28 */
+}
+
+int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
+{
+    int b = 0, k, sh;
+    for (k = 0; k < 3; ++k) {
+        const int l = bitlen(S[k]);
+        b = (l > b) ? l : b;
+    }
+    sh = 27 - b + bitlen(det); /* max |S| 2^sh / det < 2^28 */
+    sh = (sh < 0) ? 0 : ((sh > 62) ? 62 : sh);
+    return -MTT_SYM_E(S) - 28 - sh;
+}
+
 #endif /* MTT_REAL_FIXED */

@@ -34,8 +34,8 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
                         mtt_cov Pp);
 /* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
  * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
-int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
-                     mtt_real K[][2]);
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                     mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
 /* PDA update with m measurements (ALGORITHMS.md §6), K and Si = S^-1 from
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
@@ -43,8 +43,8 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
  * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
 #if MTT_WITH_IMM
 /* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
-int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                       mtt_real *det, mtt_real K[][2]);
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                       mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
 void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                       const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                       mtt_real beta0, mtt_state x, mtt_cov P);
@@ -63,6 +63,12 @@ void mtt_fx_cov_fit(mtt_cov P, int32_t dt);
 void mtt_fx_cov_align(mtt_cov A, mtt_cov B);
 /* Q(dt) of the CV model for sw (Q16), with the headroom of mtt_fx_cov_fit. */
 void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q);
+/* Mantissa m at exponent `from` re-expressed at `to` (rounded, saturated). */
+int32_t mtt_fx_at(int32_t m, int from, int to);
+/* Exponent of S = Pp_pos + R (R in Q16) with every entry below 2^29. */
+int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3]);
+/* Exponent of S^-1 = adj(S) / det with every entry below 2^28 (det > 0). */
+int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det);
 #endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive

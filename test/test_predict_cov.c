@@ -51,6 +51,12 @@ static void cov_set(mtt_cov P, const double *v, int e)
 #endif
 }
 
+#ifdef MTT_REAL_FIXED
+#define MTT_FX_CONST_OR_R(v) ((mtt_real)llround(ldexp((v), MTT_FX_VAR_FRAC)))
+#else
+#define MTT_FX_CONST_OR_R(v) ((mtt_real)(v))
+#endif
+
 static double cov_at(mtt_cov P, int i, int j)
 {
 #ifdef MTT_REAL_FIXED
@@ -169,6 +175,59 @@ static void test_long_gap(void)
     TV_ASSERT_Q(100.0 + dt * 10.0, xp[0], MTT_FX_POS_FRAC, 0.0);
 }
 
+/* ---- the innovation covariance S = H P^ H' + R, S^-1 and K (ALGORITHMS.md
+ * §3) on TV2.  Fixed point: R is quantised to Q16 (q = 2^-17); S's three
+ * terms are re-expressed at e(S), half a unit each, two terms (three and a
+ * halving for s12): dS <= dP^ + q + 2 u(S).  det = s11 s22 - s12^2:
+ * (s11 + s22 + 2 |s12|) dS and its two products' roundings (u(det)); S^-1 = adj(S) / det: dSi <= (dS +
+ * |Si| d det) / det + u(Si) / 2; K = P^ S^-1 (rows): dK <= dP^ (|Si0| + |Si1|) +
+ * (|P^_i0| + |P^_i1|) max dSi + u(K). ---- */
+static const double tv2_S[3] = {9.666666667, 1.3, 10.66666667};
+static const double tv2_K[8] = {0.8986732983,  -0.01577580824, -0.005915928089, 0.8132210037,
+                                0.4732742471,  -0.05768029886, -0.05768029886,  0.4289047864};
+
+static void test_tv2_innovation(void)
+{
+    static const double r[3] = {1.0, 0.3, 2.0}; /* TV2 R */
+    mtt_state xp;
+    mtt_cov P, Pp;
+    mtt_real R[3], S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det, K[MTT_MAX_STATE][2];
+    double dP, dS, ddet, dSi, si[3], sv[3], kv, det_d, scale_s = 1.0, scale_si = 1.0, scale_k = 1.0;
+    int i, k;
+    cov_set(P, tv2_P0, -24);
+    dP = predict(1.0, xp, P, Pp);
+    for (k = 0; k < 3; ++k) {
+        R[k] = MTT_FX_CONST_OR_R(r[k]);
+    }
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(Pp, R, S, Si, &det, K));
+#ifdef MTT_REAL_FIXED
+    scale_s = ldexp(1.0, MTT_SYM_E(S));
+    scale_si = ldexp(1.0, MTT_SYM_E(Si));
+    scale_k = ldexp(1.0, MTT_COV_E(Pp) + MTT_SYM_E(Si) + 28);
+#endif
+    det_d = tv2_S[0] * tv2_S[2] - tv2_S[1] * tv2_S[1];
+    si[0] = tv2_S[2] / det_d;
+    si[1] = -tv2_S[1] / det_d;
+    si[2] = tv2_S[0] / det_d;
+    dS = dP + 1.0 / 131072.0 + 2.0 * scale_s;
+    ddet = (tv2_S[0] + tv2_S[2] + 2.0 * fabs(tv2_S[1])) * dS + 2.0 * scale_s * scale_s * 268435456.0;
+    dSi = (dS + fmax(fabs(si[0]), fabs(si[2])) * ddet) / det_d + 0.5 * scale_si;
+    for (k = 0; k < 3; ++k) {
+        sv[k] = (double)S[k] * scale_s;
+        ASSERT_COV(tv2_S[k], sv[k], dS);                        /* TV2 S */
+        ASSERT_COV(si[k], (double)Si[k] * scale_si, dSi);       /* S^-1 */
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 2; ++k) {
+            const double tol = dP * (fabs(si[k]) + fabs(si[k + 1])) +
+                               (fabs(tv2_Ppred[4 * i]) + fabs(tv2_Ppred[4 * i + 1])) * dSi + scale_k;
+            kv = (double)K[i][k] * scale_k;
+            ASSERT_COV(tv2_K[2 * i + k], kv, tol); /* TV2 K */
+        }
+    }
+    (void)xp;
+}
+
 /* A state pushed past the format saturates and reads as not finite, so
  * the track is invalid (ALGORITHMS.md §3), never wrapped. */
 static void test_state_saturates(void)
@@ -195,6 +254,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_tv2_predict);
     RUN_TEST(test_long_gap);
+    RUN_TEST(test_tv2_innovation);
     RUN_TEST(test_state_saturates);
     return UNITY_END();
 }

@@ -174,6 +174,19 @@ typedef int32_t mtt_pos;
 #define MTT_COV_ALIGN(A, B) mtt_fx_cov_align((A), (B))
 #define MTT_COV_COPY_E(D, S) (MTT_COV_E(D) = MTT_COV_E(S))
 #define MTT_COV_NORM(P) mtt_fx_cov_norm((P), MTT_FX_COV_TOP)
+/* S, S^-1 (3 values of a symmetric 2 x 2) carry their exponent in a fourth
+ * slot; det S is a mantissa at 2 e(S) + 28, K = Pp S^-1 one at
+ * e(Pp) + e(S^-1) + 28 (implied, not stored).  MTT_AT re-expresses a
+ * mantissa given at exponent `from` at exponent `to`. */
+#define MTT_SYM_SLOTS 4
+#define MTT_SYM_E(S) ((S)[3])
+#define MTT_DET_E(S) (2 * MTT_SYM_E(S) + 28)
+#define MTT_AT(m, from, to) mtt_fx_at((m), (from), (to))
+#define MTT_S_EXP(Pp, R, S) (MTT_SYM_E(S) = mtt_fx_s_exp((Pp), (R)))
+#define MTT_SI_EXP(Si, S, d) (MTT_SYM_E(Si) = mtt_fx_si_exp((S), (d)))
+#define MTT_MUL_SS(a, b) mtt_fx_mul((a), (b), 28)
+#define MTT_DIV_SI(a, d, S, Si) mtt_fx_div((a), (d), -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si))
+#define MTT_MUL_K(a, b) mtt_fx_mul((a), (b), 28)
 
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
@@ -224,6 +237,13 @@ typedef mtt_real mtt_pos;
 #define MTT_COV_ALIGN(A, B) ((void)0)
 #define MTT_COV_COPY_E(D, S) ((void)0)
 #define MTT_COV_NORM(P) ((void)0)
+#define MTT_SYM_SLOTS 3
+#define MTT_AT(m, from, to) (m)
+#define MTT_S_EXP(Pp, R, S) ((void)0)
+#define MTT_SI_EXP(Si, S, d) ((void)0)
+#define MTT_MUL_SS(a, b) ((a) * (b))
+#define MTT_DIV_SI(a, d, S, Si) ((a) / (d))
+#define MTT_MUL_K(a, b) ((a) * (b))
 
 /* Finite test without isfinite(), whose float overloads some freestanding
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
