@@ -19,6 +19,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -249,6 +250,57 @@ static void test_state_saturates(void)
 #endif
 }
 
+/* The prediction stage (predict.c, pipeline stage 2) on two tracks: TV2's,
+ * and one whose predicted state leaves the format (fixed point) or
+ * overflows (float): the first is valid with TV2's x^ and S and TV7's
+ * predicted existence, the second is marked invalid (ALGORITHMS.md §3). */
+static mtt_tracker trk;
+
+static void test_predict_stage(void)
+{
+    static const double r[3] = {1.0, 0.3, 2.0};
+    int i, k;
+    memset(&trk, 0, sizeof trk);
+    TV_PAR(&trk).process_psd = MTT_FX_CONST_OR_R(5.0);
+    TV_PAR(&trk).markov_p11 = MTT_P(0.98);
+    TV_PAR(&trk).markov_p21 = MTT_P(0.0);
+    for (k = 0; k < 3; ++k) {
+        TV_R(&trk)[k] = MTT_FX_CONST_OR_R(r[k]);
+    }
+    TV_N_TRACKS(&trk) = 2;
+    for (i = 0; i < 2; ++i) {
+        cov_set(TV_P(&trk, i), tv2_P0, -24);
+        TV_EXISTENCE(&trk, i) = MTT_P(0.9);
+        for (k = 0; k < 4; ++k) {
+#ifdef MTT_REAL_FIXED
+            TV_X(&trk, i)[k] = (mtt_real)llround(ldexp(tv2_x0[k], MTT_FX_POS_FRAC));
+#else
+            TV_X(&trk, i)[k] = (mtt_real)tv2_x0[k];
+#endif
+        }
+    }
+#ifdef MTT_REAL_FIXED
+    TV_X(&trk, 1)[0] = MTT_POS(30000.0);
+    TV_X(&trk, 1)[2] = MTT_POS(5000.0);
+    mtt_predict_frame(&trk, MTT_FX_CONST(1.0, MTT_FX_T_FRAC));
+#else
+    TV_X(&trk, 1)[0] = MTT_REAL_MAX;
+    TV_X(&trk, 1)[2] = MTT_REAL_MAX;
+    mtt_predict_frame(&trk, MTT_R(1.0));
+#endif
+    TEST_ASSERT_EQUAL_UINT8(1, TV_VALID(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT8(0, TV_VALID(&trk, 1));
+    TV_ASSERT_PROB(0.882, TV_EX_PRED(&trk, 0), 2.51 / 1073741824.0); /* TV7 (test_existence.c) */
+    for (k = 0; k < 4; ++k) {
+        TV_ASSERT_Q(tv2_xpred[k], TV_XP(&trk, 0)[k], MTT_FX_POS_FRAC, 0.0);
+    }
+#ifdef MTT_REAL_FIXED
+    TV_ASSERT_Q(tv2_S[0], TV_S(&trk, 0)[0], -MTT_SYM_E(TV_S(&trk, 0)), 1e-5); /* dS above */
+#else
+    TV_ASSERT_REAL(tv2_S[0], TV_S(&trk, 0)[0]);
+#endif
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -256,5 +308,6 @@ int main(void)
     RUN_TEST(test_long_gap);
     RUN_TEST(test_tv2_innovation);
     RUN_TEST(test_state_saturates);
+    RUN_TEST(test_predict_stage);
     return UNITY_END();
 }
