@@ -15,16 +15,28 @@ static int bitlen(int32_t v)
     return 32 - mtt_fx_clz((uint32_t)((v < 0) ? -v : v));
 }
 
+/* Bit length of the largest |entry|: that of the OR of all |entries|
+ * (one count of leading zeros instead of sixteen). */
 static int block_bits(mtt_cov P)
 {
-    int i, j, b = 0;
+    uint32_t u = 0u;
+    int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = 0; j < MTT_STATE_N; ++j) {
-            const int l = bitlen(P[i][j]);
-            b = (l > b) ? l : b;
+            u |= (uint32_t)((P[i][j] < 0) ? -P[i][j] : P[i][j]);
         }
     }
-    return b;
+    return 32 - mtt_fx_clz(u);
+}
+
+/* v / 2^s rounded to nearest (ties up), 0 < s: a few instructions, no
+ * overflow (right shifts of negative values are arithmetic, fixed.h). */
+static int32_t shr_round(int32_t v, int s)
+{
+    if (s > 31) {
+        return 0;
+    }
+    return (v >> (s - 1) >> 1) + ((v >> (s - 1)) & 1);
 }
 
 /* Mantissas times 2^s: exact for s > 0 (the caller keeps them below 2^31),
@@ -40,7 +52,7 @@ static void shift_block(mtt_cov P, int s)
             if (s > 0) {
                 P[i][j] *= (int32_t)1 << s;
             } else {
-                P[i][j] = (s < -62) ? 0 : mtt_fx_mul(P[i][j], 1, -s);
+                P[i][j] = shr_round(P[i][j], -s);
             }
         }
     }
@@ -119,7 +131,7 @@ void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
     }
     for (k = 0; k < 3; ++k) {
         const int s = eq - e[k];
-        m[k] = (s > 62) ? 0 : ((s >= 0) ? mtt_fx_mul(m[k], 1, s) : m[k] * ((int32_t)1 << -s));
+        m[k] = (s > 0) ? shr_round(m[k], s) : m[k] * ((int32_t)1 << -s);
     }
     Q[0][0] = m[0];
     Q[1][1] = m[0];
@@ -135,8 +147,11 @@ void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
 int32_t mtt_fx_at(int32_t m, int from, int to)
 {
     const int s = to - from;
-    if (s >= 0) {
-        return (s > 62) ? 0 : mtt_fx_mul(m, 1, s);
+    if (s > 0) {
+        return shr_round(m, s);
+    }
+    if (s == 0) {
+        return m;
     }
     return (-s > 30) ? ((m == 0) ? 0 : ((m > 0) ? MTT_FX_MAX : MTT_FX_MIN)) : mtt_fx_mul(m, (int32_t)1 << -s, 0);
 }

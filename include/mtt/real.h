@@ -168,8 +168,9 @@ typedef int32_t mtt_pos;
 #define MTT_FX_T_FRAC 16
 #define MTT_COV_ROWS(n) ((n) + 1)
 #define MTT_COV_E(P) ((P)[MTT_MAX_STATE][0])
-#define MTT_MUL_T(dt, v) mtt_fx_mul((dt), (v), MTT_FX_T_FRAC)
-#define MTT_HALF(x) mtt_fx_mul((x), 1, 1)
+/* dt = 1 frame (the common case) multiplies by nothing. */
+#define MTT_MUL_T(dt, v) (((dt) == ((int32_t)1 << MTT_FX_T_FRAC)) ? (v) : mtt_fx_mul((dt), (v), MTT_FX_T_FRAC))
+#define MTT_HALF(x) ((int32_t)(((x) >> 1) + ((x) & 1)))
 #define MTT_COV_FIT(P, dt) mtt_fx_cov_fit((P), (dt))
 #define MTT_COV_ALIGN(A, B) mtt_fx_cov_align((A), (B))
 #define MTT_COV_COPY_E(D, S) (MTT_COV_E(D) = MTT_COV_E(S))
@@ -184,9 +185,9 @@ typedef int32_t mtt_pos;
 #define MTT_AT(m, from, to) mtt_fx_at((m), (from), (to))
 #define MTT_S_EXP(Pp, R, S) (MTT_SYM_E(S) = mtt_fx_s_exp((Pp), (R)))
 #define MTT_SI_EXP(Si, S, d) (MTT_SYM_E(Si) = mtt_fx_si_exp((S), (d)))
-#define MTT_MUL_SS(a, b) mtt_fx_mul((a), (b), 28)
+#define MTT_MUL_SS(a, b) mtt_fx_mulq((a), (b), 28)
 #define MTT_DIV_SI(a, d, S, Si) mtt_fx_div((a), (d), -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si))
-#define MTT_MUL_K(a, b) mtt_fx_mul((a), (b), 28)
+#define MTT_MUL_K(a, b) mtt_fx_mulq((a), (b), 28)
 
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
