@@ -11,7 +11,7 @@ void mtt_sym(mtt_cov P)
     int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = i + 1; j < MTT_STATE_N; ++j) {
-            mtt_real s = MTT_HALF(MTT_ADD(P[i][j], P[j][i]));
+            mtt_real s = MTT_MEAN2(P[i][j], P[j][i]);
             P[i][j] = s;
             P[j][i] = s;
         }
@@ -51,8 +51,8 @@ static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SL
     MTT_S_EXP(Pp, R, S);
     S[0] = MTT_ADD(MTT_AT(Pp[0][0], MTT_COV_E(Pp), MTT_SYM_E(S)),
                    MTT_AT(R[0], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
-    S[1] = MTT_ADD(MTT_HALF(MTT_ADD(MTT_AT(Pp[0][1], MTT_COV_E(Pp), MTT_SYM_E(S)),
-                                    MTT_AT(Pp[1][0], MTT_COV_E(Pp), MTT_SYM_E(S)))),
+    S[1] = MTT_ADD(MTT_MEAN2(MTT_AT(Pp[0][1], MTT_COV_E(Pp), MTT_SYM_E(S)),
+                             MTT_AT(Pp[1][0], MTT_COV_E(Pp), MTT_SYM_E(S))),
                    MTT_AT(R[1], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
     S[2] = MTT_ADD(MTT_AT(Pp[1][1], MTT_COV_E(Pp), MTT_SYM_E(S)),
                    MTT_AT(R[2], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));

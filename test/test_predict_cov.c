@@ -231,6 +231,40 @@ static void test_tv2_innovation(void)
     (void)xp;
 }
 
+/* The headroom bound is reached: x and v fully correlated (a rank-one P,
+ * every entry 1990, mantissas just below 2^28), so F P F' puts 4 max |P_ij|
+ * plus Q on the diagonal, up to 2^30 + Q: the most that finding 1's bound
+ * allows. */
+static void test_headroom_correlated(void)
+{
+    const double c = 1990.0, q11 = 5.0 / 3.0, q13 = 2.5, q33 = 5.0;
+    double v[16], want[16];
+    mtt_state xp;
+    mtt_cov P, Pp;
+    double tol;
+    int i, j;
+    static const double f[16] = {4, 4, 2, 2, 4, 4, 2, 2, 2, 2, 1, 1, 2, 2, 1, 1}; /* F 1 F' */
+    for (i = 0; i < 16; ++i) {
+        v[i] = c;
+        want[i] = c * f[i];
+    }
+    want[0] += q11;
+    want[5] += q11;
+    want[2] += q13;
+    want[8] += q13;
+    want[7] += q13;
+    want[13] += q13;
+    want[10] += q33;
+    want[15] += q33;
+    cov_set(P, v, -17);
+    tol = predict(1.0, xp, P, Pp);
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            ASSERT_COV(want[4 * i + j], cov_at(Pp, i, j), tol);
+        }
+    }
+}
+
 /* A state pushed past the format saturates and reads as not finite, so
  * the track is invalid (ALGORITHMS.md §3), never wrapped. */
 static void test_state_saturates(void)
@@ -309,6 +343,7 @@ int main(void)
     RUN_TEST(test_tv2_predict);
     RUN_TEST(test_long_gap);
     RUN_TEST(test_tv2_innovation);
+    RUN_TEST(test_headroom_correlated);
     RUN_TEST(test_state_saturates);
     RUN_TEST(test_predict_stage);
     return UNITY_END();
