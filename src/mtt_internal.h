@@ -433,6 +433,9 @@ mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_re
  * combine into t.x, t.P (ALGORITHMS.md §14.2). */
 void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,
                           const mtt_real beta[], mtt_real beta0);
+/* Existence L of an IHPDA-mode IMM track with selected pair a: the
+ * c̄-mixture of every model's own-gate IHPDA L (ALGORITHMS.md §14.2). */
+mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a);
 /* Model states of a new track from its 4-D x, P; dt the two-point interval. */
 void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt);
 #endif /* MTT_WITH_IMM */
