@@ -8,7 +8,10 @@
 #      cortex-m0plus-small): configure + build (one check), ctest (each test
 #      one check: no double helpers, qemu run, host comparison), then prints
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
-#      worst-case stack of mtt_tracker_step, instructions per frame
+#      worst-case stack of mtt_tracker_step, instructions per frame (of the
+#      CV run and, in the presets with the IMM, cortex-m4f and cortex-m0plus,
+#      of the IMM run beside it: ctest firmware.qemu_imm and
+#      firmware.host_compare_imm)
 #   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
 #      converted to fixed point so far; checks: build, no float or double
 #      helper, cppcheck of those stages; prints their .text
@@ -88,7 +91,14 @@ figures() {
     --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
   "${FWCHECK[@]}" doubles --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
   # M4F: the figure of record; M0+: ARMv6-M code on qemu's Cortex-M3 (AN385).
-  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" || return 1
+  # A library with the IMM (MTT_WITH_IMM) also runs the scene with
+  # motion = imm (mtt-fw-imm.elf): its busiest frame is required and printed.
+  local imm=()
+  # (grep without -q reads all of nm's output: no SIGPIPE under pipefail)
+  if arm-none-eabi-nm -g --defined-only "$b/libmtt.a" | grep -w mtt_imm_predict_track >/dev/null; then
+    imm=(--out "$b/firmware/fw-qemu-imm.txt" --imm)
+  fi
+  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" "${imm[@]}" || return 1
 }
 
 cross() {
