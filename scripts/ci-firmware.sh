@@ -6,12 +6,11 @@
 #      qemu-system-arm cppcheck clang-tidy
 #   2. per cross preset (cortex-m4f, cortex-m4f-small, cortex-m0plus,
 #      cortex-m0plus-small): configure + build (one check), ctest (each test
-#      one check: no double helpers, qemu run, host comparison), then prints
+#      one check: no double helpers, qemu run, host comparison; with the IMM,
+#      cortex-m4f and cortex-m0plus, the IMM run's qemu run and comparison
+#      too), then prints (instructions: of the CV run and the IMM run)
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
-#      worst-case stack of mtt_tracker_step, instructions per frame (of the
-#      CV run and, in the presets with the IMM, cortex-m4f and cortex-m0plus,
-#      of the IMM run beside it: ctest firmware.qemu_imm and
-#      firmware.host_compare_imm)
+#      worst-case stack of mtt_tracker_step, instructions per frame
 #   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
 #      converted to fixed point so far; checks: build, no float or double
 #      helper, cppcheck of those stages; prints their .text
