@@ -6,7 +6,9 @@
 #      qemu-system-arm cppcheck clang-tidy
 #   2. per cross preset (cortex-m4f, cortex-m4f-small, cortex-m0plus,
 #      cortex-m0plus-small): configure + build (one check), ctest (each test
-#      one check: no double helpers, qemu run, host comparison), then prints
+#      one check: no double helpers, qemu run, host comparison; with the IMM,
+#      cortex-m4f and cortex-m0plus, the IMM run's qemu run and comparison
+#      too), then prints (instructions: of the CV run and the IMM run)
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
 #      worst-case stack of mtt_tracker_step, instructions per frame
 #   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
@@ -88,7 +90,14 @@ figures() {
     --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
   "${FWCHECK[@]}" doubles --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
   # M4F: the figure of record; M0+: ARMv6-M code on qemu's Cortex-M3 (AN385).
-  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" || return 1
+  # A library with the IMM (MTT_WITH_IMM) also runs the scene with
+  # motion = imm (mtt-fw-imm.elf): its busiest frame is required and printed.
+  local imm=()
+  # (grep without -q reads all of nm's output: no SIGPIPE under pipefail)
+  if arm-none-eabi-nm -g --defined-only "$b/libmtt.a" | grep -w mtt_imm_predict_track >/dev/null; then
+    imm=(--out "$b/firmware/fw-qemu-imm.txt" --imm)
+  fi
+  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" "${imm[@]}" || return 1
 }
 
 cross() {
