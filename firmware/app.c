@@ -9,13 +9,37 @@
  *   T <id> conf <0|1> x <x> y <y> vx <vx> vy <vy> ex <existence> hex <8 hex digits x 5>
  *
  * (the hex words are the IEEE-754 bits of x, y, vx, vy, existence, for an
- * exact comparison), and "END ok" or "END fail <reason>". */
+ * exact comparison), and "END ok" or "END fail <reason>".
+ *
+ * Compiled with FW_IMM 1 (the image mtt-fw-imm, in a build with
+ * MTT_WITH_IMM) it runs the same scene with motion = imm (ALGORITHMS.md §14:
+ * the default imm_models cv and ca, each with the process_psd below as
+ * docs/FORMATS.md's default says; lm-ihpda) and prefixes its lines with I:
+ * IF, IC, and IT lines that add the model probabilities,
+ *
+ *   IT <id> conf <0|1> x .. ex <existence> mu <mu_0> .. <mu_r-1> hex <8 hex digits x (5 + r)>
+ *
+ * With FW_IMM 0 the program is the CV example, unchanged. */
 #include "fw.h"
+
+#ifndef FW_IMM
+#define FW_IMM 0
+#endif
+#if FW_IMM
+#if !MTT_WITH_IMM
+#error "FW_IMM 1 needs a library built with MTT_WITH_IMM 1"
+#endif
+#define FW_PASS "I" /* line prefix of the IMM run */
+#define FW_TITLE "mtt firmware scenario (motion imm, default imm_models): frames "
+#else
+#define FW_PASS ""
+#define FW_TITLE "mtt firmware scenario: frames "
+#endif
 
 /* The tracker's whole RAM cost; static, as firmware allocates it. */
 static mtt_tracker trk;
 static mtt_meas meas[SCN_MAX_MEAS];
-static char line[192];
+static char line[FW_IMM ? 256 : 192]; /* an IT line holds up to 8 more numbers */
 
 static int fail(const char *what)
 {
@@ -28,7 +52,7 @@ static int fail(const char *what)
 
 static void print_frame(int k, size_t n, size_t live, size_t conf)
 {
-    char *p = fmt_str(line, "F ");
+    char *p = fmt_str(line, FW_PASS "F ");
     p = fmt_i32(p, (int32_t)k);
     p = fmt_str(p, " meas ");
     p = fmt_u32(p, (uint32_t)n);
@@ -48,7 +72,7 @@ static void print_ticks(int k, const mtt_stats *st)
     for (s = 0; s < MTT_STAGE_COUNT; ++s) {
         total += st->stage_cycles[s];
     }
-    p = fmt_str(line, "C ");
+    p = fmt_str(line, FW_PASS "C ");
     p = fmt_i32(p, (int32_t)k);
     p = fmt_str(p, " ticks ");
     p = fmt_u32(p, total);
@@ -61,12 +85,28 @@ static void print_ticks(int k, const mtt_stats *st)
     fw_puts(line);
 }
 
+#if FW_IMM
+/* The model probabilities of v: " mu <decimal>..." or, hex 1, " <hex>...". */
+static char *print_mu(char *p, const mtt_track_view *v, int hex)
+{
+    int j;
+    if (!hex) {
+        p = fmt_str(p, " mu");
+    }
+    for (j = 0; j < (int)v->n_models && j < MTT_MAX_MODELS; ++j) {
+        p = fmt_str(p, " ");
+        p = hex ? fmt_hex(p, v->mu[j]) : fmt_fixed(p, v->mu[j], 5);
+    }
+    return p;
+}
+#endif
+
 static void print_track(const mtt_track_view *v)
 {
     const float val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
     static const char *const name[5] = {" x ", " y ", " vx ", " vy ", " ex "};
     int i;
-    char *p = fmt_str(line, "T ");
+    char *p = fmt_str(line, FW_PASS "T ");
     p = fmt_u32(p, v->id);
     p = fmt_str(p, " conf ");
     p = fmt_u32(p, (uint32_t)(v->confirmed != 0));
@@ -74,11 +114,17 @@ static void print_track(const mtt_track_view *v)
         p = fmt_str(p, name[i]);
         p = fmt_fixed(p, val[i], i < 4 ? 3 : 5);
     }
+#if FW_IMM
+    p = print_mu(p, v, 0);
+#endif
     p = fmt_str(p, " hex");
     for (i = 0; i < 5; ++i) {
         p = fmt_str(p, " ");
         p = fmt_hex(p, val[i]);
     }
+#if FW_IMM
+    p = print_mu(p, v, 1);
+#endif
     (void)fmt_str(p, "\n");
     fw_puts(line);
 }
@@ -100,12 +146,19 @@ int fw_app_run(void)
     par.process_psd = 0.5f;
     par.vmax = 10.0f;
     par.cycle_counter = fw_cycle_counter; /* NULL on the host */
+#if FW_IMM
+    par.motion = MTT_MOTION_IMM;
+    /* docs/FORMATS.md: imm_models' default follows process_psd */
+    for (i = 0; i < par.imm_n_models && i < MTT_MAX_MODELS; ++i) {
+        par.imm_psd[i] = par.process_psd;
+    }
+#endif
     if (mtt_tracker_init(&trk, &par) != MTT_OK) {
         return fail("init");
     }
     scn_init(&scn, 20240601u);
 
-    p = fmt_str(line, "mtt firmware scenario: frames ");
+    p = fmt_str(line, FW_TITLE);
     p = fmt_u32(p, SCN_FRAMES);
     p = fmt_str(p, " targets ");
     p = fmt_u32(p, SCN_TARGETS);

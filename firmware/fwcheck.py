@@ -5,12 +5,14 @@
   fwcheck.py qemu --qemu Q --out F --elf E -- <machine args>
                                              run the image, save its output, expect "END ok"
   fwcheck.py compare --target F --host EXE   per-frame confirmed counts equal,
-                                             final states within tolerance
+                                             final states within tolerance (per
+                                             run: CV lines F/T, IMM lines IF/IT)
   fwcheck.py size --size SIZE --nm NM --lib E --base E [--archive A]
                                              library .text/.data/.bss in a firmware
   fwcheck.py stack --build DIR --elf E --objdump OD --src DIR [--root F]
                                              worst-case stack depth of F's call graph
-  fwcheck.py insns --out F                   instructions per frame from the icount run
+  fwcheck.py insns --out F [--out F2 --imm]  instructions per frame from the icount runs
+                                             (--imm: the IMM run's IC lines required)
 
 Python 3 standard library only.  Methods: docs/FIRMWARE.md.
 """
@@ -81,8 +83,10 @@ def cmd_qemu(a):
         f.write(text)
     lines = text.splitlines()
     frames = sum(1 for l in lines if l.startswith("F "))
+    imm_frames = sum(1 for l in lines if l.startswith("IF "))
     ok = r.returncode == 0 and "END ok" in lines
-    print(f"qemu exit {r.returncode}; {frames} frames; "
+    print(f"qemu exit {r.returncode}; "
+          + (f"{imm_frames} IMM frames; " if imm_frames else f"{frames} frames; ") +
           f"{'END ok' if ok else 'FAILED'}; output in {a.out}")
     if not ok:
         print("\n".join(lines[-20:]))
@@ -91,34 +95,37 @@ def cmd_qemu(a):
 
 # ---------------------------------------------------------------- compare
 
+# The runs of the scene, by line prefix: CV ("F", "C", "T" lines; mtt-fw)
+# and IMM ("IF", "IC", "IT"; mtt-fw-imm, app.c's FW_IMM 1).
+RUNS = {"": "CV", "I": "IMM"}
+
+
 def parse_run(text):
-    frames, tracks, end = {}, [], None
+    """{run prefix: (frames, tracks)} and the END reason."""
+    runs, end = {}, None
     for line in text.splitlines():
         f = line.split()
         if not f:
             continue
-        if f[0] == "F":
+        if f[0] == "END":
+            end = " ".join(f[1:])
+            continue
+        pre, kind = f[0][:-1], f[0][-1:]
+        if pre not in RUNS or kind not in ("F", "T"):
+            continue
+        frames, tracks = runs.setdefault(pre, ({}, []))
+        if kind == "F":
             frames[int(f[1])] = {"meas": int(f[3]), "live": int(f[5]), "conf": int(f[7])}
-        elif f[0] == "T":
+        else:
             h = f[f.index("hex") + 1:]
             vals = [struct.unpack(">f", bytes.fromhex(w))[0] for w in h]
             tracks.append({"id": int(f[1]), "conf": int(f[3]), "v": vals})
-        elif f[0] == "END":
-            end = " ".join(f[1:])
-    return frames, tracks, end
+    return runs, end
 
 
-def cmd_compare(a):
-    rel, absol = a.rel, a.abs
-    with open(a.target) as f:
-        tf, tt, tend = parse_run(f.read())
-    r = subprocess.run([a.host], capture_output=True, text=True, timeout=120)
-    hf, ht, hend = parse_run(r.stdout)
+def compare_run(tf, tt, hf, ht, rel, absol):
+    """One run: the errors and the summary line."""
     errs = []
-    if r.returncode != 0 or hend != "ok":
-        errs.append(f"host run failed (exit {r.returncode}, END {hend})")
-    if tend != "ok":
-        errs.append(f"target run did not end ok (END {tend})")
     if sorted(tf) != sorted(hf) or not tf:
         errs.append(f"frame sets differ: target {len(tf)} frames, host {len(hf)}")
     live_diff = 0
@@ -133,18 +140,48 @@ def cmd_compare(a):
     worst = 0.0
     names = ["x", "y", "vx", "vy", "existence"]
     for t, h in zip(tt, ht):
-        if t["id"] != h["id"] or t["conf"] != h["conf"]:
-            errs.append(f"track id/conf {t['id']}/{t['conf']} != host {h['id']}/{h['conf']}")
+        if t["id"] != h["id"] or t["conf"] != h["conf"] or len(t["v"]) != len(h["v"]):
+            errs.append(f"track id/conf/values {t['id']}/{t['conf']}/{len(t['v'])} != host "
+                        f"{h['id']}/{h['conf']}/{len(h['v'])}")
         for i, (x, y) in enumerate(zip(t["v"], h["v"])):
             d = abs(x - y)
             tol = rel * max(abs(x), abs(y)) + absol
             worst = max(worst, d / tol)
             if not d <= tol:
-                errs.append(f"track {t['id']} {names[i]}: target {x!r} host {y!r} (|d| {d:.3g} > {tol:.3g})")
-    print(f"compared {len(tf)} frames (confirmed counts: "
-          f"{'equal' if not any('confirmed' in e for e in errs) else 'DIFFER'}; "
-          f"live counts differing in {live_diff} frames) and {len(tt)} final tracks; "
-          f"largest |d| / tolerance {worst:.3g} (tolerance {rel:g} relative + {absol:g} absolute)")
+                name = names[i] if i < len(names) else f"mu{i - len(names)}"
+                errs.append(f"track {t['id']} {name}: target {x!r} host {y!r} (|d| {d:.3g} > {tol:.3g})")
+    summary = (f"compared {len(tf)} frames (confirmed counts: "
+               f"{'equal' if not any('confirmed' in e for e in errs) else 'DIFFER'}; "
+               f"live counts differing in {live_diff} frames) and {len(tt)} final tracks; "
+               f"largest |d| / tolerance {worst:.3g} (tolerance {rel:g} relative + {absol:g} absolute)")
+    return errs, summary
+
+
+def cmd_compare(a):
+    rel, absol = a.rel, a.abs
+    with open(a.target) as f:
+        tp, tend = parse_run(f.read())
+    r = subprocess.run([a.host], capture_output=True, text=True, timeout=120)
+    hp, hend = parse_run(r.stdout)
+    errs = []
+    if r.returncode != 0 or hend != "ok":
+        errs.append(f"host run failed (exit {r.returncode}, END {hend})")
+    if tend != "ok":
+        errs.append(f"target run did not end ok (END {tend})")
+    if sorted(tp) != sorted(hp):
+        errs.append("runs differ: target " + " ".join(RUNS[p] for p in sorted(tp))
+                    + ", host " + " ".join(RUNS[p] for p in sorted(hp)))
+    lines = []
+    for pre in sorted(set(tp) | set(hp)):
+        (tf, tt), (hf, ht) = tp.get(pre, ({}, [])), hp.get(pre, ({}, []))
+        e, summary = compare_run(tf, tt, hf, ht, rel, absol)
+        tag = f"{RUNS[pre]} run: " if pre else ""
+        lines.append(tag + summary)
+        errs += [tag + x for x in e]
+    if not tp and not hp:
+        errs.append("no frames in either run")
+    for line in lines:
+        print(line)
     for e in errs:
         print("  " + e)
     return 1 if errs else 0
@@ -373,31 +410,44 @@ def cmd_stack(a):
 
 # ---------------------------------------------------------------- insns
 
+STAGE_NAMES = ["validate", "predict", "gate", "lm_clutter", "associate", "update",
+               "initiate", "merge", "manage"]
+
+
 def cmd_insns(a):
-    rows, cal = [], None
-    with open(a.out) as f:
-        for line in f:
-            w = line.split()
-            if w and w[0] == "C":
-                rows.append((int(w[3]), int(w[1]), [int(x) for x in w[5:]]))
-            elif w and w[0] == "K":
-                cal = (int(w[2]), int(w[4]))
-    if not rows:
-        print("no C lines (tick counts) in " + a.out)
+    rows, cals = {"C": [], "IC": []}, []
+    for path in a.out:
+        with open(path) as f:
+            for line in f:
+                w = line.split()
+                if w and w[0] in rows:
+                    rows[w[0]].append((int(w[3]), int(w[1]), [int(x) for x in w[5:]]))
+                elif w and w[0] == "K":
+                    cals.append((int(w[2]), int(w[4])))
+    if not rows["C"]:
+        print("no C lines (tick counts) in " + " ".join(a.out))
+        return 1
+    if a.imm and not rows["IC"]:
+        print("no IC lines (tick counts of the IMM run) in " + " ".join(a.out))
         return 1
     ratio = a.ns_per_tick
-    if cal:
+    for cal in cals:
         print(f"calibration: a loop of {cal[0]} instructions measured {cal[1]} ticks "
               f"= {cal[0] / cal[1]:.2f} instructions per tick (expected {ratio})")
-    ticks, k, stages = max(rows)
-    mean = sum(r[0] for r in rows) / len(rows)
-    names = ["validate", "predict", "gate", "lm_clutter", "associate", "update",
-             "initiate", "merge", "manage"]
     label = a.label or "mtt_tracker_step"
-    print(f"{label}: busiest frame {k}: {ticks} ticks = {ticks * ratio} instructions "
-          f"(+-{ratio}); mean over {len(rows)} frames {mean * ratio:.0f} instructions")
-    print(f"{label}:   per stage (instructions): " + ", ".join(
-        f"{n} {s * ratio}" for n, s in zip(names, stages)))
+    busiest = {}
+    for kind, tag in (("C", ""), ("IC", "IMM ")):
+        if not rows[kind]:
+            continue
+        ticks, k, stages = max(rows[kind])
+        busiest[kind] = ticks
+        mean = sum(r[0] for r in rows[kind]) / len(rows[kind])
+        print(f"{label}: {tag}busiest frame {k}: {ticks} ticks = {ticks * ratio} instructions "
+              f"(+-{ratio}); mean over {len(rows[kind])} frames {mean * ratio:.0f} instructions")
+        print(f"{label}:   per stage (instructions): " + ", ".join(
+            f"{n} {s * ratio}" for n, s in zip(STAGE_NAMES, stages)))
+    if "IC" in busiest:
+        print(f"{label}: busiest IMM frame / busiest CV frame: {busiest['IC'] / busiest['C']:.2f}")
     return 0
 
 
@@ -435,9 +485,11 @@ def main():
     p.add_argument("--label")
     p.add_argument("--limit", type=int, default=0)
     p = sub.add_parser("insns")
-    p.add_argument("--out", required=True)
+    p.add_argument("--out", required=True, action="append")
     p.add_argument("--ns-per-tick", type=int, default=40)
     p.add_argument("--label")
+    p.add_argument("--imm", action="store_true",
+                   help="the build has the IMM: the IMM run's IC lines are required")
     a = ap.parse_args()
     return {"doubles": cmd_doubles, "qemu": cmd_qemu, "compare": cmd_compare,
             "size": cmd_size, "stack": cmd_stack, "insns": cmd_insns}[a.cmd](a)

@@ -6,10 +6,15 @@
 #      qemu-system-arm cppcheck clang-tidy
 #   2. per cross preset (cortex-m4f, cortex-m4f-small, cortex-m0plus,
 #      cortex-m0plus-small): configure + build (one check), ctest (each test
-#      one check: no double helpers, qemu run, host comparison), then prints
+#      one check: no double helpers, qemu run, host comparison; with the IMM,
+#      cortex-m4f and cortex-m0plus, the IMM run's qemu run and comparison
+#      too), then prints (instructions: of the CV run and the IMM run)
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
 #      worst-case stack of mtt_tracker_step, instructions per frame
-#   3. cppcheck and clang-tidy on src/, float and double (one check each)
+#   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
+#      converted to fixed point so far; checks: build, no float or double
+#      helper, cppcheck of those stages; prints their .text
+#   4. cppcheck and clang-tidy on src/, float and double (one check each)
 #
 # Ends with "ci-firmware: N passed, M failed" (scripts/dev.sh adds it to its
 # total) and exits non-zero when anything failed.  The figures are
@@ -85,7 +90,14 @@ figures() {
     --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
   "${FWCHECK[@]}" doubles --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
   # M4F: the figure of record; M0+: ARMv6-M code on qemu's Cortex-M3 (AN385).
-  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" || return 1
+  # A library with the IMM (MTT_WITH_IMM) also runs the scene with
+  # motion = imm (mtt-fw-imm.elf): its busiest frame is required and printed.
+  local imm=()
+  # (grep without -q reads all of nm's output: no SIGPIPE under pipefail)
+  if arm-none-eabi-nm -g --defined-only "$b/libmtt.a" | grep -w mtt_imm_predict_track >/dev/null; then
+    imm=(--out "$b/firmware/fw-qemu-imm.txt" --imm)
+  fi
+  "${FWCHECK[@]}" insns --label "$preset" --out "$b/firmware/fw-qemu.txt" "${imm[@]}" || return 1
 }
 
 cross() {
@@ -103,10 +115,52 @@ cross() {
   done
 }
 
+# ---------------------------------------------------------------- fixed point
+# The fixed-point build (docs/FIXED_POINT.md).  While the conversion is under
+# way, cortex-m0plus-fixed builds the library of the converted stages only:
+# one check that it builds, one that no float or double helper
+# (__aeabi_f*, __aeabi_d*, libgcc's __*sf*/__*df*) is referenced, one
+# cppcheck of the converted stages in the fixed configuration; its .text is
+# printed (a figure).
+FIXED_PRESET=cortex-m0plus-fixed
+fixed_helpers() {
+  local lib="$1" found
+  found="$(arm-none-eabi-nm -u "$lib" | awk '{print $NF}' \
+    | grep -E '^__aeabi_[fd]|^__[a-z]+[sd]f[0-9]?$|^__[a-z]+[sd]f[a-z]+[0-9]?$' | sort -u || true)"
+  if [[ -n "$found" ]]; then
+    say "float/double helpers referenced: $found"
+    return 1
+  fi
+}
+fixed_cppcheck() {
+  local b="$ROOT/build/$FIXED_PRESET" stages f files=()
+  stages="$(sed -n 's/^MTT_FIXED_STAGES:[A-Z]*=//p' "$b/CMakeCache.txt")"
+  for f in ${stages//;/ }; do files+=("src/$f.c"); done
+  cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
+    --inline-suppr --quiet --suppress=variableScope \
+    --template='{file}:{line}: {severity}: {id}: {message}' \
+    -I include -I src -UMTT_USER_CONFIG -DMTT_REAL_FIXED -DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 \
+    -DMTT_MAX_PAIRS=256 "${files[@]}"
+}
+fixed() {
+  local b="$ROOT/build/$FIXED_PRESET"
+  say "=== $FIXED_PRESET (the converted stages)"
+  if ! { cmake --preset "$FIXED_PRESET" >/dev/null && cmake --build --preset "$FIXED_PRESET"; }; then
+    fail "$FIXED_PRESET: configure + build"
+    return
+  fi
+  pass "$FIXED_PRESET: configure + build"
+  check "$FIXED_PRESET: no float or double helper" fixed_helpers "$b/libmtt.a"
+  check "$FIXED_PRESET: cppcheck of the converted stages" fixed_cppcheck
+  say "$FIXED_PRESET: libmtt.a .text $(arm-none-eabi-size -t "$b/libmtt.a" | awk 'END {print $1}') bytes"
+}
+
 # ---------------------------------------------------------------- static analysis
 # Both: the library's include paths; the float build and the double build.
 # cppcheck checks the configuration given (-D/-U) and nothing else;
-# MTT_USER_CONFIG stays undefined (it names a header of the user's).
+# MTT_USER_CONFIG stays undefined (it names a header of the user's), and so
+# does MTT_REAL_FIXED (the fixed-point build: its converted stages are
+# checked by the cortex-m0plus-fixed step).
 # --suppress=variableScope: the library declares its locals at the top of a
 # block (one style through the code, for reading on paper); narrowing a
 # scope changes no behaviour, so this style rule is off.
@@ -115,7 +169,7 @@ run_cppcheck() {
   cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
     --inline-suppr --quiet --suppress=variableScope \
     --template='{file}:{line}: {severity}: {id}: {message}' \
-    -I include -I src -UMTT_USER_CONFIG "$real" src/
+    -I include -I src -UMTT_USER_CONFIG -UMTT_REAL_FIXED "$real" src/
 }
 
 # -bugprone-easily-swappable-parameters: a rule about the shape of an API
@@ -143,6 +197,7 @@ if ! deps; then
 else
   pass "dependencies"
   cross
+  fixed
   say "=== cppcheck (float, double)"
   check "cppcheck float" run_cppcheck -UMTT_REAL_DOUBLE
   check "cppcheck double" run_cppcheck -DMTT_REAL_DOUBLE

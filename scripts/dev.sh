@@ -3,7 +3,9 @@
 #
 #   ./scripts/dev.sh deps    install what the build needs (idempotent)
 #   ./scripts/dev.sh test    deps, then the workflows test-float, test-double,
-#                          test-float-small (configure + build + ctest each),
+#                          test-float-small, test-fixed (configure + build +
+#                          ctest each; test-fixed: the stages converted to
+#                          fixed point so far, docs/FIXED_POINT.md),
 #                          then the Python package (python-package below),
 #                          then scripts/coverage.sh --check (gcov builds of
 #                          the default and the firmware configuration; prints
@@ -31,7 +33,7 @@ cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
 PY_MODULES=(numpy matplotlib)
-WORKFLOWS=(test-float test-double test-float-small)
+WORKFLOWS=(test-float test-double test-float-small test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
 die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }

@@ -3,7 +3,9 @@
 # (docs/FIXED_POINT.md, "Cost"): .text per kernel (arm-none-eabi-gcc
 # -mcpu=cortex-m0plus -mthumb -Os) and instructions per call under
 # qemu-system-arm -icount shift=0 (firmware/fx_cost.c), beside the
-# soft-float helpers and newlib functions they replace.
+# soft-float helpers and newlib functions they replace; then the prediction
+# stage's arithmetic per track (mtt_kalman_predict + mtt_kalman_innov,
+# firmware/fx_stage_cost.c) built as float (soft float) and as fixed point.
 #
 #   ./scripts/fx-cost.sh [OUTDIR]     (default build/fx-cost)
 set -euo pipefail
@@ -37,3 +39,23 @@ echo "== instructions per call (qemu mps2-an385, -icount shift=0; mean over 1024
 qemu-system-arm -machine mps2-an385 -semihosting-config enable=on,target=native \
   -nographic -monitor none -serial none -icount shift=0 -kernel "$OUT/fx-cost.elf" 2>&1 |
   tee "$OUT/fx-cost.txt" | awk '/^C / { printf "%-32s %8.1f\n", $2, $3 / 10 } /^END/ { print }'
+
+echo "== the prediction stage per track (predict + innovation; instructions per track, 32 tracks)"
+DEFS=(-DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 -DMTT_MAX_PAIRS=256 -DMTT_WITH_BASELINES=0
+      -DMTT_WITH_IMM=0 -DMTT_WITH_CONTEST=0)
+for build in float fixed; do
+  if [[ "$build" == fixed ]]; then
+    extra=(-DMTT_REAL_FIXED "$ROOT/src/fx_cov.c" "$ROOT/src/fx_math.c")
+  else
+    extra=(-DMTT_SMALL_LOG=1)
+  fi
+  "$CC" "${CPU[@]}" -std=c99 -Os -ffunction-sections -fdata-sections -Wall -Wextra -Wconversion -Werror \
+    -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/firmware" "${DEFS[@]}" \
+    -specs=nano.specs -nostartfiles -Wl,--gc-sections -T"$ROOT/firmware/mps2.ld" \
+    "$ROOT/firmware/startup.c" "$ROOT/firmware/semihost.c" "$ROOT/firmware/fmt.c" \
+    "$ROOT/firmware/fx_stage_cost.c" "$ROOT/src/kalman.c" "$ROOT/src/motion_cv.c" "${extra[@]}" -lm \
+    -o "$OUT/stage-$build.elf"
+  qemu-system-arm -machine mps2-an385 -semihosting-config enable=on,target=native \
+    -nographic -monitor none -serial none -icount shift=0 -kernel "$OUT/stage-$build.elf" 2>&1 |
+    tee "$OUT/stage-$build.txt" | awk '/^S / { print }'
+done

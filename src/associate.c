@@ -69,7 +69,7 @@ static void jpda_family(mtt_tracker *trk, uint8_t how)
     for (c = 0; c < trk->n_clusters; ++c) {
         const uint16_t t0 = trk->cl_list[trk->cl_first[c]];
         if (trk->cl_first[c + 1u] - trk->cl_first[c] == 1 && trk->tf[t0].pair_count == 0u) {
-            trk->tf[t0].beta0 = MTT_R(1.0); /* empty gate: m = 0 update */
+            trk->tf[t0].beta0 = MTT_P(1.0); /* empty gate: m = 0 update */
             continue;
         }
         jpda_cluster(trk, c, how);

@@ -11,34 +11,40 @@
  * ALGORITHMS.md §10.3: the final recomputation after an assignment.
  * ALGORITHMS.md §7.6 (lm_ihpda_variant contest): the amplitude likelihood
  * ratio g_j in place of the ranks, A_j = PD PG p_j g_j / lambda_j (p_j
- * already holds g_j), C_j = 1 - PD PG + PD PG (sum_{i != j} g_i) / (lambda_j V_G). */
+ * already holds g_j), C_j = 1 - PD PG + PD PG (sum_{i != j} g_i) / (lambda_j V_G).
+ * Written in the quantity macros of mtt/real.h (docs/FIXED_POINT.md §3, §4):
+ * P_r and betas Q30; A, C, L Q16 ratios, with p_j and lambda_j relative to
+ * the clutter density and V_G times it; m and the rank terms in the Q24
+ * count format. */
 #include "mtt_internal.h"
 
-void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out)
+void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out)
 {
-    mtt_real a = MTT_R(1.0) / (MTT_R(1.0) + rho);
-    mtt_real p = MTT_R(1.0);
+    mtt_prob a = MTT_DIV_PR(MTT_P(1.0), MTT_ADD(MTT_RATIO(1.0), rho));
+    mtt_prob p = MTT_P(1.0);
     uint16_t j;
     if (m == 0u) {
         return;
     }
     for (j = 1; j < m; ++j) {
-        p *= (mtt_real)j / ((mtt_real)j + a);
+        p = MTT_MUL_PP(p, MTT_DIV_P(MTT_CNT(j), MTT_ADD(MTT_CNT(j), MTT_CVT_P_C(a))));
     }
     out[0] = p;
     for (j = 1; j < m; ++j) {
-        out[j] = out[j - 1u] * ((mtt_real)j - MTT_R(1.0) + a) / (mtt_real)j;
+        out[j] = MTT_DIV_P(MTT_MUL_PC(out[j - 1u], MTT_ADD(MTT_SUB(MTT_CNT(j), MTT_CNT(1)), MTT_CVT_P_C(a))),
+                           MTT_CNT(j));
     }
 }
 
-void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
-                     const mtt_cand *c, uint16_t m, mtt_real *beta, mtt_real *L, uint8_t *rank_out)
+void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
+                     const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out)
 {
-    const mtt_real pdpg = pd * pg;
-    const mtt_real fm = (mtt_real)m;
+    const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
+    const mtt_real fm = MTT_CNT(m);
     uint16_t i, j;
     for (i = 0; i < m; ++i) {
-        mtt_real pr, A, C;
+        mtt_prob pr;
+        mtt_ratio A, C;
         uint16_t rank = 1;
         /* Rank 1 is the strongest; equal intensities: lower index ranks
          * stronger (ALGORITHMS.md §7.1). */
@@ -50,14 +56,17 @@ void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *pran
         if (rank_out != NULL) {
             rank_out[i] = (uint8_t)rank;
         }
-        pr = (prank != NULL) ? prank[rank - 1u] : MTT_R(1.0) / fm;
-        A = pdpg * fm * c[i].p * pr / c[i].lam;
-        C = MTT_R(1.0) - pdpg + pdpg * (fm / (c[i].lam * vg)) * (MTT_R(1.0) - pr);
-        L[i] = A + C;
-        beta[i] = A / L[i];
+        pr = (prank != NULL) ? prank[rank - 1u] : MTT_DIV_P(MTT_CNT(1), fm);
+        A = MTT_DIV_R(MTT_MUL_RP(MTT_MUL_CR(MTT_MUL_PC(pdpg, fm), c[i].p), pr), c[i].lam);
+        C = MTT_ADDS(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg)),
+                     MTT_MUL_RP(MTT_MUL_RP(pdpg, MTT_DIV_CR(fm, MTT_MUL_RR(c[i].lam, vg))),
+                                MTT_SUB(MTT_P(1.0), pr)));
+        L[i] = MTT_ADDS(A, C);
+        beta[i] = MTT_DIV_P(A, L[i]);
     }
 }
 
+#if MTT_WITH_CONTEST
 mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a)
 {
     mtt_real e = a * rho / (MTT_R(1.0) + rho), g;
@@ -87,6 +96,7 @@ static void betas_amp(mtt_real pdpg, mtt_real vg, const mtt_cand *c, uint16_t m,
         beta[i] = A / L[i];
     }
 }
+#endif /* MTT_WITH_CONTEST */
 
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best)
@@ -103,7 +113,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
         mtt_pair *pp = &trk->pairs[k];
         const mtt_mstore *ms = &trk->meas[pp->meas];
-        pp->beta = MTT_R(0.0);
+        pp->beta = MTT_ZERO;
         if (excl_used && ms->used && (int16_t)k != keep) {
             continue;
         }
@@ -119,12 +129,15 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
     if (m == 0u) {
         return 0;
     }
+#if MTT_WITH_CONTEST
     if (amp) {
         /* ranks are not computed: MMR's tie rule is the lower index */
         betas_amp(trk->par.pd * trk->par.pg, tf->vg, c, m, beta, L);
-    } else {
+    } else
+#endif
+    {
         /* A track with any gated measurement lacking amplitude uses rho = 0 (ALGORITHMS.md §7.1). */
-        if (trk->par.snr_rho > MTT_R(0.0) && tf->has_all_amp) {
+        if (trk->par.snr_rho > MTT_ZERO && tf->has_all_amp) {
             prank = &trk->prank[MTT_PRANK_ROW(m)];
         }
         mtt_ihpda_betas(trk->par.pd, trk->par.pg, tf->vg, prank, c, m, beta, L, rank);

@@ -9,9 +9,12 @@
  * IMM (lm-ihpda, ihpda, lm-ipda, ipda, jipda) sees a track as one filter
  * whose likelihood of measurement i is p*_i = Σ_j c̄_j p_i^j (one PD for
  * all models), ALGORITHMS.md §14.2.  The gate writes p* into pair.p, so
- * the LM weights, IHPDA selection, MMR, JIPDA events and the existence
- * update run unchanged; the update stage then splits their result into
- * mode probabilities and per-model betas (mtt_imm_split).  With one PD the
+ * the LM weights, IHPDA selection, MMR and JIPDA events run unchanged; the
+ * update stage then splits their result into mode probabilities and
+ * per-model betas (mtt_imm_split).  The existence is the mode's, except in
+ * the IHPDA modes: there each model's own gate gives its §7.3 L
+ * (mtt_imm_exist_L), because the selected measurement's L over the union
+ * gate kept lost tracks alive on clutter.  With one PD the
  * "no measurement" factor (1 - PD PG for the PDA modes, C_s for the IHPDA
  * modes) is the same for every model and cancels in the split, so e0_j = 1
  * and e_ij = p_i^j. */
@@ -151,6 +154,63 @@ mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_re
         pd[j] = trk->par.pd;
     }
     return mtt_imm_meas_mix(trk->par.imm_n_models, tf->cbar, pd, pj, &pdm);
+}
+
+/* Existence likelihood ratio of an IHPDA-mode IMM track whose selected
+ * pair is `a` (ALGORITHMS.md §14.2, mode-conditioned existence):
+ * L = Σ_j c̄_j L^j, L^j the §7.3 L of model j over the final row's
+ * candidates inside model j's own gate (m_j, V_G^j, p_i^j, ranks among
+ * them), at `a` when model j gates it, else at model j's own selection;
+ * 1 - PD PG when model j gates none. */
+mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
+{
+    const mtt_params *p = &trk->par;
+    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_cand *c = trk->row.cand;
+    mtt_real *beta = trk->row.beta, *L = trk->row.L;
+    const mtt_real miss = MTT_R(1.0) - p->pd * p->pg;
+    mtt_real sum = MTT_R(0.0);
+    uint16_t k;
+    uint8_t j;
+    for (j = 0; j < p->imm_n_models; ++j) {
+        /* V_G^j = π γ sqrt(det S_j) = γ / (2 PG N_j(0)) */
+        const mtt_real vg = trk->gamma / (MTT_R(2.0) * p->pg * tf->peakm[j]);
+        uint16_t m = 0, sel = 0, b = 0;
+        int has_a = 0;
+        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+            const mtt_pair *pp = &trk->pairs[k];
+            const mtt_mstore *ms = &trk->meas[pp->meas];
+            mtt_real d2;
+            if (!(pp->beta > MTT_R(0.0)) && k != a) {
+                continue; /* not in the final row */
+            }
+            d2 = mtt_mahal2(tf->Sim[j], ms->x - tf->xpm[j][0], ms->y - tf->xpm[j][1]);
+            if (!(d2 <= trk->gamma)) {
+                continue;
+            }
+            c[m].p = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
+            c[m].lam = pp->lam;
+            c[m].amp = ms->amp;
+            c[m].idx = pp->meas;
+            if (k == a) {
+                has_a = 1;
+                sel = m;
+            }
+            ++m;
+        }
+        if (m == 0u) {
+            sum += tf->cbar[j] * miss;
+            continue;
+        }
+        mtt_ihpda_betas(p->pd, p->pg, vg,
+                        (p->snr_rho > MTT_R(0.0) && tf->has_all_amp) ? &trk->prank[MTT_PRANK_ROW(m)] : NULL, c,
+                        m, beta, L, NULL);
+        for (k = 1; k < m; ++k) {
+            b = (beta[k] > beta[b]) ? k : b;
+        }
+        sum += tf->cbar[j] * L[has_a ? sel : b];
+    }
+    return sum;
 }
 
 void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,

@@ -3,22 +3,25 @@
  *
  * Lambda = sum_j p_j / lambda_j, L = 1 - PD PG + PD PG Lambda,
  * beta_j = PD PG (p_j / lambda_j) / L, beta_0 = (1 - PD PG) / L.
- * With lambda_j the LM density lambda~ this is LM-IPDA (ALGORITHMS.md §8.1). */
+ * With lambda_j the LM density lambda~ this is LM-IPDA (ALGORITHMS.md §8.1).
+ * Fixed point (docs/FIXED_POINT.md §2, §3): p_j and lambda_j are held
+ * relative to the clutter density, so p_j / lambda_j is a quotient of two
+ * Q16 ratios; Lambda and L are Q16 ratios, the betas Q30. */
 #include "mtt_internal.h"
 
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L)
+void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob *beta0, mtt_ratio *L)
 {
-    const mtt_real pdpg = pd * pg;
-    mtt_real big = MTT_R(0.0), l;
+    const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
+    mtt_ratio big = MTT_ZERO, l;
     uint16_t j;
     for (j = 0; j < m; ++j) {
-        big += pp[j].p / pp[j].lam;
+        big = MTT_ADDS(big, MTT_DIV_R(pp[j].p, pp[j].lam));
     }
-    l = MTT_R(1.0) - pdpg + pdpg * big;
+    l = MTT_ADDS(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg)), MTT_MUL_RP(pdpg, big));
     for (j = 0; j < m; ++j) {
-        pp[j].beta = pdpg * (pp[j].p / pp[j].lam) / l;
+        pp[j].beta = MTT_DIV_P(MTT_MUL_RP(pdpg, MTT_DIV_R(pp[j].p, pp[j].lam)), l);
     }
-    *beta0 = (MTT_R(1.0) - pdpg) / l;
+    *beta0 = MTT_DIV_PR(MTT_SUB(MTT_P(1.0), pdpg), l);
     *L = l;
 }
 

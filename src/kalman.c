@@ -11,7 +11,7 @@ void mtt_sym(mtt_cov P)
     int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = i + 1; j < MTT_STATE_N; ++j) {
-            mtt_real s = MTT_R(0.5) * (P[i][j] + P[j][i]);
+            mtt_real s = MTT_MEAN2(P[i][j], P[j][i]);
             P[i][j] = s;
             P[j][i] = s;
         }
@@ -34,50 +34,59 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
 {
     mtt_motion_predict(dt, sw, x, P, xp, Pp);
     mtt_sym(Pp);
+    MTT_COV_NORM(Pp);
 }
 
 /* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
  * build without IMM, so the firmware code is the fixed-size one. */
-static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                   mtt_real *det, mtt_real K[][2])
+static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                   mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2])
 {
     mtt_real d;
     int i;
     if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
         return -1; /* not a model of motion.h (folded away for a constant n) */
     }
-    S[0] = Pp[0][0] + R[0];
-    S[1] = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
-    S[2] = Pp[1][1] + R[2];
-    d = S[0] * S[2] - S[1] * S[1];
-    if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
+    /* Fixed point: Pp and R (Q16) meet at S's exponent (mtt/real.h). */
+    MTT_S_EXP(Pp, R, S);
+    S[0] = MTT_ADD(MTT_AT(Pp[0][0], MTT_COV_E(Pp), MTT_SYM_E(S)),
+                   MTT_AT(R[0], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
+    S[1] = MTT_ADD(MTT_MEAN2(MTT_AT(Pp[0][1], MTT_COV_E(Pp), MTT_SYM_E(S)),
+                             MTT_AT(Pp[1][0], MTT_COV_E(Pp), MTT_SYM_E(S))),
+                   MTT_AT(R[1], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
+    S[2] = MTT_ADD(MTT_AT(Pp[1][1], MTT_COV_E(Pp), MTT_SYM_E(S)),
+                   MTT_AT(R[2], -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
+    d = MTT_SUB(MTT_MUL_SS(S[0], S[2]), MTT_MUL_SS(S[1], S[1]));
+    if (!(d > MTT_ZERO) || !mtt_isfinite(d)) {
         return -1; /* ALGORITHMS.md §3: the track is numerically invalid */
     }
     *det = d;
-    Si[0] = S[2] / d;
-    Si[1] = -S[1] / d;
-    Si[2] = S[0] / d;
+    MTT_SI_EXP(Si, S, d);
+    Si[0] = MTT_DIV_SI(S[2], d, S, Si);
+    Si[1] = MTT_DIV_SI(-S[1], d, S, Si);
+    Si[2] = MTT_DIV_SI(S[0], d, S, Si);
     for (i = 0; i < n; ++i) {
-        K[i][0] = Pp[i][0] * Si[0] + Pp[i][1] * Si[1];
-        K[i][1] = Pp[i][0] * Si[1] + Pp[i][1] * Si[2];
+        K[i][0] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[0]), MTT_MUL_K(Pp[i][1], Si[1]));
+        K[i][1] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[1]), MTT_MUL_K(Pp[i][1], Si[2]));
     }
     return 0;
 }
 
-int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
-                     mtt_real K[][2])
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                     mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2])
 {
     return innov_n(MTT_STATE_N, Pp, R, S, Si, det, K);
 }
 
 #if MTT_WITH_IMM
-int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                       mtt_real *det, mtt_real K[][2])
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                       mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2])
 {
     return innov_n(n, Pp, R, S, Si, det, K);
 }
 #endif
 
+#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
 {
     return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
@@ -252,3 +261,4 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     *d2 = acc;
     return 0;
 }
+#endif /* MTT_REAL_FIXED */

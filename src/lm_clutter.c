@@ -9,46 +9,53 @@
  * contribute, which is [S4]'s cluster-only computation.
  * ALGORITHMS.md §7.6 (lm-ihpda, lm_ihpda_variant contest): first every
  * pair's p_j becomes p_j g_j, the amplitude likelihood ratio of its
- * measurement, so the LM densities, the rows and the existence see it. */
+ * measurement, so the LM densities, the rows and the existence see it.
+ * Written in the quantity macros of mtt/real.h (docs/FIXED_POINT.md §3, §4):
+ * in the fixed-point build p_j, w_j and lambda~ are Q16 ratios to the
+ * clutter density, Pt a Q30 probability. */
 #include "mtt_internal.h"
 
 /* Measurements gated by at most this many tracks sum the other tracks'
  * terms directly; above it, W_j - w (ALGORITHMS.md §8.2: avoids float cancellation). */
 #define MTT_LM_DIRECT 4u
 
-mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg)
+mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg)
 {
-    return ((mtt_real)m - pd * pg * ex_pred) / vg;
+    return MTT_DIV_CR(MTT_SUB(MTT_CNT(m), MTT_MUL_PC(MTT_MUL_PP(pd, pg), ex_pred)), vg);
 }
 
 void mtt_clutter_frame(mtt_tracker *trk, int lm)
 {
-    const mtt_real pdpg = trk->par.pd * trk->par.pg;
-    const mtt_real pt_max = MTT_R(1.0) - MTT_R(1e-6); /* ALGORITHMS.md §16 clamp */
+    const mtt_prob pdpg = MTT_MUL_PP(trk->par.pd, trk->par.pg);
+    const mtt_prob pt_max = MTT_SUB(MTT_P(1.0), MTT_P(1e-6)); /* ALGORITHMS.md §16 clamp */
+#if MTT_WITH_CONTEST
     const int amp = MTT_CONTEST_ON(trk);
+#endif
     uint16_t i, k;
 
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        mtt_real lam = trk->par.clutter_density;
-        mtt_real sum = MTT_R(0.0);
+        mtt_ratio lam = MTT_REL_DENS(trk->par.clutter_density);
+        mtt_ratio sum = MTT_ZERO;
         if (!tf->valid || tf->pair_count == 0u) {
             tf->lambda = lam;
             continue;
         }
-        if (!(lam > MTT_R(0.0))) {
+        if (!(lam > MTT_ZERO)) {
             lam = mtt_clutter_estimate(tf->pair_count, trk->par.pd, trk->par.pg, tf->ex_pred, tf->vg);
         }
         tf->lambda = lam;
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             mtt_pair *pp = &trk->pairs[k];
+#if MTT_WITH_CONTEST
             const mtt_mstore *ms = &trk->meas[pp->meas];
             if (amp && ms->has_amp) {
                 pp->g = mtt_amp_ratio(trk->par.snr_rho, trk->par.amplitude_eta, ms->amp);
                 pp->p *= pp->g;
             }
+#endif
             pp->lam = lam;
-            sum += pp->p;
+            sum = MTT_ADDS(sum, pp->p);
         }
         if (!lm) {
             continue;
@@ -56,20 +63,20 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         /* Pass 1: w_j^s.  The uniform lambda cancels inside Pt (ALGORITHMS.md §8.1). */
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             mtt_pair *pp = &trk->pairs[k];
-            mtt_real pt = pdpg * tf->ex_pred * pp->p / sum;
+            mtt_prob pt = MTT_DIV_P(MTT_MUL_RP(MTT_MUL_PP(pdpg, tf->ex_pred), pp->p), sum);
             if (pt > pt_max) {
                 pt = pt_max;
             }
-            pp->w = pp->p * pt / (MTT_R(1.0) - pt);
+            pp->w = MTT_DIV_RP(MTT_MUL_RP(pp->p, pt), MTT_SUB(MTT_P(1.0), pt));
         }
     }
     if (!lm) {
         return;
     }
     for (i = 0; i < trk->n_meas; ++i) {
-        mtt_real W = MTT_R(0.0);
+        mtt_ratio W = MTT_ZERO;
         for (k = trk->mp_first[i]; k < trk->mp_first[i + 1u]; ++k) {
-            W += trk->pairs[trk->mp_list[k]].w;
+            W = MTT_ADDS(W, trk->pairs[trk->mp_list[k]].w);
         }
         trk->wsum[i] = W;
     }
@@ -78,21 +85,21 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         mtt_pair *pp = &trk->pairs[k];
         uint16_t j = pp->meas;
         uint16_t c = (uint16_t)(trk->mp_first[j + 1u] - trk->mp_first[j]);
-        mtt_real others;
+        mtt_ratio others;
         if (c <= MTT_LM_DIRECT) {
             uint16_t q;
-            others = MTT_R(0.0);
+            others = MTT_ZERO;
             for (q = trk->mp_first[j]; q < trk->mp_first[j + 1u]; ++q) {
                 if (trk->mp_list[q] != k) {
-                    others += trk->pairs[trk->mp_list[q]].w;
+                    others = MTT_ADDS(others, trk->pairs[trk->mp_list[q]].w);
                 }
             }
         } else {
-            others = trk->wsum[j] - pp->w;
-            if (others < MTT_R(0.0)) {
-                others = MTT_R(0.0);
+            others = MTT_SUBS(trk->wsum[j], pp->w);
+            if (others < MTT_ZERO) {
+                others = MTT_ZERO;
             }
         }
-        pp->lam += others;
+        pp->lam = MTT_ADDS(pp->lam, others);
     }
 }

@@ -2,7 +2,9 @@
  * (ALGORITHMS.md §15, §16).
  *
  * A detection with a NaN/Inf coordinate, or a negative/NaN/Inf amplitude,
- * is skipped and counted.  Beyond MTT_MAX_MEAS the strongest stay: an
+ * is skipped and counted; in the fixed-point build so is a coordinate
+ * outside the declared range +-MTT_FX_POS_LIMIT or a saturated amplitude
+ * (docs/FIXED_POINT.md §3: never wrapped).  Beyond MTT_MAX_MEAS the strongest stay: an
  * amplitude beats none, a larger amplitude a smaller, then the earlier
  * input wins.  A heap of the kept input indices holds the weakest at its
  * root, so the cap costs O(n log MTT_MAX_MEAS); the kept ones are then
@@ -35,10 +37,10 @@ static int idx_less(const void *a, const void *b, const void *ctx)
 
 static int meas_ok(const mtt_meas *m)
 {
-    if (!mtt_isfinite(m->x) || !mtt_isfinite(m->y)) {
+    if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y)) {
         return 0;
     }
-    return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_R(0.0));
+    return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_ZERO);
 }
 
 static void store_meas(mtt_tracker *trk, const mtt_meas *m, uint32_t src)
@@ -47,7 +49,7 @@ static void store_meas(mtt_tracker *trk, const mtt_meas *m, uint32_t src)
     s->x = m->x;
     s->y = m->y;
     s->has_amp = (uint8_t)(m->has_amplitude != 0);
-    s->amp = s->has_amp ? m->amplitude : MTT_R(0.0);
+    s->amp = s->has_amp ? m->amplitude : MTT_ZERO;
     s->src = src;
     s->used = 0;
 }

@@ -14,10 +14,10 @@ static void static_best(mtt_tracker *trk, uint16_t ti)
     mtt_track_frame *tf = &trk->tf[ti];
     uint16_t k;
     tf->best = -1;
-    tf->best_beta = MTT_R(0.0);
+    tf->best_beta = MTT_ZERO;
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
         const mtt_pair *pp = &trk->pairs[k];
-        if (!trk->meas[pp->meas].used && pp->beta > MTT_R(0.0) &&
+        if (!trk->meas[pp->meas].used && pp->beta > MTT_ZERO &&
             (tf->best < 0 || pp->beta > tf->best_beta)) {
             tf->best = (int16_t)k;
             tf->best_beta = pp->beta;
@@ -33,7 +33,7 @@ static void row_best(mtt_tracker *trk, uint16_t ti, int recompute)
         return;
     }
     (void)mtt_ihpda_row(trk, ti, 1, -1, 0, &tf->best);
-    tf->best_beta = (tf->best >= 0) ? trk->pairs[tf->best].beta : MTT_R(0.0);
+    tf->best_beta = (tf->best >= 0) ? trk->pairs[tf->best].beta : MTT_ZERO;
 }
 
 void mtt_mmr_cluster(mtt_tracker *trk, uint16_t c, int recompute)

@@ -33,7 +33,8 @@
 #endif
 
 typedef mtt_real mtt_state[MTT_MAX_STATE];
-typedef mtt_real mtt_cov[MTT_MAX_STATE][MTT_MAX_STATE];
+/* Fixed point: one more row holds the block exponent (mtt/real.h). */
+typedef mtt_real mtt_cov[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];
 
 /* 1 when the MTT_STATE_N entries of a state are finite. */
 int mtt_state_finite(const mtt_real *x);

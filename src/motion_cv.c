@@ -11,6 +11,9 @@
 
 void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q)
 {
+#ifdef MTT_REAL_FIXED
+    mtt_fx_cov_q(dt, sw, Q); /* mantissas and one exponent (fx_cov.c) */
+#else
     mtt_real q11 = sw * dt * dt * dt / MTT_R(3.0);
     mtt_real q13 = sw * dt * dt / MTT_R(2.0);
     mtt_real q33 = sw * dt;
@@ -23,6 +26,7 @@ void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q)
     Q[0][0] = q11; Q[1][1] = q11;
     Q[0][2] = q13; Q[2][0] = q13; Q[1][3] = q13; Q[3][1] = q13;
     Q[2][2] = q33; Q[3][3] = q33;
+#endif
 }
 
 void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
@@ -30,26 +34,33 @@ void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
 {
     mtt_cov FP, Q;
     int i, j;
-    xp[0] = x[0] + dt * x[2];
-    xp[1] = x[1] + dt * x[3];
+    xp[0] = MTT_ADDS(x[0], MTT_MUL_T(dt, x[2]));
+    xp[1] = MTT_ADDS(x[1], MTT_MUL_T(dt, x[3]));
     xp[2] = x[2];
     xp[3] = x[3];
+    /* Fixed point: P rescaled so the sums below cannot overflow. */
+    MTT_COV_FIT(P, dt);
     /* F P: rows 0,1 gain dt times rows 2,3 (F is sparse; no 4x4 product). */
     for (j = 0; j < 4; ++j) {
-        FP[0][j] = P[0][j] + dt * P[2][j];
-        FP[1][j] = P[1][j] + dt * P[3][j];
+        FP[0][j] = MTT_ADD(P[0][j], MTT_MUL_T(dt, P[2][j]));
+        FP[1][j] = MTT_ADD(P[1][j], MTT_MUL_T(dt, P[3][j]));
         FP[2][j] = P[2][j];
         FP[3][j] = P[3][j];
     }
+    MTT_COV_COPY_E(FP, P);
     mtt_motion_q(dt, sw, Q);
+    MTT_COV_ALIGN(FP, Q);
     /* (F P) F': columns 0,1 gain dt times columns 2,3. */
     for (i = 0; i < 4; ++i) {
-        Pp[i][0] = FP[i][0] + dt * FP[i][2] + Q[i][0];
-        Pp[i][1] = FP[i][1] + dt * FP[i][3] + Q[i][1];
-        Pp[i][2] = FP[i][2] + Q[i][2];
-        Pp[i][3] = FP[i][3] + Q[i][3];
+        Pp[i][0] = MTT_ADD(MTT_ADD(FP[i][0], MTT_MUL_T(dt, FP[i][2])), Q[i][0]);
+        Pp[i][1] = MTT_ADD(MTT_ADD(FP[i][1], MTT_MUL_T(dt, FP[i][3])), Q[i][1]);
+        Pp[i][2] = MTT_ADD(FP[i][2], Q[i][2]);
+        Pp[i][3] = MTT_ADD(FP[i][3], Q[i][3]);
     }
+    MTT_COV_COPY_E(Pp, FP);
 }
+
+#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
 
 void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
 {
@@ -104,3 +115,4 @@ void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, con
     mtt_motion_two_point_cov(R, dt, P);
     cap_velocity(P, vmax);
 }
+#endif /* MTT_REAL_FIXED */

@@ -34,8 +34,8 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
                         mtt_cov Pp);
 /* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
  * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
-int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3], mtt_real *det,
-                     mtt_real K[][2]);
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                     mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
 mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
 /* PDA update with m measurements (ALGORITHMS.md §6), K and Si = S^-1 from
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
@@ -43,8 +43,8 @@ mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
  * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
 #if MTT_WITH_IMM
 /* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
-int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                       mtt_real *det, mtt_real K[][2]);
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                       mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
 void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                       const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                       mtt_real beta0, mtt_state x, mtt_cov P);
@@ -53,6 +53,23 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
 void mtt_sym(mtt_cov P);
+#ifdef MTT_REAL_FIXED
+/* ---- fx_cov.c: block floating point of the covariances (fixed point only) ---- */
+/* Largest mantissa to `top` bits (exact shifts left, rounded right). */
+void mtt_fx_cov_norm(mtt_cov P, int top);
+/* Headroom for a prediction over dt (Q16 frames). */
+void mtt_fx_cov_fit(mtt_cov P, int32_t dt);
+/* Both blocks to the larger exponent. */
+void mtt_fx_cov_align(mtt_cov A, mtt_cov B);
+/* Q(dt) of the CV model for sw (Q16), with the headroom of mtt_fx_cov_fit. */
+void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q);
+/* Mantissa m at exponent `from` re-expressed at `to` (rounded, saturated). */
+int32_t mtt_fx_at(int32_t m, int from, int to);
+/* Exponent of S = Pp_pos + R (R in Q16) with every entry below 2^29. */
+int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3]);
+/* Exponent of S^-1 = adj(S) / det with every entry below 2^28 (det > 0). */
+int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det);
+#endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive
  * and finite.  The one L D L' of the library (kalman.c). */
@@ -81,21 +98,21 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
 void mtt_gate_frame(mtt_tracker *trk);
 
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
-mtt_real mtt_clutter_estimate(uint16_t m, mtt_real pd, mtt_real pg, mtt_real ex_pred, mtt_real vg);
+mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg);
 /* Frame stage: per-track lambda (known or ALGORITHMS.md §5.2), then pair.lam = lambda
  * (lm = 0) or the LM density lambda~ (lm = 1, ALGORITHMS.md §8.2). */
 void mtt_clutter_frame(mtt_tracker *trk, int lm);
 
 /* ---- ihpda.c: intensity order statistics and IHPDA (ALGORITHMS.md §7) ---- */
 /* P_r(l | m, rho), l = 1..m, into out[0..m-1], product/recurrence form (ALGORITHMS.md §7.2). */
-void mtt_ihpda_prank(uint16_t m, mtt_real rho, mtt_real *out);
+void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out);
 /* Index of row m (1-based m) of the tabulated P_r triangle. */
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
 /* beta_j and L_j (ALGORITHMS.md §7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
  * NULL) receives the 1-based rank of each candidate. */
-void mtt_ihpda_betas(mtt_real pd, mtt_real pg, mtt_real vg, const mtt_real *prank,
-                     const mtt_cand *c, uint16_t m, mtt_real *beta, mtt_real *L, uint8_t *rank_out);
+void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
+                     const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out);
 /* Compute the IHPDA row of track ti over its gated pairs: with excl_used,
  * pairs whose measurement is used (assigned) are left out, except the pair
  * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);
@@ -146,7 +163,7 @@ void mtt_params_imm_reset(mtt_params *p, uint8_t r);
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */
 /* beta_j of the m gated pairs pp[0..m) (from their p and lam) into their
  * beta; beta_0 and L. */
-void mtt_ipda_betas(mtt_real pd, mtt_real pg, mtt_pair *pp, uint16_t m, mtt_real *beta0, mtt_real *L);
+void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob *beta0, mtt_ratio *L);
 /* IPDA row of track ti over its gate: pair.beta, tf.beta0 and the updated
  * existence tf.ex_post. */
 void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
@@ -155,8 +172,8 @@ void mtt_ipda_track(mtt_tracker *trk, uint16_t ti);
 void mtt_ipda_frame(mtt_tracker *trk);
 
 /* ---- existence.c: Markov chain one and the existence update (ALGORITHMS.md §11, §6) ---- */
-mtt_real mtt_existence_predict(mtt_real p, mtt_real p11, mtt_real p21);
-mtt_real mtt_existence_update(mtt_real ex_pred, mtt_real L);
+mtt_prob mtt_existence_predict(mtt_prob p, mtt_prob p11, mtt_prob p21);
+mtt_prob mtt_existence_update(mtt_prob ex_pred, mtt_ratio L);
 
 /* ---- cluster.c: clusters by union-find (ALGORITHMS.md §9) ---- */
 void mtt_cluster_frame(mtt_tracker *trk);
@@ -423,6 +440,9 @@ mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_re
  * combine into t.x, t.P (ALGORITHMS.md §14.2). */
 void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,
                           const mtt_real beta[], mtt_real beta0);
+/* Existence L of an IHPDA-mode IMM track with selected pair a: the
+ * c̄-mixture of every model's own-gate IHPDA L (ALGORITHMS.md §14.2). */
+mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a);
 /* Model states of a new track from its 4-D x, P; dt the two-point interval. */
 void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt);
 #endif /* MTT_WITH_IMM */

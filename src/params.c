@@ -1,12 +1,56 @@
 /* params.c - parameter defaults (docs/FORMATS.md, [S0]'s IR set-up),
  * validation against the ranges of params_table.h that names the first bad
- * field, and the status texts.  The mode names live with the mode table
+ * field, and the status texts.  In the fixed-point build every value is in
+ * its quantity's Q format (docs/FIXED_POINT.md §3).  The mode names live with the mode table
  * (associate.c). */
 #include <stddef.h>
 #include <string.h>
 
 #include "mtt_internal.h"
 #include "params_table.h"
+
+/* Fixed-point build: the Q format of each REAL row's values
+ * (docs/FIXED_POINT.md §3), by member name; PDEF and the rule bounds
+ * convert their constants with it (saturated: MTT_REAL_MAX is "no
+ * bound"; a positive bound that rounds to 0 becomes one unit, so an open
+ * or positive lower bound stays positive).  Float and double: MTT_R. */
+#ifdef MTT_REAL_FIXED
+#define MTT_FX_FRAC_contest_beta MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
+#define MTT_FX_FRAC_meas_sigma MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_pd MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_pg MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_clutter_density MTT_FX_DENS_FRAC
+#define MTT_FX_FRAC_snr_rho MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_amplitude_eta MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_markov_p11 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_markov_p21 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_existence_init MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_confirm_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_terminate_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_merge_threshold MTT_FX_D2_FRAC
+#define MTT_FX_FRAC_vmax MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_intensity_f1 MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_intensity_f2 MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_intensity_blend MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_jpda_bias MTT_FX_DENS_FRAC
+#define MTT_FX_FRAC_jpda_star_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_nnjpda_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_adaptive_jpda_distance MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_adaptive_jpda_shrink MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_split_p25 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_p52 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
+#define PDEF(member, x) MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member)
+#define PBOUND(member, x)                                                                          \
+    (((x) > 0 && MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member) == 0) ? 1                                \
+                                                                  : MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member))
+#else
+#define PDEF(member, x) MTT_R(x)
+#define PBOUND(member, x) MTT_R(x)
+#endif
 
 #if MTT_WITH_IMM
 /* docs/FORMATS.md's IMM defaults for r models: 0.99 on the diagonal of the
@@ -100,38 +144,38 @@ mtt_status mtt_params_default(mtt_params *p)
     p->association = MTT_ASSOC_LM_IHPDA;
     /* the contest-aware rule where it is built (ALGORITHMS.md §10.4), else [S0] */
     p->lm_ihpda_variant = MTT_WITH_CONTEST ? MTT_LM_IHPDA_CONTEST : MTT_LM_IHPDA_S0;
-    p->contest_beta = MTT_R(0.1);
-    p->process_psd = MTT_R(5.0);
-    p->meas_sigma[0] = MTT_R(1.0);
-    p->meas_sigma[1] = MTT_R(1.0);
-    p->pd = MTT_R(0.9);
-    p->pg = MTT_R(0.999);
-    p->clutter_density = MTT_R(0.0);
-    p->snr_rho = MTT_R(0.0);
-    p->amplitude_eta = MTT_R(0.5);
-    p->markov_p11 = MTT_R(0.98);
-    p->markov_p21 = MTT_R(0.0);
-    p->existence_init = MTT_R(0.1);
-    p->confirm_threshold = MTT_R(0.995);
-    p->terminate_threshold = MTT_R(0.01);
-    p->merge_threshold = MTT_R(1.0);
+    p->contest_beta = PDEF(contest_beta, 0.1);
+    p->process_psd = PDEF(process_psd, 5.0);
+    p->meas_sigma[0] = PDEF(meas_sigma, 1.0);
+    p->meas_sigma[1] = PDEF(meas_sigma, 1.0);
+    p->pd = PDEF(pd, 0.9);
+    p->pg = PDEF(pg, 0.999);
+    p->clutter_density = PDEF(clutter_density, 0.0);
+    p->snr_rho = PDEF(snr_rho, 0.0);
+    p->amplitude_eta = PDEF(amplitude_eta, 0.5);
+    p->markov_p11 = PDEF(markov_p11, 0.98);
+    p->markov_p21 = PDEF(markov_p21, 0.0);
+    p->existence_init = PDEF(existence_init, 0.1);
+    p->confirm_threshold = PDEF(confirm_threshold, 0.995);
+    p->terminate_threshold = PDEF(terminate_threshold, 0.01);
+    p->merge_threshold = PDEF(merge_threshold, 1.0);
     p->initiate = 1;
-    p->vmax = MTT_R(60.0);
+    p->vmax = PDEF(vmax, 60.0);
     p->init_gate = MTT_INIT_GATE_VMAX;
     /* [S2], ALGORITHMS.md §12.2 */
-    p->intensity_f1[0] = MTT_R(-0.0007);
-    p->intensity_f1[1] = MTT_R(0.5072);
-    p->intensity_f1[2] = MTT_R(39.70);
-    p->intensity_f2[0] = MTT_R(-0.0001);
-    p->intensity_f2[1] = MTT_R(0.2097);
-    p->intensity_f2[2] = MTT_R(57.25);
-    p->intensity_blend[0] = MTT_R(150.0);
-    p->intensity_blend[1] = MTT_R(250.0);
-    p->jpda_bias = MTT_R(0.0);
-    p->jpda_star_threshold = MTT_R(0.0);
-    p->nnjpda_threshold = MTT_R(0.0);
-    p->adaptive_jpda_distance = MTT_R(9.0);
-    p->adaptive_jpda_shrink = MTT_R(3.0);
+    p->intensity_f1[0] = PDEF(intensity_f1, -0.0007);
+    p->intensity_f1[1] = PDEF(intensity_f1, 0.5072);
+    p->intensity_f1[2] = PDEF(intensity_f1, 39.70);
+    p->intensity_f2[0] = PDEF(intensity_f2, -0.0001);
+    p->intensity_f2[1] = PDEF(intensity_f2, 0.2097);
+    p->intensity_f2[2] = PDEF(intensity_f2, 57.25);
+    p->intensity_blend[0] = PDEF(intensity_blend, 150.0);
+    p->intensity_blend[1] = PDEF(intensity_blend, 250.0);
+    p->jpda_bias = PDEF(jpda_bias, 0.0);
+    p->jpda_star_threshold = PDEF(jpda_star_threshold, 0.0);
+    p->nnjpda_threshold = PDEF(nnjpda_threshold, 0.0);
+    p->adaptive_jpda_distance = PDEF(adaptive_jpda_distance, 9.0);
+    p->adaptive_jpda_shrink = PDEF(adaptive_jpda_shrink, 3.0);
     p->motion = MTT_MOTION_CV;
 #if MTT_WITH_IMM
     imm_default(p);
@@ -140,12 +184,12 @@ mtt_status mtt_params_default(mtt_params *p)
      * without a second target falls back soon (p52), split targets seldom
      * recombine (p62) */
     p->split = 0;
-    p->split_p25 = MTT_R(0.1);
-    p->split_p52 = MTT_R(0.1);
-    p->split_p62 = MTT_R(0.1);
-    p->split_dv = MTT_R(0.0);
+    p->split_p25 = PDEF(split_p25, 0.1);
+    p->split_p52 = PDEF(split_p52, 0.1);
+    p->split_p62 = PDEF(split_p62, 0.1);
+    p->split_dv = PDEF(split_dv, 0.0);
 #if MTT_WITH_SPLIT
-    p->split_confirm = MTT_R(0.97);
+    p->split_confirm = PDEF(split_confirm, 0.97);
     p->split_across = 1;
     p->split_decouple_r = 0;
 #endif
@@ -177,7 +221,7 @@ typedef struct range_rule {
 } range_rule;
 
 #define RULE(key, member, count, lo, hi, flags, cross, text)                                      \
-    {key, (uint16_t)offsetof(mtt_params, member), count, flags, MTT_R(lo), MTT_R(hi)},
+    {key, (uint16_t)offsetof(mtt_params, member), count, flags, PBOUND(member, lo), PBOUND(member, hi)},
 
 static const range_rule rules[MTT_RULE_COUNT] = {
     MTT_PARAM_ROWS(RULE, MTT_PARAM_NO_FLAG, MTT_PARAM_NO_ENUM)};
@@ -258,6 +302,15 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
         st = MTT_ERR_UNSUPPORTED;
     }
+#ifdef MTT_REAL_FIXED
+    if (bad == NULL && !(p->clutter_density > 0)) {
+        /* the fixed-point build holds densities relative to lambda
+         * (docs/FIXED_POINT.md §2): the estimated density (0) has no
+         * reference yet */
+        bad = "clutter_density";
+        st = MTT_ERR_UNSUPPORTED;
+    }
+#endif
     if (bad == NULL && !MTT_WITH_CONTEST && p->lm_ihpda_variant == MTT_LM_IHPDA_CONTEST) {
         bad = "lm_ihpda_variant"; /* the contest variant, built with MTT_WITH_CONTEST 0 */
         st = MTT_ERR_UNSUPPORTED;

@@ -17,7 +17,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
         t->born = 0;
         t->dead = 0;
         t->meas = -1;
-        if (dt > MTT_R(0.0)) {
+        if (dt > MTT_ZERO) {
 #if MTT_WITH_IMM
             if (trk->par.motion != MTT_MOTION_IMM)
 #endif

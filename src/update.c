@@ -103,7 +103,8 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
 #if MTT_WITH_IMM
 /* IMM track (ALGORITHMS.md §14.2): the mode's result -- the assigned pair
  * with beta_s and L_s (ONE), or the beta row, beta_0 and tf.ex_post (PDA) --
- * split over the models; existence as the mode gives it. */
+ * split over the models; existence as the mode gives it, with the IHPDA
+ * modes' L mixed over the models' own gates (mtt_imm_exist_L). */
 static void update_imm(mtt_tracker *trk, uint16_t ti, uint8_t kind)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -117,9 +118,10 @@ static void update_imm(mtt_tracker *trk, uint16_t ti, uint8_t kind)
             t->meas = -1;
         } else {
             const mtt_pair *pp = &trk->pairs[tf->assigned];
+            const mtt_real L = mtt_imm_exist_L(trk, ti, (uint16_t)tf->assigned);
             beta[0] = pp->beta;
             mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
-            t->existence = mtt_existence_update(tf->ex_pred, pp->L);
+            t->existence = mtt_existence_update(tf->ex_pred, L);
             t->meas = (int32_t)trk->meas[pp->meas].src;
         }
         return;

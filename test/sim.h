@@ -55,6 +55,7 @@ static inline mtt_meas sim_meas(mtt_real x, mtt_real y, mtt_real a, int has)
     return m;
 }
 
+#ifndef MTT_REAL_FIXED /* NaN and Inf: float and double only (test_measure_range.c) */
 /* Seven detections: five bad ones (NaN x, Inf y, negative, NaN and Inf
  * amplitude) and good ones at input indices 4 and 5 (the second without
  * amplitude, its negative value ignored). */
@@ -69,6 +70,7 @@ static inline void sim_bad_mix(mtt_meas m[7])
     m[5] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 0);
     m[6] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(1.0) / zero, 1);
 }
+#endif
 
 /* n detections with amplitudes i * 7 mod n, a permutation of 0..n-1 when n
  * is not a multiple of 7: the inputs with amplitude >= n - keep are the
@@ -77,8 +79,8 @@ static inline void sim_amplitude_permutation(mtt_meas *m, uint32_t n)
 {
     uint32_t i;
     for (i = 0; i < n; ++i) {
-        m[i] = sim_meas((mtt_real)(i % 97u) * MTT_R(10.0), (mtt_real)(i / 97u) * MTT_R(10.0),
-                        (mtt_real)((i * 7u) % n), 1);
+        m[i] = sim_meas((mtt_real)(i % 97u) * MTT_POS(10.0), (mtt_real)(i / 97u) * MTT_POS(10.0),
+                        (mtt_real)((i * 7u) % n) * MTT_AMP(1.0), 1);
     }
 }
 

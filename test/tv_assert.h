@@ -55,6 +55,37 @@ static inline void tv_assert_real(double expected, double actual, const char *wh
 #define TV_ASSERT_REAL_MSG(expected, actual, what) \
     tv_assert_real((double)(expected), (double)(actual), (what), __LINE__)
 
+/* A value of Q format f against its double reference.  Fixed-point build
+ * (docs/FIXED_POINT.md §7): |actual 2^-f - expected| <= tol_fx, a tolerance
+ * the test derives from the formats (roundings on the way plus the
+ * quantisation of the inputs times their condition factor).  Float and
+ * double builds: TV_ASSERT_REAL (tol_fx unused). */
+#ifdef MTT_REAL_FIXED
+static inline void tv_assert_q(double expected, double actual, double tol, const char *what,
+                               int line)
+{
+    char msg[512];
+    if (!(fabs(actual - expected) <= tol)) {
+        snprintf(msg, sizeof msg, "%.300s: expected %.10g, actual %.10g (|diff| %.3g > fixed tol %.3g)",
+                 what, expected, actual, fabs(actual - expected), tol);
+        UNITY_TEST_FAIL((UNITY_LINE_TYPE)line, msg);
+    }
+}
+#define TV_Q(x, f) ((double)(x) / (double)((int64_t)1 << (f)))
+#define TV_ASSERT_Q(expected, actual, f, tol_fx) \
+    tv_assert_q((double)(expected), TV_Q(actual, f), (tol_fx), #actual, __LINE__)
+#else
+#define TV_Q(x, f) ((double)(x))
+#define TV_ASSERT_Q(expected, actual, f, tol_fx) \
+    do {                                          \
+        (void)(tol_fx);                           \
+        TV_ASSERT_REAL(expected, actual);         \
+    } while (0)
+#endif
+/* Probabilities (Q30) and ratios (Q16). */
+#define TV_ASSERT_PROB(expected, actual, tol_fx) TV_ASSERT_Q(expected, actual, 30, tol_fx)
+#define TV_ASSERT_RATIO(expected, actual, tol_fx) TV_ASSERT_Q(expected, actual, 16, tol_fx)
+
 /* Element-wise over a 4x4 matrix given as 16 row-major doubles. */
 #define TV_ASSERT_MAT4(expected16, M)                                          \
     do {                                                                       \

@@ -210,6 +210,7 @@ static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_state xp,
     return i;
 }
 
+#ifndef MTT_REAL_FIXED /* covariances have no fixed-point format yet (docs/FIXED_POINT.md) */
 /* Track given by its predicted measurement z_hat and innovation covariance
  * S = [s11, s12; s12, s22]: position block of Pp = S - R, velocity block I. */
 static inline uint16_t tv_add_track_s(mtt_tracker *trk, mtt_real zx, mtt_real zy, mtt_real s11,
@@ -230,6 +231,7 @@ static inline uint16_t tv_add_track_s(mtt_tracker *trk, mtt_real zx, mtt_real zy
     Pp[3][3] = MTT_R(1.0);
     return tv_add_track_xp(trk, xp, Pp, ex_pred);
 }
+#endif
 
 static inline uint16_t tv_add_meas(mtt_tracker *trk, mtt_real x, mtt_real y, mtt_real amp,
                                    int has_amp)
@@ -238,7 +240,7 @@ static inline uint16_t tv_add_meas(mtt_tracker *trk, mtt_real x, mtt_real y, mtt
     mtt_mstore *m = &trk->meas[j];
     m->x = x;
     m->y = y;
-    m->amp = has_amp ? amp : MTT_R(0.0);
+    m->amp = has_amp ? amp : MTT_ZERO;
     m->has_amp = (uint8_t)(has_amp != 0);
     m->src = j;
     m->used = 0;

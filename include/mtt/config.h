@@ -12,6 +12,26 @@
 #include MTT_USER_CONFIG
 #endif
 
+/* The fixed-point build (MTT_REAL_FIXED, docs/FIXED_POINT.md) covers the
+ * firmware configuration: lm-ihpda, ihpda, lm-ipda, ipda with CV motion.
+ * The IMM, the baselines, lm-ihpda's contest variant and the split models
+ * default to 0 there (their settings report MTT_ERR_UNSUPPORTED, as in any
+ * build without them) and cannot be switched on (checked below). */
+#ifdef MTT_REAL_FIXED
+#ifndef MTT_WITH_IMM
+#define MTT_WITH_IMM 0
+#endif
+#ifndef MTT_WITH_BASELINES
+#define MTT_WITH_BASELINES 0
+#endif
+#ifndef MTT_WITH_CONTEST
+#define MTT_WITH_CONTEST 0
+#endif
+#ifndef MTT_WITH_SPLIT
+#define MTT_WITH_SPLIT 0
+#endif
+#endif
+
 /* Live tracks, tentative and confirmed. */
 #ifndef MTT_MAX_TRACKS
 #define MTT_MAX_TRACKS 128
@@ -204,6 +224,10 @@
 #endif
 #if MTT_MAX_SPLIT_MEAS < 2 || MTT_MAX_SPLIT_MEAS > 128
 #error "MTT_MAX_SPLIT_MEAS must be in [2, 128] (model 5 needs 2 measurements)"
+#endif
+
+#if defined(MTT_REAL_FIXED) && (MTT_WITH_IMM || MTT_WITH_BASELINES || MTT_WITH_CONTEST || MTT_WITH_SPLIT)
+#error "MTT_REAL_FIXED covers the firmware configuration: MTT_WITH_IMM, MTT_WITH_BASELINES, MTT_WITH_CONTEST and MTT_WITH_SPLIT must be 0"
 #endif
 
 #endif /* MTT_CONFIG_H */

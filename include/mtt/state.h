@@ -17,7 +17,7 @@ extern "C" {
 /** A live track. */
 typedef struct mtt_track {
     mtt_real x[MTT_MAX_STATE];    /* the motion model's state (x, y, vx, vy for CV) */
-    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real P[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE]; /* mtt_cov */
     mtt_real existence;
     uint32_t id;
     uint32_t age;
@@ -43,10 +43,10 @@ typedef struct mtt_track {
 /** Per-frame, per-track scratch (prediction, innovation, gate). */
 typedef struct mtt_track_frame {
     mtt_real xp[MTT_MAX_STATE];
-    mtt_real Pp[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real Pp[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE]; /* mtt_cov */
     mtt_real ex_pred;    /* predicted existence (ALGORITHMS.md §11) */
-    mtt_real S[3];       /* innovation covariance s11, s12, s22 */
-    mtt_real Si[3];      /* its inverse */
+    mtt_real S[MTT_SYM_SLOTS];  /* innovation covariance s11, s12, s22 (fixed point: + exponent) */
+    mtt_real Si[MTT_SYM_SLOTS]; /* its inverse */
     mtt_real det_s;
     mtt_real vg;         /* gate area (ALGORITHMS.md §4) */
     mtt_real K[MTT_MAX_STATE][2]; /* Kalman gain */

@@ -1,0 +1,97 @@
+/* fx_stage_cost.c - instructions per track of the prediction stage's
+ * arithmetic (mtt_kalman_predict + mtt_kalman_innov: ALGORITHMS.md §2, §3)
+ * on the Cortex-M0+ under qemu, compiled once as the float build
+ * (soft-float helpers) and once as the fixed-point build (MTT_REAL_FIXED,
+ * docs/FIXED_POINT.md).  Built and run by scripts/fx-cost.sh; not part of
+ * the firmware example.
+ *
+ * N tracks with different states and covariances are predicted over one
+ * frame; SysTick (40 instructions per tick under -icount shift=0) times the
+ * loop.  Output: "S <build> predict+innov <instructions per track>". */
+#include <stdint.h>
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "fw.h"
+#include "semihost.h"
+
+#define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
+#define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
+#define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+
+#define N 32
+
+static mtt_state x[N], xp[N];
+static mtt_cov P[N], Pp[N];
+static mtt_real S[N][MTT_SYM_SLOTS], Si[N][MTT_SYM_SLOTS], det[N], K[N][MTT_MAX_STATE][2];
+static volatile int sink;
+
+/* A TV2-like covariance scaled by 1 + i/8 (position) and 1 + i/16 (velocity). */
+static void setup(void)
+{
+    int i, r, c;
+    for (i = 0; i < N; ++i) {
+        static const int p0[4][4] = {{4, 1, 1, 0}, {1, 4, 0, 1}, {1, 0, 1, 0}, {0, 1, 0, 1}};
+        memset(P[i], 0, sizeof P[i]);
+        for (r = 0; r < 4; ++r) {
+            for (c = 0; c < 4; ++c) {
+#ifdef MTT_REAL_FIXED
+                P[i][r][c] = p0[r][c] * (8 + i) * ((int32_t)1 << 20);
+#else
+                P[i][r][c] = (mtt_real)(p0[r][c] * (8 + i)) * MTT_R(0.125);
+#endif
+            }
+        }
+#ifdef MTT_REAL_FIXED
+        MTT_COV_E(P[i]) = -23;
+        x[i][0] = MTT_POS(100.0) + i * MTT_POS(3.0);
+        x[i][1] = MTT_POS(50.0) - i * MTT_POS(2.0);
+        x[i][2] = MTT_POS(10.0);
+        x[i][3] = MTT_POS(-5.0);
+#else
+        x[i][0] = MTT_R(100.0) + (mtt_real)i * MTT_R(3.0);
+        x[i][1] = MTT_R(50.0) - (mtt_real)i * MTT_R(2.0);
+        x[i][2] = MTT_R(10.0);
+        x[i][3] = MTT_R(-5.0);
+#endif
+    }
+}
+
+int main(void)
+{
+#ifdef MTT_REAL_FIXED
+    const mtt_real dt = MTT_FX_CONST(1.0, MTT_FX_T_FRAC), sw = MTT_FX_CONST(5.0, MTT_FX_VAR_FRAC);
+    const mtt_real R[3] = {MTT_FX_CONST(1.0, MTT_FX_VAR_FRAC), MTT_FX_CONST(0.3, MTT_FX_VAR_FRAC),
+                           MTT_FX_CONST(2.0, MTT_FX_VAR_FRAC)};
+    const char *build = "S fixed predict+innov ";
+#else
+    const mtt_real dt = MTT_R(1.0), sw = MTT_R(5.0);
+    const mtt_real R[3] = {MTT_R(1.0), MTT_R(0.3), MTT_R(2.0)};
+    const char *build = "S float predict+innov ";
+#endif
+    char buf[64], *p;
+    uint32_t c0, c1, t;
+    int i, ok = 0;
+    SYST_RVR = 0x00FFFFFFu;
+    SYST_CVR = 0u;
+    SYST_CSR = 5u;
+    while (SYST_CVR == 0u) {
+        /* the first tick loads RVR */
+    }
+    setup();
+    c0 = SYST_CVR;
+    for (i = 0; i < N; ++i) {
+        mtt_kalman_predict(dt, sw, x[i], P[i], xp[i], Pp[i]);
+        ok += mtt_kalman_innov(Pp[i], R, S[i], Si[i], &det[i], K[i]) == 0;
+    }
+    c1 = SYST_CVR;
+    sink = ok;
+    t = (c0 - c1) & 0x00FFFFFFu;
+    p = fmt_str(buf, build);
+    p = fmt_u32(p, (t * 40u + N / 2u) / N);
+    p = fmt_str(p, (ok == N) ? " ok\n" : " FAILED\n");
+    (void)p;
+    semihost_write0(buf);
+    semihost_write0("END ok\n");
+    return 0;
+}

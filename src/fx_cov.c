@@ -1,0 +1,184 @@
+/* fx_cov.c - block floating point for the covariances of the fixed-point
+ * build (docs/FIXED_POINT.md §2 and its Status, findings 1 and 5): a
+ * matrix's values are its int32 mantissas times 2^e, with e in the extra
+ * row of mtt_cov (MTT_COV_E).  Renormalisation, the headroom of the
+ * prediction, the alignment of two blocks to one exponent, and the process
+ * noise Q(dt) of the CV model (ALGORITHMS.md §2) as mantissas and an
+ * exponent.  Compiled only in the fixed-point build. */
+#include "mtt_internal.h"
+
+#ifdef MTT_REAL_FIXED
+
+/* Bit length of |v| (0 for 0); |v| <= MTT_FX_MAX. */
+static int bitlen(int32_t v)
+{
+    return 32 - mtt_fx_clz((uint32_t)((v < 0) ? -v : v));
+}
+
+/* Bit length of the largest |entry|: that of the OR of all |entries|
+ * (one count of leading zeros instead of sixteen). */
+static int block_bits(mtt_cov P)
+{
+    uint32_t u = 0u;
+    int i, j;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j < MTT_STATE_N; ++j) {
+            u |= (uint32_t)((P[i][j] < 0) ? -P[i][j] : P[i][j]);
+        }
+    }
+    return 32 - mtt_fx_clz(u);
+}
+
+/* v / 2^s rounded to nearest (ties up), 0 < s: a few instructions, no
+ * overflow (right shifts of negative values are arithmetic, fixed.h). */
+static int32_t shr_round(int32_t v, int s)
+{
+    if (s > 31) {
+        return 0;
+    }
+    return (v >> (s - 1) >> 1) + ((v >> (s - 1)) & 1);
+}
+
+/* Mantissas times 2^s: exact for s > 0 (the caller keeps them below 2^31),
+ * rounded to nearest for s < 0; the exponent takes -s, so the values stay. */
+static void shift_block(mtt_cov P, int s)
+{
+    int i, j;
+    if (s == 0) {
+        return;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j < MTT_STATE_N; ++j) {
+            if (s > 0) {
+                P[i][j] *= (int32_t)1 << s;
+            } else {
+                P[i][j] = shr_round(P[i][j], -s);
+            }
+        }
+    }
+    MTT_COV_E(P) -= s;
+}
+
+void mtt_fx_cov_norm(mtt_cov P, int top)
+{
+    const int b = block_bits(P);
+    if (b > 0) {
+        shift_block(P, top - b);
+    }
+}
+
+/* Largest mantissa bit length before a prediction over dt (Q16 frames):
+ * 30 - 2k with 2^k >= 1 + dt, so (1 + dt)^2 |P| + |Q| < 2^31 (finding 1);
+ * at least 2, which caps the precision of gaps beyond 2^13 frames. */
+static int fit_top(int32_t dt)
+{
+    const uint32_t frames = ((uint32_t)dt + 131071u) >> 16; /* ceil(1 + dt) */
+    const int top = 30 - 2 * (32 - mtt_fx_clz(frames - 1u));
+    return (top < 2) ? 2 : top;
+}
+
+void mtt_fx_cov_fit(mtt_cov P, int32_t dt)
+{
+    mtt_fx_cov_norm(P, fit_top(dt));
+}
+
+void mtt_fx_cov_align(mtt_cov A, mtt_cov B)
+{
+    if (MTT_COV_E(A) < MTT_COV_E(B)) {
+        shift_block(A, MTT_COV_E(A) - MTT_COV_E(B));
+    } else {
+        shift_block(B, MTT_COV_E(B) - MTT_COV_E(A));
+    }
+}
+
+/* v > 0 in Q frac as m 2^e with m in [2^29, 2^30]. */
+static int32_t unpack(int32_t v, int frac, int *e)
+{
+    const int l = bitlen(v);
+    *e = -frac - (30 - l);
+    return (l <= 30) ? v * ((int32_t)1 << (30 - l)) : mtt_fx_mul(v, 1, l - 30);
+}
+
+void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
+{
+    int32_t m[3];
+    int e[3], ds, ss, k, eq = -127;
+    int i, j;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j < MTT_STATE_N; ++j) {
+            Q[i][j] = 0;
+        }
+    }
+    MTT_COV_E(Q) = -127;
+    if (!(dt > 0) || !(sw > 0)) {
+        return;
+    }
+    {
+        const int32_t dm = unpack(dt, MTT_FX_T_FRAC, &ds);
+        const int32_t sm = unpack(sw, MTT_FX_VAR_FRAC, &ss);
+        /* q33 = sw dt, q13 = sw dt^2 / 2, q11 = sw dt^3 / 3 */
+        m[2] = mtt_fx_mul(sm, dm, 30);
+        e[2] = ss + ds + 30;
+        m[1] = mtt_fx_mul(m[2], dm, 30);
+        e[1] = e[2] + ds + 30;
+        m[0] = mtt_fx_div(mtt_fx_mul(m[1], dm, 30), 3, 0);
+        e[0] = e[1] + ds + 30;
+        e[1] -= 1;
+    }
+    for (k = 0; k < 3; ++k) {
+        const int need = e[k] + bitlen(m[k]) - fit_top(dt);
+        eq = (need > eq) ? need : eq;
+    }
+    for (k = 0; k < 3; ++k) {
+        const int s = eq - e[k];
+        m[k] = (s > 0) ? shr_round(m[k], s) : m[k] * ((int32_t)1 << -s);
+    }
+    Q[0][0] = m[0];
+    Q[1][1] = m[0];
+    Q[0][2] = m[1];
+    Q[2][0] = m[1];
+    Q[1][3] = m[1];
+    Q[3][1] = m[1];
+    Q[2][2] = m[2];
+    Q[3][3] = m[2];
+    MTT_COV_E(Q) = eq;
+}
+
+int32_t mtt_fx_at(int32_t m, int from, int to)
+{
+    const int s = to - from;
+    if (s > 0) {
+        return shr_round(m, s);
+    }
+    if (s == 0) {
+        return m;
+    }
+    return (-s > 30) ? ((m == 0) ? 0 : ((m > 0) ? MTT_FX_MAX : MTT_FX_MIN)) : mtt_fx_mul(m, (int32_t)1 << -s, 0);
+}
+
+int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
+{
+    int b = 0, k, e;
+    for (k = 0; k < 3; ++k) {
+        const int l = bitlen(R[k]);
+        b = (l > b) ? l : b;
+    }
+    /* R's values at the exponent where its largest has MTT_FX_COV_TOP bits */
+    e = (b > 0) ? -MTT_FX_VAR_FRAC + b - MTT_FX_COV_TOP : -127;
+    e = (MTT_COV_E(Pp) > e) ? MTT_COV_E(Pp) : e;
+    return e + 1; /* a sum of two terms below 2^28 */
+}
+
+int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
+{
+    int b = 0, k, sh;
+    for (k = 0; k < 3; ++k) {
+        const int l = bitlen(S[k]);
+        b = (l > b) ? l : b;
+    }
+    sh = 27 - b + bitlen(det); /* max |S| 2^sh / det < 2^28 */
+    sh = (sh < 0) ? 0 : ((sh > 62) ? 62 : sh);
+    return -MTT_SYM_E(S) - 28 - sh;
+}
+
+#endif /* MTT_REAL_FIXED */
