@@ -15,6 +15,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -52,6 +53,10 @@ static double pos(mtt_pos v)
     return ldexp((double)v, -MTT_FX_POS_FRAC);
 }
 static const double lam = (double)DENS / 1073741824.0; /* the declared density, quantised */
+static double lam_or_1(void)
+{
+    return lam;
+}
 /* The mantissa of sqrt(det S) that gate.c takes (f = 30 or 31, de - f even). */
 static double sqrt_det_mant(void)
 {
@@ -66,6 +71,10 @@ static double sv(int k)
 static double siv(int k)
 {
     return (double)Si[k];
+}
+static double lam_or_1(void)
+{
+    return 1.0; /* float: V_G and p themselves */
 }
 static double pos(mtt_pos v)
 {
@@ -211,11 +220,87 @@ static void test_tv3_candidates(void)
 #endif
 }
 
+/* The frame stage on TV3: one track at TV2's prediction, the five
+ * candidates as measurements.  Its pairs must be the stage kernels applied
+ * to the track's own S, S^-1 (bit for bit: the frame only composes them),
+ * and TV3 within the float rule of ALGORITHMS.md §16, the upper bound of
+ * every fixed tolerance (docs/FIXED_POINT.md §7). */
+static mtt_tracker trk;
+
+static void test_tv3_gate_frame(void)
+{
+    static const double p2[16] = {8.666666667, 1, 4.5, 0, 1, 8.666666667, 0, 4.5,
+                                  4.5, 0, 6, 0, 0, 4.5, 0, 6}; /* TV2 P^ */
+    static const double r[3] = {1.0, 0.3, 2.0};                /* TV2 R */
+    static const double xp0[4] = {110.0, 45.0, 10.0, -5.0};    /* TV2 x^ */
+    static const uint16_t want_meas[4] = {0, 1, 2, 4};         /* TV3: c4 not gated */
+    mtt_state xp;
+    mtt_cov Pp;
+    mtt_ratio peak;
+    int i, j, k;
+    memset(&trk, 0, sizeof trk);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&trk.par));
+    trk.par.pg = MTT_P(0.99);
+    trk.par.clutter_density = DENS;
+    trk.gamma = mtt_gate_gamma(trk.par.pg);
+    memset(Pp, 0, sizeof Pp);
+    for (i = 0; i < 4; ++i) {
+#ifdef MTT_REAL_FIXED
+        xp[i] = MTT_FX_CONST(xp0[i], MTT_FX_POS_FRAC);
+        for (j = 0; j < 4; ++j) {
+            Pp[i][j] = (mtt_real)llround(ldexp(p2[4 * i + j], 24)); /* largest below 2^28 */
+        }
+#else
+        xp[i] = (mtt_real)xp0[i];
+        for (j = 0; j < 4; ++j) {
+            Pp[i][j] = (mtt_real)p2[4 * i + j];
+        }
+#endif
+    }
+#ifdef MTT_REAL_FIXED
+    MTT_COV_E(Pp) = -24;
+    for (k = 0; k < 3; ++k) {
+        trk.R[k] = (mtt_real)llround(ldexp(r[k], MTT_FX_VAR_FRAC));
+    }
+#else
+    for (k = 0; k < 3; ++k) {
+        trk.R[k] = (mtt_real)r[k];
+    }
+#endif
+    (void)tv_add_track_xp(&trk, xp, Pp, MTT_P(0.6));
+    for (k = 0; k < 5; ++k) {
+#ifdef MTT_REAL_FIXED
+        (void)tv_add_meas(&trk, MTT_FX_CONST(xp0[0] + tv3_off[k][0], MTT_FX_POS_FRAC),
+                          MTT_FX_CONST(xp0[1] + tv3_off[k][1], MTT_FX_POS_FRAC), MTT_AMP(1.0), 1);
+#else
+        (void)tv_add_meas(&trk, (mtt_real)(xp0[0] + tv3_off[k][0]), (mtt_real)(xp0[1] + tv3_off[k][1]),
+                          MTT_AMP(1.0), 1);
+#endif
+    }
+    TV_GATE_AREA(&trk, 0) = MTT_ZERO; /* gate_frame must compute it */
+    mtt_gate_frame(&trk);
+    TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
+    TEST_ASSERT_EQUAL_UINT(4, TV_PAIR_COUNT(&trk, 0));
+    TEST_ASSERT_TRUE(MTT_GATE_AREA(trk.gamma, trk.tf[0].det_s, trk.tf[0].S, DENS) == TV_GATE_AREA(&trk, 0));
+    TV_ASSERT_REAL(tv3_vg * lam_or_1(), TV_Q(TV_GATE_AREA(&trk, 0), MTT_FX_RATIO_FRAC)); /* TV3 V_G */
+    peak = MTT_GATE_PEAK(trk.tf[0].det_s, trk.tf[0].S, trk.par.pg, DENS);
+    for (k = 0; k < 4; ++k) {
+        const mtt_mstore *m = &trk.meas[want_meas[k]];
+        const mtt_d2 d2 = mtt_mahal2(trk.tf[0].Si, m->x - trk.tf[0].xp[0], m->y - trk.tf[0].xp[1]);
+        TEST_ASSERT_EQUAL_UINT(want_meas[k], TV_PAIR_MEAS(&trk, k));
+        TEST_ASSERT_TRUE(MTT_GATE_LIK(peak, d2) == TV_PAIR_P(&trk, k));
+        TV_ASSERT_REAL_MSG(tv3_d2[want_meas[k]], TV_Q(d2, MTT_FX_D2_FRAC), "TV3 d2");
+        TV_ASSERT_REAL_MSG(tv3_p[want_meas[k]] / lam_or_1(), TV_Q(TV_PAIR_P(&trk, k), MTT_FX_RATIO_FRAC),
+                           "TV3 p");
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_tv3_gamma);
     RUN_TEST(test_tv3_area_width);
     RUN_TEST(test_tv3_candidates);
+    RUN_TEST(test_tv3_gate_frame);
     return UNITY_END();
 }
