@@ -190,9 +190,9 @@ static int norm_pair(int32_t *a, int32_t *b)
     if (s >= 0) {
         *a *= (int32_t)1 << s;
         *b *= (int32_t)1 << s;
-    } else {
-        *a = shr_round(*a, -s);
-        *b = shr_round(*b, -s);
+    } else { /* s = -1: |v| <= MTT_FX_MAX has at most 31 bits */
+        *a = (*a >> 1) + (*a & 1);
+        *b = (*b >> 1) + (*b & 1);
     }
     return s;
 }
