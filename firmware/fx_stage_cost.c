@@ -1,13 +1,16 @@
 /* fx_stage_cost.c - instructions per track of the prediction stage's
- * arithmetic (mtt_kalman_predict + mtt_kalman_innov: ALGORITHMS.md §2, §3)
- * on the Cortex-M0+ under qemu, compiled once as the float build
+ * arithmetic (mtt_kalman_predict + mtt_kalman_innov: ALGORITHMS.md §2, §3),
+ * and of the gate's (ALGORITHMS.md §4: gate area, slice half-widths, the
+ * likelihood peak, and d^2 with p for 4 candidates per track), on the
+ * Cortex-M0+ under qemu, compiled once as the float build
  * (soft-float helpers) and once as the fixed-point build (MTT_REAL_FIXED,
  * docs/FIXED_POINT.md).  Built and run by scripts/fx-cost.sh; not part of
  * the firmware example.
  *
  * N tracks with different states and covariances are predicted over one
  * frame; SysTick (40 instructions per tick under -icount shift=0) times the
- * loop.  Output: "S <build> predict+innov <instructions per track>". */
+ * loop.  Output: "S <build> predict+innov <instructions per track>" and
+ * "S <build> gate (4 candidates) <instructions per track>". */
 #include <stdint.h>
 #include <string.h>
 
@@ -25,6 +28,23 @@ static mtt_state x[N], xp[N];
 static mtt_cov P[N], Pp[N];
 static mtt_real S[N][MTT_SYM_SLOTS], Si[N][MTT_SYM_SLOTS], det[N], K[N][MTT_MAX_STATE][2];
 static volatile int sink;
+static mtt_real gsink[N];
+
+/* Candidate offsets from the prediction (TV3's, gated ones). */
+static const mtt_pos off[4][2] = {{MTT_POS(0.8), MTT_POS(-0.5)}, {MTT_POS(-3.5), MTT_POS(2.4)},
+                                  {MTT_POS(5.0), MTT_POS(3.0)}, {MTT_POS(9.0), MTT_POS(0.0)}};
+
+/* Timed ticks (SysTick counts down, 24 bits) as instructions per track. */
+static void report(const char *what, uint32_t c0, uint32_t c1, int ok)
+{
+    char buf[80], *p;
+    const uint32_t t = (c0 - c1) & 0x00FFFFFFu;
+    p = fmt_str(buf, what);
+    p = fmt_u32(p, (t * 40u + N / 2u) / N);
+    p = fmt_str(p, ok ? " ok\n" : " FAILED\n");
+    (void)p;
+    semihost_write0(buf);
+}
 
 /* A TV2-like covariance scaled by 1 + i/8 (position) and 1 + i/16 (velocity). */
 static void setup(void)
@@ -64,14 +84,16 @@ int main(void)
     const mtt_real R[3] = {MTT_FX_CONST(1.0, MTT_FX_VAR_FRAC), MTT_FX_CONST(0.3, MTT_FX_VAR_FRAC),
                            MTT_FX_CONST(2.0, MTT_FX_VAR_FRAC)};
     const char *build = "S fixed predict+innov ";
+    const char *gbuild = "S fixed gate (4 candidates) ";
 #else
     const mtt_real dt = MTT_R(1.0), sw = MTT_R(5.0);
     const mtt_real R[3] = {MTT_R(1.0), MTT_R(0.3), MTT_R(2.0)};
     const char *build = "S float predict+innov ";
+    const char *gbuild = "S float gate (4 candidates) ";
 #endif
-    char buf[64], *p;
-    uint32_t c0, c1, t;
-    int i, ok = 0;
+    const mtt_d2 gamma = mtt_gate_gamma(MTT_P(0.99));
+    uint32_t c0, c1;
+    int i, k, ok = 0;
     SYST_RVR = 0x00FFFFFFu;
     SYST_CVR = 0u;
     SYST_CSR = 5u;
@@ -86,12 +108,26 @@ int main(void)
     }
     c1 = SYST_CVR;
     sink = ok;
-    t = (c0 - c1) & 0x00FFFFFFu;
-    p = fmt_str(buf, build);
-    p = fmt_u32(p, (t * 40u + N / 2u) / N);
-    p = fmt_str(p, (ok == N) ? " ok\n" : " FAILED\n");
-    (void)p;
-    semihost_write0(buf);
+    report(build, c0, c1, ok == N);
+    ok = 0;
+    c0 = SYST_CVR;
+    for (i = 0; i < N; ++i) {
+        const mtt_ratio vg = MTT_GATE_AREA(gamma, det[i], S[i], MTT_DENS(1e-3));
+        const mtt_pos wx = MTT_GATE_WIDTH(gamma, S[i], 0), wy = MTT_GATE_WIDTH(gamma, S[i], 2);
+        const mtt_ratio peak = MTT_GATE_PEAK(det[i], S[i], MTT_P(0.99), MTT_DENS(1e-3));
+        mtt_ratio sum = vg;
+        for (k = 0; k < 4; ++k) {
+            const mtt_d2 d2 = mtt_mahal2(Si[i], off[k][0], off[k][1]);
+            if (d2 <= gamma) {
+                sum = MTT_ADD(sum, MTT_GATE_LIK(peak, d2));
+                ++ok;
+            }
+        }
+        gsink[i] = MTT_ADD(sum, MTT_ADD(wx, wy));
+    }
+    c1 = SYST_CVR;
+    sink = ok;
+    report(gbuild, c0, c1, ok > 0);
     semihost_write0("END ok\n");
     return 0;
 }

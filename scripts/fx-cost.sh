@@ -5,6 +5,7 @@
 # qemu-system-arm -icount shift=0 (firmware/fx_cost.c), beside the
 # soft-float helpers and newlib functions they replace; then the prediction
 # stage's arithmetic per track (mtt_kalman_predict + mtt_kalman_innov,
+# and the gate's (area, widths, peak, d^2 and p of 4 candidates per track),
 # firmware/fx_stage_cost.c) built as float (soft float) and as fixed point.
 #
 #   ./scripts/fx-cost.sh [OUTDIR]     (default build/fx-cost)
@@ -53,7 +54,7 @@ for build in float fixed; do
     -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/firmware" "${DEFS[@]}" \
     -specs=nano.specs -nostartfiles -Wl,--gc-sections -T"$ROOT/firmware/mps2.ld" \
     "$ROOT/firmware/startup.c" "$ROOT/firmware/semihost.c" "$ROOT/firmware/fmt.c" \
-    "$ROOT/firmware/fx_stage_cost.c" "$ROOT/src/kalman.c" "$ROOT/src/motion_cv.c" "${extra[@]}" -lm \
+    "$ROOT/firmware/fx_stage_cost.c" "$ROOT/src/kalman.c" "$ROOT/src/motion_cv.c" "$ROOT/src/gate.c" "${extra[@]}" -lm \
     -o "$OUT/stage-$build.elf"
   qemu-system-arm -machine mps2-an385 -semihosting-config enable=on,target=native \
     -nographic -monitor none -serial none -icount shift=0 -kernel "$OUT/stage-$build.elf" 2>&1 |

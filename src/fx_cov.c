@@ -181,4 +181,41 @@ int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
     return -MTT_SYM_E(S) - 28 - sh;
 }
 
+/* Normalises v (|v| <= MTT_FX_MAX) so that the larger of |a|, |b| has 30
+ * bits: returns the shift s (values = mantissas 2^-s of the input's). */
+static int norm_pair(int32_t *a, int32_t *b)
+{
+    const uint32_t u = (uint32_t)((*a < 0) ? -*a : *a) | (uint32_t)((*b < 0) ? -*b : *b);
+    const int s = 30 - (32 - mtt_fx_clz(u));
+    if (s >= 0) {
+        *a *= (int32_t)1 << s;
+        *b *= (int32_t)1 << s;
+    } else { /* s = -1: |v| <= MTT_FX_MAX has at most 31 bits */
+        *a = (*a >> 1) + (*a & 1);
+        *b = (*b >> 1) + (*b & 1);
+    }
+    return s;
+}
+
+int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny)
+{
+    int32_t w0, w1, q;
+    int s;
+    if (nx == 0 && ny == 0) {
+        return 0;
+    }
+    s = norm_pair(&nx, &ny);
+    /* S^-1 nu: mantissas below 2^28 times |nu| <= 2^30, over 2^30: each
+     * product below 2^28, each sum below 2^29; then nu' (S^-1 nu) below
+     * 2^30: no overflow at any step. */
+    w0 = mtt_fx_mulq(Si[0], nx, 30) + mtt_fx_mulq(Si[1], ny, 30);
+    w1 = mtt_fx_mulq(Si[1], nx, 30) + mtt_fx_mulq(Si[2], ny, 30);
+    q = mtt_fx_mulq(nx, w0, 30) + mtt_fx_mulq(ny, w1, 30);
+    if (q < 0) {
+        q = 0; /* S^-1 is positive definite: only rounding makes it negative */
+    }
+    /* d^2 = q 2^(e(S^-1) - 2 (F + s) + 60), returned in Q24 (saturated) */
+    return mtt_fx_at(q, MTT_SYM_E(Si) - 2 * (MTT_FX_POS_FRAC + s) + 60, -MTT_FX_D2_FRAC);
+}
+
 #endif /* MTT_REAL_FIXED */

@@ -7,6 +7,129 @@
  * O(n log n + sum of slice lengths), not tracks x measurements. */
 #include "mtt_internal.h"
 
+#ifdef MTT_REAL_FIXED
+/* ---- The gate's arithmetic in the fixed-point build (docs/FIXED_POINT.md
+ * §4, step 5).  gamma and d^2 are Q24; S and det S are mantissas with the
+ * exponents of mtt/real.h (MTT_SYM_E, MTT_DET_E); densities are held
+ * relative to the declared clutter density lambda (Q30 per unit^2), so the
+ * gate area is the ratio lambda V_G and the likelihood the ratio p / lambda
+ * (both Q16). ---- */
+
+/* Bit length of v > 0. */
+static int bits(uint32_t v)
+{
+    return 32 - mtt_fx_clz(v);
+}
+
+/* a b (both > 0) rounded to 30 bits; the dropped bits go into *e. */
+static int32_t mul_e(int32_t a, int32_t b, int *e)
+{
+    int s = bits((uint32_t)a) + bits((uint32_t)b) - 30;
+    s = (s < 0) ? 0 : s;
+    *e += s;
+    return mtt_fx_mul(a, b, s);
+}
+
+/* sqrt(det S) as a mantissa below 2^31 times 2^*e (det > 0). */
+static int32_t sqrt_det(int32_t det, const int32_t S[MTT_SYM_SLOTS], int *e)
+{
+    const int de = MTT_DET_E(S);
+    const int f = ((de & 1) != 0) ? 31 : 30; /* de - f even */
+    *e = (de - f) / 2;
+    return (int32_t)mtt_fx_sqrt((uint32_t)det, f);
+}
+
+/* A mantissa m > 0 at exponent e as a Q16 ratio (saturated, 0 below). */
+static int32_t ratio_at(int32_t m, int e)
+{
+    return mtt_fx_at(m, e, -MTT_FX_RATIO_FRAC);
+}
+
+/* pi 2^29 and 2 pi 2^29 */
+#define FX_PI_Q29 MTT_FX_CONST(3.14159265358979323846, 29)
+#define FX_2PI_Q28 MTT_FX_CONST(6.28318530717958647693, 28)
+
+mtt_d2 mtt_gate_gamma(mtt_prob pg)
+{
+    /* -2 ln(1 - PG): ln in Q25 is -gamma in Q24 (fixed.h: <= 2 units) */
+    return -mtt_fx_ln((uint32_t)(MTT_P(1.0) - pg), MTT_FX_PROB_FRAC);
+}
+
+mtt_ratio mtt_fx_gate_area(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens)
+{
+    int e, e1 = 0;
+    int32_t m;
+    if (!(gamma > 0) || !(det > 0) || !(dens > 0)) {
+        return 0;
+    }
+    m = sqrt_det(det, S, &e);
+    m = mul_e(m, gamma, &e1);
+    m = mul_e(m, FX_PI_Q29, &e1);
+    m = mul_e(m, dens, &e1);
+    /* lambda pi gamma sqrt(det S) */
+    return ratio_at(m, e + e1 - MTT_FX_D2_FRAC - 29 - MTT_FX_DENS_FRAC);
+}
+
+mtt_ratio mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob pg, int32_t dens)
+{
+    int e, e1 = 0, s;
+    int32_t m;
+    if (!(det > 0) || !(pg > 0) || !(dens > 0)) {
+        return MTT_FX_MAX;
+    }
+    m = sqrt_det(det, S, &e);
+    m = mul_e(m, FX_2PI_Q28, &e1);
+    m = mul_e(m, pg, &e1);
+    m = mul_e(m, dens, &e1);
+    e += e1 - 28 - MTT_FX_PROB_FRAC - MTT_FX_DENS_FRAC;
+    /* 1 / (2 pi sqrt(det S) PG lambda) = 2^(16 - e) / m in Q16 */
+    s = MTT_FX_RATIO_FRAC - e;
+    if (s < 0) {
+        return 0;
+    }
+    return (s > 62) ? MTT_FX_MAX : mtt_fx_div(1, m, s);
+}
+
+mtt_ratio mtt_fx_gate_lik(mtt_ratio peak, mtt_d2 d2)
+{
+    /* exp(-d^2 / 2): d^2 / 2 in Q24 rounded (2^-25), exp in Q30 (fixed.h) */
+    return mtt_fx_mul(peak, mtt_fx_exp_neg_q30(((uint32_t)d2 + 1u) >> 1), MTT_FX_PROB_FRAC);
+}
+
+mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
+{
+    /* An upper bound of sqrt(gamma s_kk) in the position format.  The slice
+     * only narrows the search (d^2 decides the gate), so it is rounded up:
+     * t = gamma s_kk 2^-a (exact, or 30 bits), w^2 = t 2^f in units of the
+     * position format, one square root, one more unit. */
+    int a, f, h;
+    int32_t t;
+    uint32_t r;
+    if (!(gamma > 0) || !(S[k] > 0)) {
+        return 0;
+    }
+    a = bits((uint32_t)gamma) + bits((uint32_t)S[k]) - 30;
+    a = (a < 0) ? 0 : a;
+    t = mtt_fx_mul(gamma, S[k], a);
+    f = MTT_SYM_E(S) - MTT_FX_D2_FRAC + 2 * MTT_FX_POS_FRAC + a;
+    if ((f & 1) != 0) {
+        t *= 2; /* t < 2^31 */
+        f -= 1;
+    }
+    if (f >= 0) {
+        h = (f > 32) ? (f - 32) / 2 : 0;
+        r = mtt_fx_sqrt((uint32_t)t, f - 2 * h) + 1u;
+        if (h > 0) {
+            r = (h >= 31 || r > ((uint32_t)MTT_FX_MAX >> h)) ? (uint32_t)MTT_FX_MAX : (r << h);
+        }
+    } else {
+        h = -f / 2;
+        r = mtt_fx_sqrt((uint32_t)t, 0);
+        r = (h >= 31) ? 1u : ((r + ((uint32_t)1 << h)) >> h);
+    }
+    return (r >= (uint32_t)MTT_FX_MAX) ? MTT_FX_MAX : (int32_t)(r + 1u);
+}
+#else
 /* ln x for finite x > 0 without libm's log (ALGORITHMS.md §16): x = m 2^e
  * with m in [1/sqrt 2, sqrt 2), ln m = 2 atanh s, s = (m - 1)/(m + 1),
  * |s| <= 0.172, by its series to s^9 (next term < 4e-10 relative: float
@@ -49,6 +172,7 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
 {
     return mtt_exp(MTT_R(-0.5) * d2) / (MTT_R(2.0) * MTT_PI * mtt_sqrt(det_s) * pg);
 }
+#endif /* MTT_REAL_FIXED */
 
 static int less_pair(const void *a, const void *b, const void *ctx)
 {
@@ -61,7 +185,7 @@ static int less_pair(const void *a, const void *b, const void *ctx)
 }
 
 /* First position in the x-sorted order whose x >= v. */
-static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_real v)
+static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_pos v)
 {
     uint16_t lo = 0, hi = trk->n_meas;
     while (lo < hi) {
@@ -100,7 +224,7 @@ void mtt_gate_frame(mtt_tracker *trk)
 {
     const uint16_t n = trk->n_meas;
     uint16_t cm[MTT_MAX_GATED];
-    mtt_real cd[MTT_MAX_GATED];
+    mtt_d2 cd[MTT_MAX_GATED];
     uint16_t i, k;
     int resort = 0;
 #if MTT_WITH_IMM
@@ -115,18 +239,19 @@ void mtt_gate_frame(mtt_tracker *trk)
 
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
-        mtt_real zx = tf->xp[0], zy = tf->xp[1], wx, wy, gamma = trk->gamma;
+        mtt_pos zx = tf->xp[0], zy = tf->xp[1], wx, wy;
+        mtt_d2 gamma = trk->gamma;
         uint16_t nc = 0, a, b;
-        mtt_real peak;
+        mtt_ratio peak;
         if (!tf->valid) {
             continue;
         }
         if (MTT_WITH_BASELINES && tf->shrink) {
             gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (ALGORITHMS.md §13.7) */
         }
-        tf->vg = mtt_gate_volume(gamma, tf->det_s);
-        wx = mtt_sqrt(gamma * tf->S[0]);
-        wy = mtt_sqrt(gamma * tf->S[2]);
+        tf->vg = MTT_GATE_AREA(gamma, tf->det_s, tf->S, trk->par.clutter_density);
+        wx = MTT_GATE_WIDTH(gamma, tf->S, 0);
+        wy = MTT_GATE_WIDTH(gamma, tf->S, 2);
 #if MTT_WITH_IMM
         if (imm) {
             /* the union of the model gates (ALGORITHMS.md §14.2) */
@@ -134,13 +259,14 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
-        for (k = lower_bound_x(trk, zx - wx); k < n; ++k) {
+        for (k = lower_bound_x(trk, MTT_SUBS(zx, wx)); k < n; ++k) {
             uint16_t j = trk->order[k];
-            mtt_real dx = trk->meas[j].x - zx, dy = trk->meas[j].y - zy, d2;
+            mtt_pos dx = MTT_SUBS(trk->meas[j].x, zx), dy = MTT_SUBS(trk->meas[j].y, zy);
+            mtt_d2 d2;
             if (dx > wx) {
                 break;
             }
-            if (mtt_fabs(dy) > wy) {
+            if (MTT_ABS(dy) > wy) {
                 continue;
             }
 #if MTT_WITH_IMM
@@ -173,7 +299,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         /* Input order inside the gate (insertion sort of at most MTT_MAX_GATED). */
         for (a = 1; a < nc; ++a) {
             uint16_t mj = cm[a];
-            mtt_real md = cd[a];
+            mtt_d2 md = cd[a];
             for (b = a; b > 0 && cm[b - 1u] > mj; --b) {
                 cm[b] = cm[b - 1u];
                 cd[b] = cd[b - 1u];
@@ -183,7 +309,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         }
         /* N(0; 0, S) / PG once per track: the pairs differ only in exp(-d2/2),
          * so the square root and divisions are not repeated per pair. */
-        peak = mtt_gate_likelihood(MTT_R(0.0), tf->det_s, trk->par.pg);
+        peak = MTT_GATE_PEAK(tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
         for (a = 0; a < nc; ++a) {
             mtt_pair np;
             np.track = i;
@@ -191,14 +317,14 @@ void mtt_gate_frame(mtt_tracker *trk)
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
             np.p = imm ? mtt_imm_gate_p(trk, i, trk->meas[cm[a]].x, trk->meas[cm[a]].y)
-                       : peak * mtt_exp(MTT_R(-0.5) * cd[a]);
+                       : MTT_GATE_LIK(peak, cd[a]);
 #else
-            np.p = peak * mtt_exp(MTT_R(-0.5) * cd[a]);
+            np.p = MTT_GATE_LIK(peak, cd[a]);
 #endif
-            np.w = MTT_R(0.0);
-            np.lam = MTT_R(0.0);
-            np.beta = MTT_R(0.0);
-            np.g = MTT_R(1.0);
+            np.w = MTT_ZERO;
+            np.lam = MTT_ZERO;
+            np.beta = MTT_ZERO;
+            np.g = MTT_RATIO(1.0);
             push_pair(trk, &np, &resort);
         }
     }

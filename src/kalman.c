@@ -86,11 +86,12 @@ int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SY
 }
 #endif
 
-#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
-mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny)
+mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
 {
-    return Si[0] * nx * nx + MTT_R(2.0) * Si[1] * nx * ny + Si[2] * ny * ny;
+    return MTT_MAHAL2(Si, nx, ny);
 }
+
+#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
 
 static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
                   const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],

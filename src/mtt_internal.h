@@ -36,7 +36,8 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
  * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
 int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
                      mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
-mtt_real mtt_mahal2(const mtt_real Si[3], mtt_real nx, mtt_real ny);
+/* d^2 = nu' S^-1 nu (ALGORITHMS.md §4); in the fixed build Q24. */
+mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny);
 /* PDA update with m measurements (ALGORITHMS.md §6), K and Si = S^-1 from
  * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
  * single-measurement update of ALGORITHMS.md §7.4, and with m = 0, beta0 = 0 it is
@@ -69,6 +70,17 @@ int32_t mtt_fx_at(int32_t m, int from, int to);
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3]);
 /* Exponent of S^-1 = adj(S) / det with every entry below 2^28 (det > 0). */
 int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det);
+/* nu' S^-1 nu in Q24 (saturated) for nu in the position format and S^-1 as
+ * mantissas with their exponent (MTT_SYM_E). */
+int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny);
+/* gate.c's arithmetic (docs/FIXED_POINT.md §4): lambda V_G and
+ * 1 / (2 pi sqrt(det S) PG lambda) as Q16 ratios of the declared clutter
+ * density dens (Q30), that times exp(-d^2 / 2), and an upper bound of
+ * sqrt(gamma s_kk) in the position format. */
+int32_t mtt_fx_gate_area(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens);
+int32_t mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg, int32_t dens);
+int32_t mtt_fx_gate_lik(int32_t peak, int32_t d2);
+int32_t mtt_fx_gate_width(int32_t gamma, const int32_t S[MTT_SYM_SLOTS], int k);
 #endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive
@@ -87,7 +99,7 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel);
 int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
 
 /* ---- gate.c: gating, gate area, likelihood (ALGORITHMS.md §4) ---- */
-mtt_real mtt_gate_gamma(mtt_real pg);
+mtt_d2 mtt_gate_gamma(mtt_prob pg); /* Q24 in the fixed build */
 /* ln x, finite x > 0, without libm (gamma's log under MTT_SMALL_LOG). */
 mtt_real mtt_gate_ln(mtt_real x);
 mtt_real mtt_gate_volume(mtt_real gamma, mtt_real det_s);

@@ -188,6 +188,38 @@ static const double tv2_S[3] = {9.666666667, 1.3, 10.66666667};
 static const double tv2_K[8] = {0.8986732983,  -0.01577580824, -0.005915928089, 0.8132210037,
                                 0.4732742471,  -0.05768029886, -0.05768029886,  0.4289047864};
 
+/* ---- d^2 = nu' S^-1 nu (ALGORITHMS.md §4) on TV2's nu = [1.5, -1]
+ * (exact in the position format) with the S^-1 of the innovation step.
+ * Fixed point: nu is normalised to 30 bits (exact here: a shift left by s),
+ * w = S^-1 nu takes two mtt_fx_mulq at s = 30 per entry (0.5008 u_w each,
+ * u_w = 2^(e(S^-1) - F - s + 30) in value), nu' w two more at
+ * u_q = 2^(e(S^-1) - 2 (F + s) + 60), and the Q24 result half a unit:
+ *
+ *   |error| <= (|nx| + |ny|)^2 dSi + (|nx| + |ny|) 2 (0.5008) u_w
+ *              + 2 (0.5008) u_q + 2^-25. ---- */
+static const double tv2_d2 = 0.3704028309; /* TV2 d2 */
+
+static void check_d2(const mtt_real Si[MTT_SYM_SLOTS], double dSi)
+{
+    const double nx = 1.5, ny = -1.0, l1 = fabs(nx) + fabs(ny);
+    const mtt_pos px = MTT_POS(1.5), py = MTT_POS(-1.0);
+    double tol = l1 * l1 * dSi;
+#ifdef MTT_REAL_FIXED
+    const int s = 30 - (32 - mtt_fx_clz((uint32_t)px | (uint32_t)-py));
+    const double uw = ldexp(1.0, MTT_SYM_E(Si) - MTT_FX_POS_FRAC - s + 30);
+    const double uq = ldexp(1.0, MTT_SYM_E(Si) - 2 * (MTT_FX_POS_FRAC + s) + 60);
+    tol += l1 * 2.0 * 0.5008 * uw + 2.0 * 0.5008 * uq + ldexp(1.0, -25);
+    TV_ASSERT_Q(tv2_d2, mtt_mahal2(Si, px, py), MTT_FX_D2_FRAC, tol);
+    /* far outside every gate: saturates to the largest Q24 value, no wrap */
+    TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, mtt_mahal2(Si, MTT_POS(1000.0), MTT_POS(-1000.0)));
+    TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, mtt_mahal2(Si, MTT_FX_POS_LIMIT, -MTT_FX_POS_LIMIT));
+    TEST_ASSERT_EQUAL_INT32(0, mtt_mahal2(Si, 0, 0));
+#else
+    (void)tol;
+    TV_ASSERT_REAL(tv2_d2, mtt_mahal2(Si, px, py));
+#endif
+}
+
 static void test_tv2_innovation(void)
 {
     static const double r[3] = {1.0, 0.3, 2.0}; /* TV2 R */
@@ -228,6 +260,7 @@ static void test_tv2_innovation(void)
             ASSERT_COV(tv2_K[2 * i + k], kv, tol); /* TV2 K */
         }
     }
+    check_d2(Si, dSi);
     (void)xp;
 }
 

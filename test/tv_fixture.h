@@ -205,7 +205,7 @@ static inline uint16_t tv_add_track_xp(mtt_tracker *trk, const mtt_state xp,
     tf->assigned = -1;
     tf->best = -1;
     TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K));
-    tf->vg = mtt_gate_volume(trk->gamma, tf->det_s);
+    tf->vg = MTT_GATE_AREA(trk->gamma, tf->det_s, tf->S, trk->par.clutter_density);
     tf->valid = 1;
     return i;
 }

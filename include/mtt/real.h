@@ -189,6 +189,17 @@ typedef int32_t mtt_pos;
 #define MTT_MUL_SS(a, b) mtt_fx_mulq((a), (b), 28)
 #define MTT_DIV_SI(a, d, S, Si) mtt_fx_div((a), (d), -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si))
 #define MTT_MUL_K(a, b) mtt_fx_mulq((a), (b), 28)
+/* d^2 = nu' S^-1 nu (Q24, saturated: a distance beyond 128 is outside
+ * every gate): fx_cov.c. */
+#define MTT_MAHAL2(Si, nx, ny) mtt_fx_mahal2((Si), (nx), (ny))
+/* The gate (gate.c, docs/FIXED_POINT.md §4): lambda V_G and p / lambda as
+ * Q16 ratios of the declared clutter density, the slice half-width as an
+ * upper bound in the position format. */
+#define MTT_ABS(x) (((x) < 0) ? -(x) : (x))
+#define MTT_GATE_AREA(gamma, det, S, dens) mtt_fx_gate_area((gamma), (det), (S), (dens))
+#define MTT_GATE_WIDTH(gamma, S, k) mtt_fx_gate_width((gamma), (S), (k))
+#define MTT_GATE_PEAK(det, S, pg, dens) mtt_fx_gate_peak((det), (S), (pg), (dens))
+#define MTT_GATE_LIK(peak, d2) mtt_fx_gate_lik((peak), (d2))
 
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
@@ -246,6 +257,12 @@ typedef mtt_real mtt_pos;
 #define MTT_MUL_SS(a, b) ((a) * (b))
 #define MTT_DIV_SI(a, d, S, Si) ((a) / (d))
 #define MTT_MUL_K(a, b) ((a) * (b))
+#define MTT_MAHAL2(Si, nx, ny) ((Si)[0] * (nx) * (nx) + MTT_R(2.0) * (Si)[1] * (nx) * (ny) + (Si)[2] * (ny) * (ny))
+#define MTT_ABS(x) mtt_fabs(x)
+#define MTT_GATE_AREA(gamma, det, S, dens) mtt_gate_volume((gamma), (det))
+#define MTT_GATE_WIDTH(gamma, S, k) mtt_sqrt((gamma) * (S)[k])
+#define MTT_GATE_PEAK(det, S, pg, dens) mtt_gate_likelihood(MTT_R(0.0), (det), (pg))
+#define MTT_GATE_LIK(peak, d2) ((peak) * mtt_exp(MTT_R(-0.5) * (d2)))
 
 /* Finite test without isfinite(), whose float overloads some freestanding
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
