@@ -348,6 +348,13 @@ int mtt_split_joint(mtt_split_assoc *as);
 int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
                      const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
                      mtt_split_cov Ps);
+/* Model 5's velocity impulse over dt (ALGORITHMS.md §14.3 [CHOICE]): a
+ * velocity change of standard deviation dv, per axis the blocks position
+ * dv^2 dt^2 / 2, cross dv^2 dt / 2, velocity dv^2; with across only across
+ * the course (vx, vy): the blocks times n n', n the unit normal of the
+ * course (per axis when the speed is 0).  Q's 4 x 4 cv part (position
+ * first, then velocity), 0 beyond. */
+void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q);
 /* Decoupling test [S3] eq. 27 on a stacked prediction: *d2 = (z1 - z2)'
  * (S1 + S2)^-1 (z1 - z2); returns 1 when d2 >= c (decoupled), 0 when not,
  * -1 on invalid input. */

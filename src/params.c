@@ -42,6 +42,7 @@
 #define MTT_FX_FRAC_split_p52 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
 #define PDEF(member, x) MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member)
 #define PBOUND(member, x)                                                                          \
     (((x) > 0 && MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member) == 0) ? 1                                \
@@ -183,10 +184,15 @@ mtt_status mtt_params_default(mtt_params *p)
      * without a second target falls back soon (p52), split targets seldom
      * recombine (p62) */
     p->split = 0;
-    p->split_p25 = PDEF(split_p25, 0.05);
+    p->split_p25 = PDEF(split_p25, 0.1);
     p->split_p52 = PDEF(split_p52, 0.1);
     p->split_p62 = PDEF(split_p62, 0.1);
     p->split_dv = PDEF(split_dv, 0.0);
+#if MTT_WITH_SPLIT
+    p->split_confirm = PDEF(split_confirm, 0.97);
+    p->split_across = 1;
+    p->split_decouple_r = 0;
+#endif
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;
     return MTT_OK;

@@ -77,7 +77,13 @@ extern const char *const mtt_model_names[3];
     REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL,                                            \
          "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)") \
     REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                     \
-         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)")
+         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)") \
+    REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                           \
+         "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
+    FLAG("split_across", split_across,                                                            \
+         "with `split`: true: the split's velocity change (split_dv) is across the course only, the \"just split\" model's gate is widened across it; false: in every direction (§14.3)") \
+    FLAG("split_decouple_r", split_decouple_r,                                                    \
+         "with `split`: true: the decoupling test of [S3] eq. 27 on S_1 + S_2 (the halves' predicted measurements, R included); false: on P_11 + P_22 (the halves' position estimates), which decouples a scan or two earlier (§14.3)")
 #else
 #define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 #endif

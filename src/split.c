@@ -640,6 +640,38 @@ int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_s
     return mixed_update(2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
 }
 
+/* ---- model 5's velocity impulse ---- */
+
+void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q)
+{
+    const mtt_real v = mtt_sqrt(vx * vx + vy * vy);
+    const mtt_real q = dv * dv;
+    mtt_real qb[2][2], D[2][2];
+    int a, b;
+    /* per axis: position q dt^2 / 2, cross q dt / 2, velocity q */
+    qb[0][0] = MTT_R(0.5) * q * dt * dt;
+    qb[0][1] = MTT_R(0.5) * q * dt;
+    qb[1][0] = qb[0][1];
+    qb[1][1] = q;
+    /* the directions: every axis (D = I), or across the course (D = n n') */
+    D[0][0] = MTT_R(1.0);
+    D[0][1] = MTT_R(0.0);
+    D[1][0] = MTT_R(0.0);
+    D[1][1] = MTT_R(1.0);
+    if (across && v > MTT_R(0.0)) {
+        const mtt_real nx = -vy / v, ny = vx / v;
+        D[0][0] = nx * nx;
+        D[0][1] = nx * ny;
+        D[1][0] = nx * ny;
+        D[1][1] = ny * ny;
+    }
+    for (a = 0; a < MTT_MAX_STATE; ++a) {
+        for (b = 0; b < MTT_MAX_STATE; ++b) {
+            Q[a][b] = (a < 4 && b < 4) ? qb[a / 2][b / 2] * D[a % 2][b % 2] : MTT_R(0.0);
+        }
+    }
+}
+
 /* ---- decoupling and conversion ---- */
 
 int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],

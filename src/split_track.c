@@ -37,14 +37,20 @@
  * mtt_split_decouple (d² >= 9.21) and μ_5 + μ_6 >= 0.9 after the update
  * [CHOICE: tuned on seeds 1000+; 0.5 decouples clutter-driven splits in
  * crossing3], the updated stacked state of model 6 is separated.  The test
- * reads the updated stacked estimate (ẑ_t = H x_t, S_t = H P_tt H' + R)
- * [CHOICE]: [S3] tests the prediction, which decides on the previous
- * scan's evidence and reports the child one scan later.  Separated: the parent's every
+ * reads the updated stacked estimate (ẑ_t = H x_t) [CHOICE]: [S3] tests
+ * the prediction, which decides on the previous scan's evidence and
+ * reports the child one scan later.  Its covariance is H P_tt H' (the
+ * halves' position estimates are apart at 99 %) [CHOICE], or with
+ * split_decouple_r [S3]'s S_t = H P_tt H' + R (the halves' measurements
+ * would be apart): R adds 2 R to the sum, which at 10 m noise held the
+ * decoupling until the halves were 40 to 60 m apart.  Separated: the parent's every
  * model takes (x_1, P_11) as its common part, and a new track (fresh
  * identity, parent recorded) starts from (x_2, P_22) in every model
  * (mtt_imm_seed_track), existence P_parent (μ_5 + μ_6) [CHOICE: the
  * probability that the split happened and the parent exists], confirmed at
- * once when that reaches confirm_threshold (and the parent is confirmed):
+ * once when that reaches split_confirm (and the parent is confirmed) [CHOICE:
+ * a rule of its own, the split's evidence in place of the ordinary
+ * confirm_threshold]:
  * a confident split is reported at once, a doubtful one starts tentative
  * and is confirmed or deleted by the ordinary rule (ALGORITHMS.md §12.4).
  * Only confirmed tracks carry the split modes (a tentative track is not
@@ -176,6 +182,7 @@ static uint16_t split_candidates(mtt_tracker *trk, uint16_t ti, const mtt_split_
 static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, mtt_real dt,
                        const mtt_real w[2], int *dec)
 {
+    static const mtt_real no_noise[3] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
     mtt_split_scratch *sc = &trk->split_scr;
     const mtt_params *p = &trk->par;
     const mtt_track_frame *tf = &trk->tf[ti];
@@ -202,8 +209,10 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
         mtt_split_update(&sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
-    /* [CHOICE] on the updated stacked state (the header) */
-    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, trk->R, MTT_SPLIT_CHI2_99, &d2) == 1;
+    /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
+     * split_decouple_r (the header) */
+    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, p->split_decouple_r ? trk->R : no_noise,
+                              MTT_SPLIT_CHI2_99, &d2) == 1;
     return sc->as.lik;
 }
 
@@ -249,9 +258,10 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
 
 /* Model 5 of track ti into sc->x5, sc->P5; returns Λ_5 (0 with fewer than
  * 2 measurements in its gate).  Its prediction is the cv model's plus the
- * split's velocity impulse: P̄_5 = P̄_cv + Q(dt, split_dv² / dt), white
- * acceleration over the interval whose velocity variance is split_dv²
- * [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
+ * split's velocity impulse: P̄_5 = P̄_cv + Q_s, per axis split_dv² [dt²/2,
+ * dt/2; dt/2, 1] [CHOICE], with split_across only across the cv model's course
+ * (mtt_split_impulse_q: the gate is not widened along the course, where a
+ * split does not separate the halves) [CHOICE]; its validated set is its own gate; β_j ∝ N(z_j; ẑ_5, S_5)
  * (only their order and ratios matter, §14.3 model 5); the impulse is then
  * taken out of the parent half (impulse_to_child). */
 static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -265,7 +275,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
     uint16_t j, m;
     int a, b;
-    mtt_motion_q(dt, p->split_dv * p->split_dv / dt, Q);
+    mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], Q);
     for (a = 0; a < MTT_MAX_STATE; ++a) {
         for (b = 0; b < MTT_MAX_STATE; ++b) {
             P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? Q[a][b] : MTT_R(0.0));
@@ -327,7 +337,7 @@ static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
         return -1;
     }
     ci = mtt_track_append(trk, x2, P2, t->existence * ps,
-                          t->confirmed && t->existence * ps >= trk->par.confirm_threshold, 1);
+                          t->confirmed && t->existence * ps >= trk->par.split_confirm, 1);
     if (ci < 0) {
         trk->stats.last.split_dropped++;
         return -1;

@@ -499,6 +499,46 @@ static void test_split_no_measurement(void)
     TEST_ASSERT_EQUAL_INT(-1, mtt_split_joint(&as));
 }
 
+/* ---- model 5's velocity impulse ---- */
+
+/* dv = 5, dt = 2: per axis position dv^2 dt^2 / 2 = 50, cross dv^2 dt / 2
+ * = 25, velocity dv^2 = 25.  Across the course (3, 4)/5 the normal is
+ * (-0.8, 0.6): each block times n n' = [0.64 -0.48; -0.48 0.36], nothing
+ * along the course. */
+static void test_impulse_q(void)
+{
+    mtt_cov Q;
+    /* along the course in position and in velocity */
+    const mtt_real u[4] = {MTT_R(0.6), MTT_R(0.8), MTT_R(0.6), MTT_R(0.8)};
+    int a, b;
+    mtt_split_impulse_q(MTT_R(2.0), MTT_R(5.0), 0, MTT_R(3.0), MTT_R(4.0), Q);
+    TV_ASSERT_REAL(50.0, Q[0][0]);
+    TV_ASSERT_REAL(50.0, Q[1][1]);
+    TV_ASSERT_REAL(0.0, Q[0][1]);
+    TV_ASSERT_REAL(25.0, Q[0][2]);
+    TV_ASSERT_REAL(25.0, Q[3][3]);
+    mtt_split_impulse_q(MTT_R(2.0), MTT_R(5.0), 1, MTT_R(3.0), MTT_R(4.0), Q);
+    TV_ASSERT_REAL(0.64 * 50.0, Q[0][0]);
+    TV_ASSERT_REAL(-0.48 * 50.0, Q[0][1]);
+    TV_ASSERT_REAL(0.36 * 50.0, Q[1][1]);
+    TV_ASSERT_REAL(0.64 * 25.0, Q[0][2]);
+    TV_ASSERT_REAL(-0.48 * 25.0, Q[1][2]);
+    TV_ASSERT_REAL(0.36 * 25.0, Q[3][3]);
+    for (a = 0; a < 4; ++a) { /* Q u = 0 and Q symmetric: no impulse along the course */
+        mtt_real s = MTT_R(0.0);
+        for (b = 0; b < 4; ++b) {
+            s += Q[a][b] * u[b];
+            TV_ASSERT_REAL(Q[b][a], Q[a][b]);
+        }
+        TEST_ASSERT_TRUE(mtt_fabs(s) < MTT_R(1e-4)); /* against entries of 50: rounding only */
+    }
+    /* at rest there is no course: per axis */
+    mtt_split_impulse_q(MTT_R(2.0), MTT_R(5.0), 1, MTT_R(0.0), MTT_R(0.0), Q);
+    TV_ASSERT_REAL(50.0, Q[1][1]);
+    TV_ASSERT_REAL(0.0, Q[0][1]);
+    TV_ASSERT_REAL(0.0, Q[1][2]);
+}
+
 /* ---- decoupling and conversion ---- */
 
 static void test_decouple_reference(void)
@@ -663,6 +703,7 @@ int main(void)
     RUN_TEST(test_split_update_independent);
     RUN_TEST(test_split_no_measurement);
     RUN_TEST(test_split_random_properties);
+    RUN_TEST(test_impulse_q);
     RUN_TEST(test_decouple_reference);
     RUN_TEST(test_decouple_boundary);
     RUN_TEST(test_separate);

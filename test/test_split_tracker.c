@@ -2,7 +2,8 @@
  * (ALGORITHMS.md §14.3, src/split_track.c): a hand-built split (one seeded
  * track, two diverging measurement streams) spawns exactly one child that
  * records its parent; a target that does not split never spawns; the
- * decoupling test at its threshold (d² = 9.2103 just above and just below);
+ * decoupling test at its threshold (d² = 9.2103 just above and just below),
+ * on P_11 + P_22 (the default) and on S_1 + S_2 (split_decouple_r);
  * the settings that refuse split. */
 #include <math.h>
 #include <string.h>
@@ -122,14 +123,17 @@ static void test_a_target_that_does_not_split_never_spawns(void)
 /* A track in the "split" mode (μ_6 = 1) with the halves dx apart, P_tt =
  * diag(4, 4, 1, 1), no cross covariance, equal velocities, then one frame
  * (dt = 1) without measurements: the stacked estimate is the prediction,
- * S_t = 4 + 1 + q/3 + r per axis, d² = dx² / (2 S).  PD 0.5 and p62 = 0.001
- * keep μ_6 about 0.998 (>= 0.9).  Returns the tracks that split off. */
-static uint32_t spawn_at(double factor)
+ * S_t = 4 + 1 + q/3 per axis (+ r = 1 with split_decouple_r, [S3] eq. 27),
+ * d² = dx² / (2 S).  PD 0.5 and p62 = 0.001 keep μ_6 about 0.998 (>= 0.9).
+ * Returns the tracks that split off. */
+static mtt_real child_confirm = MTT_R(0.97); /* split_confirm of spawn_at */
+
+static uint32_t spawn_at(double factor, int with_r)
 {
     mtt_params p;
     const mtt_real x0[4] = {0, 0, 1, 0};
     const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const double q = 0.05, S = 4.0 + 1.0 + q / 3.0 + 1.0;
+    const double q = 0.05, S = 4.0 + 1.0 + q / 3.0 + (with_r ? 1.0 : 0.0);
     const double dx = sqrt(9.2103403719761836 * 2.0 * S) * factor;
     mtt_stats st;
     mtt_split_slot *sl;
@@ -137,6 +141,8 @@ static uint32_t spawn_at(double factor)
     split_params(&p);
     p.pd = MTT_R(0.5);
     p.split_p62 = MTT_R(0.001);
+    p.split_decouple_r = with_r;
+    p.split_confirm = child_confirm;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
@@ -161,12 +167,39 @@ static uint32_t spawn_at(double factor)
 static void test_decoupling_threshold_edge(void)
 {
     mtt_track_view v;
-    TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001)); /* d² = 9.2121 >= 9.2103: two tracks */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
-    TEST_ASSERT_EQUAL_UINT32(0, v.parent);         /* the child of track 0 ... */
-    TEST_ASSERT_EQUAL_UINT32(1, v.id);             /* ... with the next identity */
-    TEST_ASSERT_EQUAL_UINT32(0, spawn_at(0.9999)); /* d² = 9.2085: still one */
-    TEST_ASSERT_EQUAL_UINT8(0, TV_SPLIT_SLOT(&trk, 0)); /* and still in the split mode */
+    int with_r;
+    for (with_r = 0; with_r <= 1; ++with_r) {
+        TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001, with_r)); /* d² = 9.2121 >= 9.2103: two tracks */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
+        TEST_ASSERT_EQUAL_UINT32(0, v.parent);                 /* the child of track 0 ... */
+        TEST_ASSERT_EQUAL_UINT32(1, v.id);                     /* ... with the next identity */
+        TEST_ASSERT_EQUAL_UINT32(0, spawn_at(0.9999, with_r)); /* d² = 9.2085: still one */
+        TEST_ASSERT_EQUAL_UINT8(0, TV_SPLIT_SLOT(&trk, 0));    /* and still in the split mode */
+    }
+    /* The halves apart by the estimate test's edge (S = 5.017 per axis)
+     * are not yet apart by [S3]'s (S = 6.017: d² = 7.68). */
+    TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.0001, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, spawn_at(sqrt(5.0 + 0.05 / 3.0) / sqrt(6.0 + 0.05 / 3.0) * 1.0001, 1));
+}
+
+/* The child's existence at decoupling is P_parent μ_6, about 0.959 in
+ * spawn_at (the parent's existence falls to 0.961 on the empty frame):
+ * confirmed at once with split_confirm 0.95, tentative with 0.97. */
+static void test_child_confirmed_by_split_confirm(void)
+{
+    mtt_track_view parent, child;
+    const mtt_real lims[2] = {MTT_R(0.95), MTT_R(0.97)};
+    int k;
+    for (k = 0; k < 2; ++k) {
+        child_confirm = lims[k];
+        TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.5, 0));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &parent));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &child));
+        TEST_ASSERT_TRUE(child.existence > MTT_R(0.95) && child.existence < MTT_R(0.97));
+        TEST_ASSERT_EQUAL_UINT8(1, parent.confirmed);
+        TEST_ASSERT_EQUAL_UINT8(k == 0 ? 1 : 0, child.confirmed);
+    }
+    child_confirm = MTT_R(0.97);
 }
 
 static void test_split_needs_imm_with_a_cv_model(void)
@@ -208,6 +241,7 @@ int main(void)
     RUN_TEST(test_a_hand_built_split_spawns_one_child_with_its_parent);
     RUN_TEST(test_a_target_that_does_not_split_never_spawns);
     RUN_TEST(test_decoupling_threshold_edge);
+    RUN_TEST(test_child_confirmed_by_split_confirm);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);

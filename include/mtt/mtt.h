@@ -182,6 +182,13 @@ typedef struct mtt_params {
     mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
     mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */
     mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std) */
+#if MTT_WITH_SPLIT
+    mtt_real split_confirm;         /**< a split-off track's existence at or above: confirmed at once */
+    int split_across;               /**< nonzero: split_dv across the course only (ALGORITHMS.md §14.3) */
+    int split_decouple_r;           /**< nonzero: the decoupling test on S_1 + S_2 ([S3] eq. 27);
+                                         0: on P_11 + P_22 (ALGORITHMS.md §14.3 [CHOICE]); only in a
+                                         build with the split (the firmware's layout unchanged) */
+#endif
     mtt_cycle_fn cycle_counter; /**< optional; when set, stats hold per-stage cycles */
     void *cycle_ctx;            /**< passed to cycle_counter */
 } mtt_params;
