@@ -170,6 +170,9 @@ void mtt_contest_frame(mtt_tracker *trk);
 #if MTT_WITH_IMM
 /* imm_transition and imm_initial: docs/FORMATS.md's defaults for r models. */
 void mtt_params_imm_reset(mtt_params *p, uint8_t r);
+/* Index of the first cv model of imm_models, imm_n_models when there is none
+ * (the model the split modes build on, ALGORITHMS.md §14.3). */
+uint8_t mtt_params_cv_model(const mtt_params *p);
 #endif
 
 /* ---- ipda.c: IPDA (ALGORITHMS.md §6) ---- */

@@ -198,16 +198,15 @@ mtt_status mtt_params_default(mtt_params *p)
     return MTT_OK;
 }
 
-/* 1 when imm_models has a cv entry (the model the split modes build on). */
-static int has_cv(const mtt_params *p)
+uint8_t mtt_params_cv_model(const mtt_params *p)
 {
     uint8_t j;
     for (j = 0; j < p->imm_n_models && j < MTT_MAX_MODELS; ++j) {
         if (p->imm_model[j] == MTT_MODEL_CV) {
-            return 1;
+            break;
         }
     }
-    return 0;
+    return j;
 }
 
 /* Range rules of mtt_params_check: the REAL rows of params_table.h,
@@ -298,7 +297,8 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
         st = MTT_ERR_UNSUPPORTED;
     }
-    if (bad == NULL && p->split && (!MTT_WITH_SPLIT || p->motion != MTT_MOTION_IMM || !has_cv(p))) {
+    if (bad == NULL && p->split &&
+        (!MTT_WITH_SPLIT || p->motion != MTT_MOTION_IMM || mtt_params_cv_model(p) >= p->imm_n_models)) {
         bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
         st = MTT_ERR_UNSUPPORTED;
     }

@@ -67,18 +67,6 @@
 #define N1 MTT_STATE_N          /* the split modes are built on the cv model */
 #define NS (2 * MTT_STATE_N)
 
-/* Index of the first cv model of imm_models (mtt_params_check: there is one). */
-static uint8_t cv_model(const mtt_params *p)
-{
-    uint8_t j;
-    for (j = 0; j + 1u < p->imm_n_models; ++j) {
-        if (p->imm_model[j] == MTT_MODEL_CV) {
-            break;
-        }
-    }
-    return j;
-}
-
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
  * states with weights w[0] (mode 5) and w[1] (mode 6), Σ w = 1. */
 static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split_state x0,
@@ -198,7 +186,7 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     }
     F[0][2] = dt;
     F[1][3] = dt;
-    mtt_motion_q(dt, p->imm_psd[cv_model(p)], Q);
+    mtt_motion_q(dt, p->imm_psd[mtt_params_cv_model(p)], Q);
     if (mtt_split_predict(N1, F, Q, sc->x0, sc->P0, sc->xp, sc->Pp) != 0) {
         return MTT_R(0.0);
     }
@@ -240,7 +228,7 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
 {
     mtt_split_scratch *sc = &trk->split_scr;
     mtt_track_frame *tf = &trk->tf[ti];
-    const uint8_t cm = cv_model(&trk->par);
+    const uint8_t cm = mtt_params_cv_model(&trk->par);
     mtt_real lik;
     int a, b;
     if (mtt_split_just(N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
@@ -269,7 +257,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_split_scratch *sc = &trk->split_scr;
     const mtt_params *p = &trk->par;
     mtt_track_frame *tf = &trk->tf[ti];
-    const uint8_t cm = cv_model(p);
+    const uint8_t cm = mtt_params_cv_model(p);
     mtt_cov P5, Q;
     mtt_real K[MTT_MAX_STATE][2];
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
@@ -373,7 +361,7 @@ static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_split_slot *sl = (t->split_slot != MTT_SPLIT_NONE) ? &trk->split[t->split_slot] : NULL;
     const mtt_real m5 = (sl != NULL) ? sl->mu[0] : MTT_R(0.0);
     const mtt_real m6 = (sl != NULL) ? sl->mu[1] : MTT_R(0.0);
-    const mtt_real c5 = p->split_p25 * (MTT_R(1.0) - m5 - m6) * trk->tf[ti].cbar[cv_model(p)];
+    const mtt_real c5 = p->split_p25 * (MTT_R(1.0) - m5 - m6) * trk->tf[ti].cbar[mtt_params_cv_model(p)];
     const mtt_real c6 = (MTT_R(1.0) - p->split_p52) * m5 + (MTT_R(1.0) - p->split_p62) * m6;
     const mtt_real cs = MTT_R(1.0) - c5 - c6;
     mtt_real lam_s, lam5, lam6 = MTT_R(0.0), c, mu5, mu6;
