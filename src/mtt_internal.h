@@ -302,7 +302,10 @@ void mtt_track_manage(mtt_tracker *trk);
 #if MTT_WITH_SPLIT
 /* chi-square 0.99 quantile, 2 degrees of freedom: -2 ln 0.01 ([S3] eq. 27) */
 #define MTT_SPLIT_CHI2_99 MTT_R(9.2103403719761836)
-/* mtt_split_state, mtt_split_cov, mtt_split_assoc: mtt/state.h (tracker scratch) */
+/* mtt_split_state, mtt_split_cov, mtt_split_assoc, mtt_split_work: mtt/state.h
+ * (tracker scratch).  mtt_split_predict, mtt_split_just, mtt_split_update
+ * and mtt_split_separate take their work matrices from wk (the caller's: the split stage's
+ * scratch), so that no 12 x 12 matrix is on the stack. */
 
 /* One target's (x, P) as a stacked state: [x; x], [[P, P], [P, P]] (the
  * two targets of a split start from the one estimate, [S3] eq. 5, 11). */
@@ -310,9 +313,9 @@ int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], 
                     mtt_split_cov Ps);
 /* Stacked prediction with the model's F and Q (n x n): xps = blockdiag(F,
  * F) xs, Pps = F^s Ps F^s' + blockdiag(Q, Q), symmetrised. */
-int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
-                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
-                      mtt_split_cov Pps);
+int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE],
+                      mtt_real Q[][MTT_MAX_STATE], const mtt_split_state xs, mtt_split_cov Ps,
+                      mtt_split_state xps, mtt_split_cov Pps);
 /* Model 5 "just split" from one prediction (xp, Pp) and the m >= 2
  * validated measurements z with their PDA betas: clusters around the two
  * largest betas (Mahalanobis with S; cluster[j] = 0 parent, 1 child), betas
@@ -321,10 +324,10 @@ int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_M
  * prod_i (V/m_i) sum_{j in I_i} N_j (eq. 13 with V^-(m_i - 1), over V^-m);
  * vg = V, the validation volume (1/lambda for a known clutter density
  * lambda: the m_i - 1 others are clutter of density lambda). */
-int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
-                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
-                   mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
-                   mtt_real *lik);
+int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
+                   const mtt_real R[3], uint16_t m, mtt_real z[][2], const mtt_real beta[],
+                   mtt_real vg, mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[],
+                   mtt_real beta_n[], mtt_real *lik);
 
 /* Per-target gates (d^2 <= gamma with S_t = H P_tt H' + R) and the event
  * factors a, b.  lam = 0: non-parametric ([S3] eq. 14, V = vg; lik is the
@@ -348,8 +351,8 @@ mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j
 int mtt_split_joint(mtt_split_assoc *as);
 /* Coupled update of the stacked state (ALGORITHMS.md §14.3, corrected
  * bracket of [S3] eq. 25), after mtt_split_joint. */
-int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
-                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
+int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps,
+                     mtt_split_cov Pps, const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
                      mtt_split_cov Ps);
 /* Model 5's velocity impulse over dt (ALGORITHMS.md §14.3 [CHOICE]): a
  * velocity change of standard deviation dv, per axis the blocks position
@@ -366,8 +369,9 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
 /* A decoupled split state as two independent track states: (x1, P1) the
  * parent's, (x2, P2) the child's first state; the cross covariance is
  * dropped.  -1 when a half is not positive definite. */
-int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
-                       mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE]);
+int mtt_split_separate(mtt_split_work *wk, uint8_t n, const mtt_split_state xs, mtt_split_cov Ps,
+                       mtt_real x1[], mtt_real P1[][MTT_MAX_STATE], mtt_real x2[],
+                       mtt_real P2[][MTT_MAX_STATE]);
 /* The split stage of every confirmed IMM track after the update (split =
  * true; split_track.c): mode probabilities of the split modes, decoupling
  * into a child track. */

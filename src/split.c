@@ -31,10 +31,10 @@
 #define NS MTT_SPLIT_STATE
 #define QMAX 4 /* measurement size of the stacked model: 2 targets x 2 */
 
-/* Inverse of the symmetric positive definite q x q matrix S (q <= QMAX). */
-static int inv_spd(int q, mtt_cov S, mtt_real Si[][QMAX])
+/* Inverse of the symmetric positive definite q x q matrix S (q <= QMAX);
+ * L: the caller's room for its LDL' factor. */
+static int inv_spd(int q, mtt_cov S, mtt_cov L, mtt_real Si[][QMAX])
 {
-    mtt_cov L;
     mtt_state d;
     mtt_real y[QMAX];
     int i, k, c;
@@ -107,16 +107,18 @@ static mtt_real gauss2(mtt_real d2, mtt_real det)
  *   P = beta0 Pp + (1 - beta0) A Pp A' + W [(1 - beta0) Rq + spread] W'
  * (ALGORITHMS.md §6 and §14.3 in one form; beta0 = 0 and spread = 0 is the
  * Joseph-form Kalman update of ALGORITHMS.md §3).  APA (may be NULL)
- * receives A Pp A'.  Returns -1 when S is not positive definite (nothing
- * written). */
-static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_real Pp[][NS],
-                        mtt_real Rq[][QMAX], mtt_real beta0, const mtt_real nub[],
-                        mtt_real spread[][QMAX], mtt_real x[], mtt_real P[][NS],
-                        mtt_real APA[][NS])
+ * receives A Pp A'.  W, A and A Pp live in wk (not the stack).  Returns
+ * -1 when S is not positive definite (nothing written). */
+static int mixed_update(mtt_split_work *wk, int N, int q, const int sel[], const mtt_real xp[],
+                        mtt_real Pp[][NS], mtt_real Rq[][QMAX], mtt_real beta0,
+                        const mtt_real nub[], mtt_real spread[][QMAX], mtt_real x[],
+                        mtt_real P[][NS], mtt_real APA[][NS])
 {
-    mtt_cov S; /* q x q used, q <= QMAX <= MTT_MAX_STATE */
+    mtt_real(*S)[MTT_MAX_STATE] = wk->S; /* q x q used, q <= QMAX <= MTT_MAX_STATE */
     mtt_real Si[QMAX][QMAX], M[QMAX][QMAX];
-    mtt_real W[NS][QMAX], A[NS][NS], AP[NS][NS], C[NS][NS];
+    mtt_real(*W)[QMAX] = wk->W;
+    mtt_real(*A)[NS] = wk->A;
+    mtt_real(*AP)[NS] = wk->AP;
     const mtt_real w = MTT_R(1.0) - beta0;
     int i, k, a, b;
     for (a = 0; a < q; ++a) {
@@ -124,7 +126,7 @@ static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_
             S[a][b] = MTT_R(0.5) * (Pp[sel[a]][sel[b]] + Pp[sel[b]][sel[a]]) + Rq[a][b];
         }
     }
-    if (inv_spd(q, S, Si) != 0) {
+    if (inv_spd(q, S, wk->L, Si) != 0) {
         return -1;
     }
     for (i = 0; i < N; ++i) {
@@ -183,8 +185,10 @@ static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_
                 }
                 wmw += W[i][a] * s;
             }
-            C[i][k] = apa;
-            C[k][i] = apa;
+            if (APA != NULL) {
+                APA[i][k] = apa;
+                APA[k][i] = apa;
+            }
             P[i][k] = beta0 * MTT_R(0.5) * (Pp[i][k] + Pp[k][i]) + w * apa + wmw;
             P[k][i] = P[i][k];
         }
@@ -195,13 +199,6 @@ static int mixed_update(int N, int q, const int sel[], const mtt_real xp[], mtt_
             s += W[i][a] * nub[a];
         }
         x[i] = s;
-    }
-    if (APA != NULL) {
-        for (i = 0; i < N; ++i) {
-            for (k = 0; k < N; ++k) {
-                APA[i][k] = C[i][k];
-            }
-        }
     }
     return 0;
 }
@@ -235,11 +232,11 @@ int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], 
     return 0;
 }
 
-int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE],
-                      const mtt_split_state xs, mtt_split_cov Ps, mtt_split_state xps,
-                      mtt_split_cov Pps)
+int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE],
+                      mtt_real Q[][MTT_MAX_STATE], const mtt_split_state xs, mtt_split_cov Ps,
+                      mtt_split_state xps, mtt_split_cov Pps)
 {
-    mtt_real FP[NS][NS];
+    mtt_real(*FP)[NS] = wk->AP;
     int i, k, l, ti, tk;
     if (!n_ok(n)) {
         return -1;
@@ -296,15 +293,20 @@ int mtt_split_predict(uint8_t n, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_M
 
 /* ---- model 5: just split ---- */
 
-int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE], const mtt_real R[3],
-                   uint16_t m, mtt_real z[][2], const mtt_real beta[], mtt_real vg,
-                   mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[], mtt_real beta_n[],
-                   mtt_real *lik)
+int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
+                   const mtt_real R[3], uint16_t m, mtt_real z[][2], const mtt_real beta[],
+                   mtt_real vg, mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[],
+                   mtt_real beta_n[], mtt_real *lik)
 {
-    mtt_real Pq[NS][NS], S[3], Si[3], det, xh[2][NS], Ph[2][NS][NS], P12[NS][NS];
-    mtt_real nu[MTT_MAX_SPLIT_MEAS][2], bn[MTT_MAX_SPLIT_MEAS], bs[2], gs[2];
+    mtt_real(*Pq)[NS] = wk->Pq;
+    mtt_real(*xh)[NS] = wk->xh;
+    mtt_real(*Ph)[NS][NS] = wk->Ph;
+    mtt_real(*P12)[NS] = wk->P12;
+    mtt_real(*nu)[2] = wk->nu;
+    mtt_real *bn = wk->bn;
+    uint8_t *cl = wk->cl;
+    mtt_real S[3], Si[3], det, bs[2], gs[2];
     mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
-    uint8_t cl[MTT_MAX_SPLIT_MEAS];
     uint16_t mi[2] = {0u, 0u};
     uint16_t j, c[2] = {0u, 0u};
     static const int sel[2] = {0, 1};
@@ -380,7 +382,7 @@ int mtt_split_just(uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
         Rq[1][1] = R[2];
         /* Step 5: the PDA update of the half (beta_0 = 0): x_h and P_hh;
          * A Pp A' is the cross covariance P_12 of [S3] eq. 12. */
-        if (mixed_update(n, 2, sel, xp, Pq, Rq, MTT_R(0.0), nub, sp, xh[h], Ph[h], P12) != 0) {
+        if (mixed_update(wk, n, 2, sel, xp, Pq, Rq, MTT_R(0.0), nub, sp, xh[h], Ph[h], P12) != 0) {
             return -1;
         }
     }
@@ -411,8 +413,7 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
                          uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
 {
-    mtt_real S[3], Si[3], det;
-    mtt_real a[2][MTT_MAX_SPLIT_MEAS];
+    mtt_real S[3], Si[2][3], det[2];
     uint16_t j;
     int t;
     if (!n_ok(n) || m > MTT_MAX_SPLIT_MEAS || !(pd >= MTT_R(0.0) && pd <= MTT_R(1.0)) ||
@@ -420,24 +421,21 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
         !mtt_isfinite(lam) || (lam == MTT_R(0.0) && !(vg > MTT_R(0.0)))) {
         return -1;
     }
+    /* both innovation covariances first: on error nothing is written */
     for (t = 0; t < 2; ++t) {
-        const int o = t * (int)n;
-        if (innov2(Pps, o, R, S, Si, &det) != 0) {
+        if (innov2(Pps, t * (int)n, R, S, Si[t], &det[t]) != 0) {
             return -1;
-        }
-        for (j = 0u; j < m; ++j) {
-            const mtt_real d2 = quad2(Si, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
-            /* PD V N: the detection factor of [S3] eq. 14 times V (the
-             * ratio to V^-m), or PD N / lambda with a known clutter
-             * density; 0 outside the target's gate (not feasible). */
-            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, det) / lam : vg * gauss2(d2, det);
-            a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
         }
     }
     for (t = 0; t < 2; ++t) {
         const int o = t * (int)n;
         for (j = 0u; j < m; ++j) {
-            as->a[t][j] = a[t][j];
+            const mtt_real d2 = quad2(Si[t], z[j][0] - xps[o], z[j][1] - xps[o + 1]);
+            /* PD V N: the detection factor of [S3] eq. 14 times V (the
+             * ratio to V^-m), or PD N / lambda with a known clutter
+             * density; 0 outside the target's gate (not feasible). */
+            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, det[t]) / lam : vg * gauss2(d2, det[t]);
+            as->a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
             as->nu[t][j][0] = z[j][0] - xps[o];
             as->nu[t][j][1] = z[j][1] - xps[o + 1];
         }
@@ -475,7 +473,7 @@ int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_re
         S[a + 1][a] += R[1];
         S[a + 1][a + 1] += R[2];
     }
-    if (mtt_ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, Si) != 0) {
+    if (mtt_ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, L, Si) != 0) {
         return -1;
     }
     for (a = 0; a < QMAX; ++a) {
@@ -576,8 +574,8 @@ int mtt_split_joint(mtt_split_assoc *as)
     return 0;
 }
 
-int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
-                     const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
+int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps,
+                     mtt_split_cov Pps, const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
                      mtt_split_cov Ps)
 {
     const int16_t m = (int16_t)as->m;
@@ -637,7 +635,7 @@ int mtt_split_update(const mtt_split_assoc *as, const mtt_split_state xps, mtt_s
     Rq[2][3] = R[1];
     Rq[3][2] = R[1];
     Rq[3][3] = R[2];
-    return mixed_update(2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
+    return mixed_update(wk, 2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
 }
 
 /* ---- model 5's velocity impulse ---- */
@@ -677,8 +675,7 @@ void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_
 int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
                        mtt_real c, mtt_real *d2)
 {
-    mtt_real S1[3], S2[3], Si[3], det;
-    mtt_real sum[NS][NS];
+    mtt_real S1[3], S2[3], Si[3], det, sum[3]; /* sum: s11, s12, s22 */
     if (!n_ok(n)) {
         return -1;
     }
@@ -686,39 +683,40 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
         return -1;
     }
     /* (z1 - z2)' (S1 + S2)^-1 (z1 - z2), [S3] eq. 27 */
-    sum[0][0] = S1[0] + S2[0];
-    sum[0][1] = S1[1] + S2[1];
-    sum[1][1] = S1[2] + S2[2];
-    det = sum[0][0] * sum[1][1] - sum[0][1] * sum[0][1];
+    sum[0] = S1[0] + S2[0];
+    sum[1] = S1[1] + S2[1];
+    sum[2] = S1[2] + S2[2];
+    det = sum[0] * sum[2] - sum[1] * sum[1];
     if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
         return -1;
     }
-    Si[0] = sum[1][1] / det;
-    Si[1] = -sum[0][1] / det;
-    Si[2] = sum[0][0] / det;
+    Si[0] = sum[2] / det;
+    Si[1] = -sum[1] / det;
+    Si[2] = sum[0] / det;
     *d2 = quad2(Si, xps[0] - xps[n], xps[1] - xps[n + 1]);
     return (*d2 >= c) ? 1 : 0;
 }
 
-int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mtt_real x1[],
-                       mtt_real P1[][MTT_MAX_STATE], mtt_real x2[], mtt_real P2[][MTT_MAX_STATE])
+int mtt_split_separate(mtt_split_work *wk, uint8_t n, const mtt_split_state xs, mtt_split_cov Ps,
+                       mtt_real x1[], mtt_real P1[][MTT_MAX_STATE], mtt_real x2[],
+                       mtt_real P2[][MTT_MAX_STATE])
 {
-    mtt_cov B[2], L;
     mtt_state d;
     int i, k, h;
     if (!n_ok(n)) {
         return -1;
     }
     /* The halves, symmetrised; the cross covariance P_12 is dropped: from
-     * now on the two targets are filtered independently. */
+     * now on the two targets are filtered independently.  Both are checked
+     * (in wk) before anything is written. */
     for (h = 0; h < 2; ++h) {
         const int o = h * (int)n;
         for (i = 0; i < n; ++i) {
             for (k = 0; k < n; ++k) {
-                B[h][i][k] = MTT_R(0.5) * (Ps[o + i][o + k] + Ps[o + k][o + i]);
+                wk->S[i][k] = MTT_R(0.5) * (Ps[o + i][o + k] + Ps[o + k][o + i]);
             }
         }
-        if (mtt_ldl((int)n, B[h], L, d) != 0) {
+        if (mtt_ldl((int)n, wk->S, wk->L, d) != 0) {
             return -1;
         }
     }
@@ -726,8 +724,8 @@ int mtt_split_separate(uint8_t n, const mtt_split_state xs, mtt_split_cov Ps, mt
         x1[i] = xs[i];
         x2[i] = xs[n + i];
         for (k = 0; k < n; ++k) {
-            P1[i][k] = B[0][i][k];
-            P2[i][k] = B[1][i][k];
+            P1[i][k] = MTT_R(0.5) * (Ps[i][k] + Ps[k][i]);
+            P2[i][k] = MTT_R(0.5) * (Ps[n + i][n + k] + Ps[n + k][n + i]);
         }
     }
     return 0;

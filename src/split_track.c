@@ -174,27 +174,28 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     mtt_split_scratch *sc = &trk->split_scr;
     const mtt_params *p = &trk->par;
     const mtt_track_frame *tf = &trk->tf[ti];
-    mtt_cov F, Q;
+    mtt_real(*F)[MTT_MAX_STATE] = sc->F6; /* scratch: not the stack */
+    mtt_real(*Q)[MTT_MAX_STATE] = sc->Q6;
     mtt_real d2;
     uint16_t m;
     int a;
     *dec = 0;
     mix_stacked(sl, w, sc->x0, sc->P0);
-    memset(F, 0, sizeof F);
+    memset(sc->F6, 0, sizeof sc->F6);
     for (a = 0; a < N1; ++a) {
         F[a][a] = MTT_R(1.0);
     }
     F[0][2] = dt;
     F[1][3] = dt;
     mtt_motion_q(dt, p->imm_psd[mtt_params_cv_model(p)], Q);
-    if (mtt_split_predict(N1, F, Q, sc->x0, sc->P0, sc->xp, sc->Pp) != 0) {
+    if (mtt_split_predict(&sc->wk, N1, F, Q, sc->x0, sc->P0, sc->xp, sc->Pp) != 0) {
         return MTT_R(0.0);
     }
     m = split_candidates(trk, ti, sc->xp, sc->Pp);
     if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, trk->R, m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
                              tf->lambda, &sc->as) != 0 ||
         mtt_split_joint(&sc->as) != 0 ||
-        mtt_split_update(&sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
+        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
     /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
@@ -231,7 +232,7 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     const uint8_t cm = mtt_params_cv_model(&trk->par);
     mtt_real lik;
     int a, b;
-    if (mtt_split_just(N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
+    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
                        MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
         return; /* the impulse then stays in both halves */
     }
@@ -258,15 +259,15 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     const mtt_params *p = &trk->par;
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t cm = mtt_params_cv_model(p);
-    mtt_cov P5, Q;
+    mtt_real(*P5)[MTT_MAX_STATE] = sc->P5p; /* Q_s, then P̄_cv + Q_s (scratch: not the stack) */
     mtt_real K[MTT_MAX_STATE][2];
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
     uint16_t j, m;
     int a, b;
-    mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], Q);
+    mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], P5);
     for (a = 0; a < MTT_MAX_STATE; ++a) {
         for (b = 0; b < MTT_MAX_STATE; ++b) {
-            P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? Q[a][b] : MTT_R(0.0));
+            P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? P5[a][b] : MTT_R(0.0));
         }
     }
     if (mtt_kalman_innov_n(N1, P5, trk->R, S, Si, &det, K) != 0 || !(tf->lambda > MTT_R(0.0))) {
@@ -283,8 +284,9 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     for (j = 0; j < m; ++j) {
         sc->beta[j] = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1]));
     }
-    if (m < 2u || mtt_split_just(N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta, MTT_R(1.0) / tf->lambda,
-                                 sc->x5, sc->P5, sc->cluster, sc->beta_n, &lik) != 0) {
+    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta,
+                                 MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
+                                 &lik) != 0) {
         return MTT_R(0.0);
     }
     if (p->split_dv > MTT_R(0.0)) {
@@ -313,15 +315,14 @@ static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
 {
     mtt_split_scratch *sc = &trk->split_scr;
     mtt_track *t = &trk->tracks[ti];
-    mtt_state x1, x2;
-    mtt_cov P1, P2;
+    mtt_real *x1 = sc->xd[0], *x2 = sc->xd[1]; /* scratch: not the stack */
+    mtt_real(*P1)[MTT_MAX_STATE] = sc->Pd[0];
+    mtt_real(*P2)[MTT_MAX_STATE] = sc->Pd[1];
     uint8_t j, a, b;
     int ci;
-    memset(x1, 0, sizeof x1);
-    memset(x2, 0, sizeof x2);
-    memset(P1, 0, sizeof P1);
-    memset(P2, 0, sizeof P2);
-    if (mtt_split_separate(N1, sc->x0, sc->P0, x1, P1, x2, P2) != 0) {
+    memset(sc->xd, 0, sizeof sc->xd);
+    memset(sc->Pd, 0, sizeof sc->Pd);
+    if (mtt_split_separate(&sc->wk, N1, sc->x0, sc->P0, x1, P1, x2, P2) != 0) {
         return -1;
     }
     ci = mtt_track_append(trk, x2, P2, t->existence * ps,

@@ -35,6 +35,8 @@ static const mtt_real XPS[MTT_SPLIT_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(1
                                 MTT_R(112.0), MTT_R(47.0), MTT_R(12.0), MTT_R(-1.0)};
 static mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
                                   {MTT_R(106.0), MTT_R(52.0)}, {MTT_R(140.0), MTT_R(80.0)}};
+/* the split arithmetic's work matrices (the caller's, src/split.c) */
+static mtt_split_work wk;
 #define PD6 MTT_R(0.9)
 #define PG6 MTT_R(0.99)
 #define GAMMA MTT_R(9.210340371976182)
@@ -199,7 +201,7 @@ static void test_stack_predict(void)
     F[0][2] = dt;
     F[1][3] = dt;
     mtt_motion_q(dt, sw, Q);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_predict(4, F, Q, xs, Ps, xps, Pps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_predict(&wk, 4, F, Q, xs, Ps, xps, Pps));
     mtt_kalman_predict(dt, sw, XP, P, xk, Pk);
     for (h = 0; h < 2; ++h) {
         for (i = 0; i < 4; ++i) {
@@ -237,7 +239,7 @@ static void test_just_split_reference(void)
     mtt_real bn[5], lik = MTT_R(0.0);
     int j;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
                                             bn, &lik));
     for (j = 0; j < 5; ++j) {
         TEST_ASSERT_EQUAL_INT(ref5_cluster[j], cl[j]);
@@ -260,9 +262,9 @@ static void test_just_split_refuses(void)
     mtt_real bn[5] = {MTT_R(-1.0)}, lik = MTT_R(-1.0);
     prior1(P);
     /* one measurement: no split; n out of range; V not positive */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(4, XP, P, R, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(3, XP, P, R, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(4, XP, P, R, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 3, XP, P, R, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(7, cl[0]);
     TV_ASSERT_REAL(-1.0, lik);
 }
@@ -282,7 +284,7 @@ static void test_just_split_two(void)
     int h, i, k;
     double n1, n2;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(4, XP, P, R, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(1, cl[0]);
     TEST_ASSERT_EQUAL_INT(0, cl[1]);
     TV_ASSERT_REAL(1.0, bn[0]);
@@ -424,7 +426,7 @@ static void test_split_update_reference(void)
     TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
                                                   (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, XPS, Pps, R, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, Z6, xs, Ps));
     TV_ASSERT_VEC(ref6_xs, xs, 8);
     assert_cov8(ref6_Ps, Ps, "Ps");
     assert_psd(Ps, 8);
@@ -451,7 +453,7 @@ static void test_split_update_independent(void)
     TV_ASSERT_REAL(1.0, as.beta[0][0]);
     TV_ASSERT_REAL(1.0, as.beta[1][1]);
     TEST_ASSERT_TRUE(as.beta0 == MTT_R(0.0));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, xps, Pps, R, z, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, z, xs, Ps));
     for (t = 0; t < 2; ++t) {
         const int o = 4 * t;
         for (i = 0; i < 4; ++i) {
@@ -486,7 +488,7 @@ static void test_split_no_measurement(void)
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta0);
     TV_ASSERT_REAL((1.0 - 0.9 * 0.99) * (1.0 - 0.9 * 0.99), as.lik);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, XPS, Pps, R, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, Z6, xs, Ps));
     for (i = 0; i < 8; ++i) {
         TV_ASSERT_REAL(XPS[i], xs[i]);
         for (k = 0; k < 8; ++k) {
@@ -594,8 +596,8 @@ static void test_separate(void)
     int i, k;
     /* the model-5 result: parent = half 1 (largest beta), child = half 2 */
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_separate(4, xs, Ps, x1, P1, x2, P2));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_separate(&wk, 4, xs, Ps, x1, P1, x2, P2));
     for (i = 0; i < 4; ++i) {
         TV_ASSERT_REAL(ref5_xs[i], x1[i]);
         TV_ASSERT_REAL(ref5_xs[4 + i], x2[i]);
@@ -608,7 +610,7 @@ static void test_separate(void)
     /* a half that is not positive definite: refused, nothing written */
     Ps[5][5] = MTT_R(-1.0);
     x1[0] = MTT_R(-7.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_separate(4, xs, Ps, x1, P1, x2, P2));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_separate(&wk, 4, xs, Ps, x1, P1, x2, P2));
     TV_ASSERT_REAL(-7.0, x1[0]);
 }
 
@@ -674,7 +676,7 @@ static void test_split_random_properties(void)
             }
             TV_ASSERT_REAL(1.0, s);
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&as, xps, Pps, R, z, xs, Ps));
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, z, xs, Ps));
         assert_psd(Ps, 8);
         if (m >= 2u) {
             for (i = 0; i < 4; ++i) {
@@ -682,7 +684,7 @@ static void test_split_random_properties(void)
                     P[i][k] = Pps[i][k];
                 }
             }
-            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(4, xps, P, R, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, xps, P, R, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
             assert_psd(Ps, 8);
             TEST_ASSERT_TRUE(lik >= MTT_R(0.0));
         }

@@ -114,8 +114,28 @@ typedef struct mtt_split_slot {
     uint8_t used;
 } mtt_split_slot;
 
+/** Work matrices of the split arithmetic (src/split.c), the caller's so
+ *  that the stack stays small on a target: a 12-state stacked filter's
+ *  matrices are 576 bytes each in float. */
+typedef struct mtt_split_work {
+    /* mtt_cov: innovation covariance (4 x 4 used) and its LDL' factor */
+    mtt_real S[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];
+    mtt_real L[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];
+    mtt_real W[MTT_SPLIT_STATE][4];      /* gain of the mixed update (4: two targets x 2) */
+    mtt_split_cov A;                     /* I - W H */
+    mtt_split_cov AP;                    /* A Pp; mtt_split_predict's F^s Ps */
+    mtt_split_cov Pq;                    /* model 5: its prediction at MTT_SPLIT_STATE stride */
+    mtt_split_cov Ph[2];                 /* model 5: the halves' updated covariances */
+    mtt_split_cov P12;                   /* model 5: their cross covariance */
+    mtt_split_state xh[2];               /* model 5: the halves' updated states */
+    mtt_real nu[MTT_MAX_SPLIT_MEAS][2];  /* model 5: innovations */
+    mtt_real bn[MTT_MAX_SPLIT_MEAS];     /* model 5: betas renormalised per cluster */
+    uint8_t cl[MTT_MAX_SPLIT_MEAS];      /* model 5: cluster of each measurement */
+} mtt_split_work;
+
 /** Scratch of the split stage, one track at a time. */
 typedef struct mtt_split_scratch {
+    mtt_split_work wk;
     mtt_split_assoc as;
     mtt_real z[MTT_MAX_SPLIT_MEAS][2];   /* model 6's validated set */
     uint16_t zi[MTT_MAX_SPLIT_MEAS];     /* their measurement indices */
@@ -123,6 +143,11 @@ typedef struct mtt_split_scratch {
     mtt_real beta[MTT_MAX_GATED];        /* model 5's input betas */
     mtt_real beta_n[MTT_MAX_GATED];
     uint8_t cluster[MTT_MAX_GATED];
+    mtt_real P5p[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE]; /* mtt_cov: model 5's P̄_cv + Q_s */
+    mtt_real F6[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];  /* mtt_cov: model 6's F per target */
+    mtt_real Q6[MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];  /* mtt_cov: model 6's Q per target */
+    mtt_real xd[2][MTT_MAX_STATE];                            /* decoupled: parent, child */
+    mtt_real Pd[2][MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];
     mtt_split_state x5, x0, xp;
     mtt_split_cov P5, P0, Pp;
 } mtt_split_scratch;
