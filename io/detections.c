@@ -8,6 +8,12 @@
 #include <string.h>
 
 enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS };
+
+#ifdef MTT_REAL_FIXED
+#define MTT_IO_SATURATES 1 /* out of the format: saturated, skipped by the tracker */
+#else
+#define MTT_IO_SATURATES 0
+#endif
 static const char *const det_cols[N_COLS] = {"scan", "time", "x", "y", "amplitude"};
 
 /* Report a field that failed to parse; always MTT_IO_EINPUT. */
@@ -33,13 +39,22 @@ static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *
     return MTT_IO_EINPUT;
 }
 
-/* Parse a finite number that fits mtt_real. */
-static int field_real(const mtt_io_csv *c, int col, double *d, mtt_real *r)
+/* Parse a finite number into mtt_real of format fmt (mtt_io_to_real).
+ * In the fixed-point build a coordinate or amplitude outside its format
+ * is not an error of the file: it takes the saturation value, which the
+ * tracker skips and counts in meas_bad like a NaN in float
+ * (docs/FIXED_POINT.md §3); only the time must fit.  Float and double: a
+ * value that overflows mtt_real is an error. */
+static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r)
 {
     mtt_io_num e = mtt_io_parse_double(c->fields[col], d);
     if (e != MTT_IO_NUM_OK)
         return bad_number(c, col, e, "a finite number");
-    if (!mtt_io_to_real(*d, r)) {
+#ifdef MTT_REAL_FIXED
+    if (col == COL_TIME)
+        return MTT_IO_OK; /* only time - time0 is converted (below) */
+#endif
+    if (!mtt_io_to_real(*d, fmt, r) && !MTT_IO_SATURATES) {
         mtt_io_error_at(c->path, c->line, det_cols[col],
                         "'%s' does not fit the tracker's real type (mtt_real=" MTT_IO_REAL_NAME ")",
                         c->fields[col]);
@@ -96,11 +111,11 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     if (e != MTT_IO_NUM_OK)
         return bad_number(c, COL_SCAN, e, "a non-negative integer");
     memset(&m, 0, sizeof m);
-    if ((rc = field_real(c, COL_TIME, &time, &rtime)) != MTT_IO_OK)
+    if ((rc = field_real(c, COL_TIME, MTT_IO_TIME, &time, &rtime)) != MTT_IO_OK)
         return rc;
     if (prev == NULL)
         d->time0 = time;
-    if (!mtt_io_to_real(time - d->time0, &rtime)) {
+    if (!mtt_io_to_real(time - d->time0, MTT_IO_TIME, &rtime)) {
         mtt_io_error_at(c->path, c->line, "time", "'%s' is too far from the first scan's time",
                         c->fields[COL_TIME]);
         return MTT_IO_EINPUT;
@@ -113,11 +128,11 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             return MTT_IO_EINPUT;
         }
     } else {
-        if ((rc = field_real(c, COL_X, &x, &m.x)) != MTT_IO_OK ||
-            (rc = field_real(c, COL_Y, &y, &m.y)) != MTT_IO_OK)
+        if ((rc = field_real(c, COL_X, MTT_IO_POS, &x, &m.x)) != MTT_IO_OK ||
+            (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y)) != MTT_IO_OK)
             return rc;
         if (c->fields[COL_AMP][0] != '\0') {
-            if ((rc = field_real(c, COL_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
+            if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
                 return rc;
             if (!(amp >= 0.0)) {
                 mtt_io_error_at(c->path, c->line, "amplitude", "'%s' is negative: must be >= 0",

@@ -6,29 +6,63 @@
  * mtt_params_rule_ok: this file adds the texts and the conversion from and
  * to double.  Nothing in the tracker calls it, so a firmware image does not
  * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
- * that no double helper is linked). */
+ * that no double helper is linked).  In the fixed-point build the values
+ * pass through each row's Q format (MTT_FX_FRAC_<member>, params_table.h)
+ * with fx_double.c's conversion: a value outside it is refused, never
+ * wrapped (docs/FIXED_POINT.md §3). */
 #include <string.h>
 
 #include "mtt_internal.h"
 #include "params_table.h"
 
-/* A public row and, for REAL rows, its rule in params.c. */
+/* A public row and, for REAL rows, its rule in params.c (and in the
+ * fixed-point build the Q format of its values). */
 typedef struct info_row {
     mtt_param_info info;
     size_t rule;
+#ifdef MTT_REAL_FIXED
+    int frac;
+#define INFO_FRAC(member) , MTT_FX_FRAC_##member
+#define INFO_NO_FRAC , 0
+#else
+#define INFO_FRAC(member)
+#define INFO_NO_FRAC
+#endif
 } info_row;
+
+/* A REAL value of row r: v into *out (MTT_OK), or MTT_ERR_PARAM when it
+ * does not fit mtt_real; and back. */
+#ifdef MTT_REAL_FIXED
+static mtt_status real_from(const info_row *r, double v, mtt_real *out)
+{
+    return (mtt_fx_from_double(v, r->frac, out) == MTT_OK) ? MTT_OK : MTT_ERR_PARAM;
+}
+#define REAL_TO(r, x) mtt_fx_to_double((x), (r)->frac)
+#else
+static mtt_status real_from(const info_row *r, double v, mtt_real *out)
+{
+    (void)r;
+    /* beyond mtt_real's range the conversion is undefined: test first */
+    if (!(v >= -(double)MTT_REAL_MAX && v <= (double)MTT_REAL_MAX)) {
+        return MTT_ERR_PARAM;
+    }
+    *out = (mtt_real)v;
+    return MTT_OK;
+}
+#define REAL_TO(r, x) ((double)(x))
+#endif
 
 #define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
     {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
       ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
       ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 3 : 0,                 \
       ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
-     MTT_RULE_##member},
+     MTT_RULE_##member INFO_FRAC(member)},
 #define INFO_FLAG(key, member, text)                                                               \
-    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT},
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT INFO_NO_FRAC},
 #define INFO_ENUM(key, member, type, n_names, names, text)                                         \
     {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text},  \
-     MTT_RULE_COUNT},
+     MTT_RULE_COUNT INFO_NO_FRAC},
 
 static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
 
@@ -177,11 +211,9 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     }
     q = *p;
     for (k = 0; k < n; ++k) {
-        /* beyond mtt_real's range the conversion is undefined: test first */
-        if (!(v[k] >= -(double)MTT_REAL_MAX && v[k] <= (double)MTT_REAL_MAX)) {
+        if (real_from(r, v[k], &mtt_params_rule_at(&q, r->rule)[k]) != MTT_OK) {
             return MTT_ERR_PARAM;
         }
-        mtt_params_rule_at(&q, r->rule)[k] = (mtt_real)v[k];
     }
     if (!mtt_params_rule_ok(&q, r->rule, 0)) {
         return MTT_ERR_PARAM;
@@ -220,7 +252,7 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
     }
     q = *p; /* mtt_params_rule_at addresses a writable mtt_params */
     for (k = 0; k < n; ++k) {
-        v[k] = (double)mtt_params_rule_at(&q, r->rule)[k];
+        v[k] = REAL_TO(r, mtt_params_rule_at(&q, r->rule)[k]);
     }
     return MTT_OK;
 }
