@@ -10,10 +10,10 @@
 #include "params_table.h"
 
 /* Fixed-point build: PDEF and the rule bounds convert their constants
- * with the Q format of their row (MTT_FX_FRAC_<member>, params_table.h),
- * saturated: MTT_REAL_MAX is "no bound"; a positive bound that rounds to 0
- * becomes one unit, so an open or positive lower bound stays positive.
- * Float and double: MTT_R. */
+ * with the Q format of each REAL row's values (MTT_FX_FRAC_<member>,
+ * params_table.h) (saturated: MTT_REAL_MAX is "no
+ * bound"; a positive bound that rounds to 0 becomes one unit, so an open
+ * or positive lower bound stays positive).  Float and double: MTT_R. */
 #ifdef MTT_REAL_FIXED
 #define PDEF(member, x) MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member)
 #define PBOUND(member, x)                                                                          \
@@ -280,6 +280,12 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
          * (docs/FIXED_POINT.md §2): the estimated density (0) has no
          * reference yet */
         bad = "clutter_density";
+        st = MTT_ERR_UNSUPPORTED;
+    }
+    if (bad == NULL && p->init_gate == MTT_INIT_GATE_INTENSITY) {
+        /* the intensity gate's f(I) coefficients (a2 = -1e-4) have no
+         * precision in the amplitude format: the vmax circle only */
+        bad = "init_gate";
         st = MTT_ERR_UNSUPPORTED;
     }
 #endif

@@ -6,50 +6,30 @@
  * mtt_params_rule_ok: this file adds the texts and the conversion from and
  * to double.  Nothing in the tracker calls it, so a firmware image does not
  * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
- * that no double helper is linked).  In the fixed-point build the values
- * pass through each row's Q format (MTT_FX_FRAC_<member>, params_table.h)
- * with fx_double.c's conversion: a value outside it is refused, never
- * wrapped (docs/FIXED_POINT.md §3). */
+ * that no double helper is linked).  In the fixed-point build the doubles
+ * are the user's units, converted from and to each row's Q format
+ * (MTT_FX_FRAC_<member>, docs/FIXED_POINT.md §3): rounded to nearest, a
+ * value outside the format refused. */
 #include <string.h>
 
 #include "mtt_internal.h"
 #include "params_table.h"
 
-/* A public row and, for REAL rows, its rule in params.c (and in the
- * fixed-point build the Q format of its values). */
+/* A public row and, for REAL rows, its rule in params.c. */
 typedef struct info_row {
     mtt_param_info info;
     size_t rule;
 #ifdef MTT_REAL_FIXED
-    int frac;
+    int frac; /* Q format of the values */
+#endif
+} info_row;
+
+#ifdef MTT_REAL_FIXED
 #define INFO_FRAC(member) , MTT_FX_FRAC_##member
 #define INFO_NO_FRAC , 0
 #else
 #define INFO_FRAC(member)
 #define INFO_NO_FRAC
-#endif
-} info_row;
-
-/* A REAL value of row r: v into *out (MTT_OK), or MTT_ERR_PARAM when it
- * does not fit mtt_real; and back. */
-#ifdef MTT_REAL_FIXED
-static mtt_status real_from(const info_row *r, double v, mtt_real *out)
-{
-    return (mtt_fx_from_double(v, r->frac, out) == MTT_OK) ? MTT_OK : MTT_ERR_PARAM;
-}
-#define REAL_TO(r, x) mtt_fx_to_double((x), (r)->frac)
-#else
-static mtt_status real_from(const info_row *r, double v, mtt_real *out)
-{
-    (void)r;
-    /* beyond mtt_real's range the conversion is undefined: test first */
-    if (!(v >= -(double)MTT_REAL_MAX && v <= (double)MTT_REAL_MAX)) {
-        return MTT_ERR_PARAM;
-    }
-    *out = (mtt_real)v;
-    return MTT_OK;
-}
-#define REAL_TO(r, x) ((double)(x))
 #endif
 
 #define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
@@ -187,6 +167,35 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
 }
 #endif
 
+#ifdef MTT_REAL_FIXED
+/* v (user's units) in Q frac, rounded to nearest; 0 when outside the
+ * format (NaN included). */
+static int to_real(double v, int frac, mtt_real *out)
+{
+    const double x = v * (double)((uint32_t)1 << frac);
+    if (!(x > -2147483647.0 && x < 2147483647.0)) {
+        return 0;
+    }
+    *out = (mtt_real)((x < 0.0) ? x - 0.5 : x + 0.5);
+    return 1;
+}
+#define FROM_REAL(x, r) ((double)(x) / (double)((uint32_t)1 << (r)->frac))
+#define ROW_FRAC(r) ((r)->frac)
+#else
+/* Beyond mtt_real's range the conversion is undefined: tested first. */
+static int to_real(double v, int frac, mtt_real *out)
+{
+    (void)frac;
+    if (!(v >= -(double)MTT_REAL_MAX && v <= (double)MTT_REAL_MAX)) {
+        return 0;
+    }
+    *out = (mtt_real)v;
+    return 1;
+}
+#define FROM_REAL(x, r) ((double)(x))
+#define ROW_FRAC(r) 0
+#endif
+
 mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
 {
     const info_row *r = NULL;
@@ -211,7 +220,7 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     }
     q = *p;
     for (k = 0; k < n; ++k) {
-        if (real_from(r, v[k], &mtt_params_rule_at(&q, r->rule)[k]) != MTT_OK) {
+        if (!to_real(v[k], ROW_FRAC(r), &mtt_params_rule_at(&q, r->rule)[k])) {
             return MTT_ERR_PARAM;
         }
     }
@@ -252,7 +261,7 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
     }
     q = *p; /* mtt_params_rule_at addresses a writable mtt_params */
     for (k = 0; k < n; ++k) {
-        v[k] = REAL_TO(r, mtt_params_rule_at(&q, r->rule)[k]);
+        v[k] = FROM_REAL(mtt_params_rule_at(&q, r->rule)[k], r);
     }
     return MTT_OK;
 }

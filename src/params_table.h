@@ -150,10 +150,9 @@ extern const char *const mtt_model_names[3];
          "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \
     MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 
-/* Fixed-point build (docs/FIXED_POINT.md §3): the Q format of each REAL
- * row's values, by member name.  params.c converts the defaults and the
- * range bounds with it, params_info.c the values of mtt_params_set/get
- * (the host boundary). */
+/* Fixed-point build: the Q format of each REAL row's values
+ * (docs/FIXED_POINT.md §3), by member name (params.c's defaults and
+ * bounds, params_info.c's conversion from and to double). */
 #ifdef MTT_REAL_FIXED
 #define MTT_FX_FRAC_contest_beta MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
