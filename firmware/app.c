@@ -19,7 +19,9 @@
  *
  *   IT <id> conf <0|1> x .. ex <existence> mu <mu_0> .. <mu_r-1> hex <8 hex digits x (5 + r)>
  *
- * With FW_IMM 0 the program is the CV example, unchanged. */
+ * With FW_IMM 0 the program is the CV example, unchanged.  In the
+ * fixed-point build (MTT_REAL_FIXED) the T lines end "qhex <position
+ * frac> <probability frac>" and the five 32-bit words instead. */
 #include "fw.h"
 
 #ifndef FW_IMM
@@ -34,6 +36,13 @@
 #else
 #define FW_PASS ""
 #define FW_TITLE "mtt firmware scenario: frames "
+#endif
+
+/* Frame k's time: k frames (T0 = 1; Q16 frames in the fixed-point build). */
+#ifdef MTT_REAL_FIXED
+#define FW_TIME(k) ((int32_t)(k) * ((int32_t)1 << MTT_FX_T_FRAC))
+#else
+#define FW_TIME(k) ((float)(k))
 #endif
 
 /* The tracker's whole RAM cost; static, as firmware allocates it. */
@@ -101,6 +110,36 @@ static char *print_mu(char *p, const mtt_track_view *v, int hex)
 }
 #endif
 
+#ifdef MTT_REAL_FIXED
+/* The fixed-point build: the values in the user's units (positions and
+ * velocities in the position format, existence in Q30) and, after "qhex"
+ * and the two formats' fraction bits, their 32-bit words for the exact
+ * comparison (fwcheck.py compare). */
+static void print_track(const mtt_track_view *v)
+{
+    const int32_t val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
+    static const char *const name[5] = {" x ", " y ", " vx ", " vy ", " ex "};
+    int i;
+    char *p = fmt_str(line, FW_PASS "T ");
+    p = fmt_u32(p, v->id);
+    p = fmt_str(p, " conf ");
+    p = fmt_u32(p, (uint32_t)(v->confirmed != 0));
+    for (i = 0; i < 5; ++i) {
+        p = fmt_str(p, name[i]);
+        p = fmt_q(p, val[i], i < 4 ? MTT_FX_POS_FRAC : MTT_FX_PROB_FRAC, i < 4 ? 3 : 5);
+    }
+    p = fmt_str(p, " qhex ");
+    p = fmt_u32(p, MTT_FX_POS_FRAC);
+    p = fmt_str(p, " ");
+    p = fmt_u32(p, MTT_FX_PROB_FRAC);
+    for (i = 0; i < 5; ++i) {
+        p = fmt_str(p, " ");
+        p = fmt_hex32(p, (uint32_t)val[i]);
+    }
+    (void)fmt_str(p, "\n");
+    fw_puts(line);
+}
+#else
 static void print_track(const mtt_track_view *v)
 {
     const float val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
@@ -128,6 +167,7 @@ static void print_track(const mtt_track_view *v)
     (void)fmt_str(p, "\n");
     fw_puts(line);
 }
+#endif
 
 int fw_app_run(void)
 {
@@ -143,8 +183,13 @@ int fw_app_run(void)
         return fail("params");
     }
     par.clutter_density = SCN_CLUTTER_DENSITY;
+#ifdef MTT_REAL_FIXED
+    par.process_psd = MTT_FX_CONST(0.5, MTT_FX_VAR_FRAC);
+    par.vmax = MTT_POS(10.0);
+#else
     par.process_psd = 0.5f;
     par.vmax = 10.0f;
+#endif
     par.cycle_counter = fw_cycle_counter; /* NULL on the host */
 #if FW_IMM
     par.motion = MTT_MOTION_IMM;
@@ -169,7 +214,7 @@ int fw_app_run(void)
 
     for (k = 0; k < SCN_FRAMES; ++k) {
         n = scn_frame(&scn, k, meas);
-        if (mtt_tracker_step(&trk, (float)k, meas, n) != MTT_OK) {
+        if (mtt_tracker_step(&trk, FW_TIME(k), meas, n) != MTT_OK) {
             return fail("step");
         }
         if (mtt_tracker_count(&trk, &live) != MTT_OK) {

@@ -1,5 +1,6 @@
 /* fmt.c - integer, fixed-point and hex formatting for the firmware
- * example: no printf, no double, no division by non-constants. */
+ * example: no printf, no double, no division by non-constants (and in
+ * the fixed-point build no float: fmt_q prints a Q value). */
 #include "fw.h"
 
 char *fmt_str(char *buf, const char *s)
@@ -35,6 +36,60 @@ char *fmt_i32(char *buf, int32_t v)
     return fmt_u32(buf, (uint32_t)v);
 }
 
+#ifdef MTT_REAL_FIXED
+char *fmt_q(char *buf, int32_t v, int frac, int decimals)
+{
+    static const uint32_t iscale[7] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u};
+    uint32_t a = (v < 0) ? 0u - (uint32_t)v : (uint32_t)v;
+    uint32_t ip, fr, fp, d;
+    int i;
+    if (decimals < 0) {
+        decimals = 0;
+    }
+    if (decimals > 6) {
+        decimals = 6;
+    }
+    if (frac < 0) {
+        frac = 0;
+    }
+    if (frac > 31) {
+        frac = 31;
+    }
+    ip = (frac == 0) ? a : (a >> frac);
+    fr = (frac == 0) ? 0u : (a & ((1u << frac) - 1u));
+    /* fp = round(fr 10^decimals / 2^frac), in 64 bits (integer helpers
+     * only: __aeabi_lmul, __aeabi_llsr) */
+    fp = (frac == 0) ? 0u
+                     : (uint32_t)(((uint64_t)fr * iscale[decimals] + ((uint64_t)1 << (frac - 1))) >> frac);
+    if (fp >= iscale[decimals]) {
+        ++ip;
+        fp -= iscale[decimals];
+    }
+    if (v < 0 && (ip != 0u || fp != 0u)) {
+        *buf++ = '-';
+    }
+    buf = fmt_u32(buf, ip);
+    if (decimals > 0) {
+        *buf++ = '.';
+        for (i = decimals - 1, d = iscale[decimals - 1]; i >= 0; --i, d /= 10u) {
+            *buf++ = (char)('0' + (fp / d) % 10u);
+        }
+        *buf = '\0';
+    }
+    return buf;
+}
+
+char *fmt_hex32(char *buf, uint32_t v)
+{
+    static const char digits[] = "0123456789abcdef";
+    int i;
+    for (i = 7; i >= 0; --i) {
+        *buf++ = digits[(v >> (4 * i)) & 0xfu];
+    }
+    *buf = '\0';
+    return buf;
+}
+#else
 char *fmt_fixed(char *buf, float v, int decimals)
 {
     static const float scale[7] = {1.0f, 10.0f, 100.0f, 1e3f, 1e4f, 1e5f, 1e6f};
@@ -88,3 +143,4 @@ char *fmt_hex(char *buf, float v)
     *buf = '\0';
     return buf;
 }
+#endif /* MTT_REAL_FIXED */
