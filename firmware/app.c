@@ -110,39 +110,31 @@ static char *print_mu(char *p, const mtt_track_view *v, int hex)
 }
 #endif
 
+/* The value i of a T line (x, y, vx, vy: 3 decimals; existence: 5) and
+ * its word for the exact comparison.  The fixed-point build prints the Q
+ * values in the user's units (positions and velocities in the position
+ * format, existence in Q30) and, after "qhex <position frac> <probability
+ * frac>", their 32-bit words (fwcheck.py compare); float the IEEE-754 bits
+ * after "hex". */
 #ifdef MTT_REAL_FIXED
-/* The fixed-point build: the values in the user's units (positions and
- * velocities in the position format, existence in Q30) and, after "qhex"
- * and the two formats' fraction bits, their 32-bit words for the exact
- * comparison (fwcheck.py compare). */
-static void print_track(const mtt_track_view *v)
+#define FMT_VAL(p, v, i) fmt_q((p), (v), (i) < 4 ? MTT_FX_POS_FRAC : MTT_FX_PROB_FRAC, (i) < 4 ? 3 : 5)
+#define FMT_WORD(p, v) fmt_hex32((p), (uint32_t)(v))
+static char *fmt_word_tag(char *p)
 {
-    const int32_t val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
-    static const char *const name[5] = {" x ", " y ", " vx ", " vy ", " ex "};
-    int i;
-    char *p = fmt_str(line, FW_PASS "T ");
-    p = fmt_u32(p, v->id);
-    p = fmt_str(p, " conf ");
-    p = fmt_u32(p, (uint32_t)(v->confirmed != 0));
-    for (i = 0; i < 5; ++i) {
-        p = fmt_str(p, name[i]);
-        p = fmt_q(p, val[i], i < 4 ? MTT_FX_POS_FRAC : MTT_FX_PROB_FRAC, i < 4 ? 3 : 5);
-    }
     p = fmt_str(p, " qhex ");
     p = fmt_u32(p, MTT_FX_POS_FRAC);
     p = fmt_str(p, " ");
-    p = fmt_u32(p, MTT_FX_PROB_FRAC);
-    for (i = 0; i < 5; ++i) {
-        p = fmt_str(p, " ");
-        p = fmt_hex32(p, (uint32_t)val[i]);
-    }
-    (void)fmt_str(p, "\n");
-    fw_puts(line);
+    return fmt_u32(p, MTT_FX_PROB_FRAC);
 }
 #else
+#define FMT_VAL(p, v, i) fmt_fixed((p), (v), (i) < 4 ? 3 : 5)
+#define FMT_WORD(p, v) fmt_hex((p), (v))
+#define fmt_word_tag(p) fmt_str((p), " hex")
+#endif
+
 static void print_track(const mtt_track_view *v)
 {
-    const float val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
+    const mtt_real val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
     static const char *const name[5] = {" x ", " y ", " vx ", " vy ", " ex "};
     int i;
     char *p = fmt_str(line, FW_PASS "T ");
@@ -151,15 +143,15 @@ static void print_track(const mtt_track_view *v)
     p = fmt_u32(p, (uint32_t)(v->confirmed != 0));
     for (i = 0; i < 5; ++i) {
         p = fmt_str(p, name[i]);
-        p = fmt_fixed(p, val[i], i < 4 ? 3 : 5);
+        p = FMT_VAL(p, val[i], i);
     }
 #if FW_IMM
     p = print_mu(p, v, 0);
 #endif
-    p = fmt_str(p, " hex");
+    p = fmt_word_tag(p);
     for (i = 0; i < 5; ++i) {
         p = fmt_str(p, " ");
-        p = fmt_hex(p, val[i]);
+        p = FMT_WORD(p, val[i]);
     }
 #if FW_IMM
     p = print_mu(p, v, 1);
@@ -167,7 +159,6 @@ static void print_track(const mtt_track_view *v)
     (void)fmt_str(p, "\n");
     fw_puts(line);
 }
-#endif
 
 int fw_app_run(void)
 {

@@ -36,13 +36,32 @@ char *fmt_i32(char *buf, int32_t v)
     return fmt_u32(buf, (uint32_t)v);
 }
 
+static const uint32_t iscale[7] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u};
+
+/* "-"ip.fp with `decimals` (1..6) digits of fp (< 10^decimals), or ip alone. */
+static char *fmt_dec(char *buf, int neg, uint32_t ip, uint32_t fp, int decimals)
+{
+    uint32_t d;
+    int i;
+    if (neg) {
+        *buf++ = '-';
+    }
+    buf = fmt_u32(buf, ip);
+    if (decimals > 0) {
+        *buf++ = '.';
+        for (i = decimals - 1, d = iscale[decimals - 1]; i >= 0; --i, d /= 10u) {
+            *buf++ = (char)('0' + (fp / d) % 10u);
+        }
+        *buf = '\0';
+    }
+    return buf;
+}
+
 #ifdef MTT_REAL_FIXED
 char *fmt_q(char *buf, int32_t v, int frac, int decimals)
 {
-    static const uint32_t iscale[7] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u};
     uint32_t a = (v < 0) ? 0u - (uint32_t)v : (uint32_t)v;
-    uint32_t ip, fr, fp, d;
-    int i;
+    uint32_t ip, fr, fp;
     if (decimals < 0) {
         decimals = 0;
     }
@@ -65,18 +84,7 @@ char *fmt_q(char *buf, int32_t v, int frac, int decimals)
         ++ip;
         fp -= iscale[decimals];
     }
-    if (v < 0 && (ip != 0u || fp != 0u)) {
-        *buf++ = '-';
-    }
-    buf = fmt_u32(buf, ip);
-    if (decimals > 0) {
-        *buf++ = '.';
-        for (i = decimals - 1, d = iscale[decimals - 1]; i >= 0; --i, d /= 10u) {
-            *buf++ = (char)('0' + (fp / d) % 10u);
-        }
-        *buf = '\0';
-    }
-    return buf;
+    return fmt_dec(buf, v < 0 && (ip != 0u || fp != 0u), ip, fp, decimals);
 }
 
 char *fmt_hex32(char *buf, uint32_t v)
@@ -93,10 +101,8 @@ char *fmt_hex32(char *buf, uint32_t v)
 char *fmt_fixed(char *buf, float v, int decimals)
 {
     static const float scale[7] = {1.0f, 10.0f, 100.0f, 1e3f, 1e4f, 1e5f, 1e6f};
-    static const uint32_t iscale[7] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u};
     float a;
-    uint32_t q, ip, fp, d;
-    int i;
+    uint32_t q;
     if (decimals < 0) {
         decimals = 0;
     }
@@ -112,20 +118,7 @@ char *fmt_fixed(char *buf, float v, int decimals)
         return fmt_str(buf, "ovf");
     }
     q = (uint32_t)a;
-    if (v < 0.0f && q != 0u) {
-        *buf++ = '-';
-    }
-    ip = q / iscale[decimals];
-    fp = q % iscale[decimals];
-    buf = fmt_u32(buf, ip);
-    if (decimals > 0) {
-        *buf++ = '.';
-        for (i = decimals - 1, d = iscale[decimals - 1]; i >= 0; --i, d /= 10u) {
-            *buf++ = (char)('0' + (fp / d) % 10u);
-        }
-        *buf = '\0';
-    }
-    return buf;
+    return fmt_dec(buf, v < 0.0f && q != 0u, q / iscale[decimals], q % iscale[decimals], decimals);
 }
 
 char *fmt_hex(char *buf, float v)
