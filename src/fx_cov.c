@@ -218,4 +218,19 @@ int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny)
     return mtt_fx_at(q, MTT_SYM_E(Si) - 2 * (MTT_FX_POS_FRAC + s) + 60, -MTT_FX_D2_FRAC);
 }
 
+/* ---- shared by the PDA update and L D L' (kalman.c) ---- */
+
+int32_t mtt_fx_shift(int32_t v, int s)
+{
+    if (s >= 0) {
+        return v * ((int32_t)1 << s);
+    }
+    return shr_round(v, -s);
+}
+
+int mtt_fx_top_exp(int e, uint32_t u, int top)
+{
+    return e + (32 - mtt_fx_clz(u)) - top;
+}
+
 #endif /* MTT_REAL_FIXED */

@@ -1,0 +1,427 @@
+/* test_update_q.c - the PDA update (ALGORITHMS.md §3 Joseph form, §6, §7.4),
+ * the L D L' positive-definiteness test and quadratic form (§3, §16) on
+ * TV2 and TV6, in every build.  Float and double: the results against the
+ * test vectors by the rule of ALGORITHMS.md §16.  Fixed point
+ * (docs/FIXED_POINT.md §7): the results against the double formula
+ * evaluated on the very inputs the fixed code sees (P^, K, S^-1 as
+ * mantissas at their exponents, R in Q16, nu in the position format, the
+ * betas in Q30), within the roundings counted below; that double result is
+ * in turn held to the test vector by the float rule.
+ *
+ * Tolerance of the updated P (fixed point).  Every intermediate block of
+ * kalman.c's fixed pda_n holds its largest entry on 28 to 30 bits, so each
+ * rounding (a mtt_fx_mulq at 0.5008 unit, a shift at 0.5 unit) is at most
+ * 2^-28 of that block's size.  The longest chain is the Joseph term
+ * (1 - beta0) A P^ A': A (two products and the alignment shift of R S^-1;
+ * the shift of K), enters twice, each time times |P^| (2 entries) - 2 x 2 x
+ * 3 roundings; A P^ (two products, the identity's shift) and P_c (the
+ * same): 6; the factor 1 - beta0, the alignment to P's exponent and the
+ * final renormalisation: 3.  21 roundings in units of the largest of the
+ * three terms T = max(beta0 |P^|, (1 - beta0) |P_c|, |K M K'|); with the
+ * blocks' sizes at most 2 bits below their bounds (the alignments use the
+ * measured sizes):  tol_P = 21 x 4 x 2^-28 T.
+ * Tolerance of x: the state moves by K nu_c rounded to the position format
+ * (half a unit), nu_c carries one rounding per measurement plus the shift
+ * of nu (units of 2^-27 max|nu|), times |K_i0| + |K_i1|, and K nu_c's two
+ * products and K's shift: 3 x 2^-27 (|K_i0 nu_cx| + |K_i1 nu_cy|). */
+#include <stdio.h>
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "tv_assert.h"
+#include "tv_cov.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static const double tv2_x0[4] = {100.0, 50.0, 10.0, -5.0};
+static const double tv2_P0[16] = {4, 1, 1, 0, 1, 4, 0, 1, 1, 0, 1, 0, 0, 1, 0, 1};
+static const double tv2_r[3] = {1.0, 0.3, 2.0}; /* TV2 R */
+static const double tv2_z[2] = {111.5, 44.0};
+static const double tv2_xpred[4] = {110, 45, 10, -5};
+static const double tv2_Ppred[16] = {8.666666667, 1, 4.5, 0, 1, 8.666666667, 0, 4.5,
+                                     4.5, 0, 6, 0, 0, 4.5, 0, 6};
+static const double tv2_xupd[4] = {111.3637858, 44.1779051, 10.76759167, -5.515425235};
+static const double tv2_Pupd[16] = {
+    0.8939405559, 0.238050373,  0.4559701574, 0.07099113706, 0.238050373,  1.624667229,
+    0.0266216764, 0.8405054832, 0.4559701574, 0.0266216764,  3.870265888,  0.2595613449,
+    0.07099113706, 0.8405054832, 0.2595613449, 4.069928461};
+/* TV5's measurements and TV6's IPDA betas, x_upd and P_upd */
+static const double tv5_z[3][2] = {{110.8, 44.5}, {106.5, 47.4}, {115.0, 48.0}};
+static const double tv6_beta[3] = {0.61878548, 0.233249123, 0.1379880464};
+static const double tv6_beta0 = 0.009977350664;
+static const double tv6_x[4] = {110.320767, 45.53809847, 10.1361263, -4.736309597};
+static const double tv6_P[16] = {
+    6.286621717, -0.09786656496, 3.31419463, -0.4332224045, -0.09786656496, 3.219038845,
+    -0.2469598763, 1.699919386, 3.31419463, -0.2469598763, 5.390980795, -0.05795771982,
+    -0.4332224045, 1.699919386, -0.05795771982, 4.552799418};
+
+/* ---- values in and out of their formats ---- */
+#ifdef MTT_REAL_FIXED
+#define POS(v) ((mtt_real)llround(ldexp((v), MTT_FX_POS_FRAC)))
+#define VAR(v) ((mtt_real)llround(ldexp((v), MTT_FX_VAR_FRAC)))
+#define PROB(v) ((mtt_real)llround(ldexp((v), MTT_FX_PROB_FRAC)))
+#define POS_D(x) ldexp((double)(x), -MTT_FX_POS_FRAC)
+#define VAR_D(x) ldexp((double)(x), -MTT_FX_VAR_FRAC)
+#define PROB_D(x) ldexp((double)(x), -MTT_FX_PROB_FRAC)
+#define SI_D(Si, k) ldexp((double)(Si)[k], MTT_SYM_E(Si))
+#define K_D(f, i, c) ldexp((double)(f)->K[i][c], MTT_COV_E((f)->Pp) + MTT_SYM_E((f)->Si) + 28)
+#else
+#define POS(v) ((mtt_real)(v))
+#define VAR(v) ((mtt_real)(v))
+#define PROB(v) ((mtt_real)(v))
+#define POS_D(x) ((double)(x))
+#define VAR_D(x) ((double)(x))
+#define PROB_D(x) ((double)(x))
+#define SI_D(Si, k) ((double)(Si)[k])
+#define K_D(f, i, c) ((double)(f)->K[i][c])
+#endif
+
+/* TV2's prediction and innovation step (test_predict_cov.c checks them). */
+struct fix {
+    mtt_state xp;
+    mtt_cov Pp;
+    mtt_real R[3], S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det, K[MTT_MAX_STATE][2];
+};
+
+static void tv2_fix(struct fix *f)
+{
+    mtt_state x;
+    mtt_cov P;
+    int i;
+    memset(f, 0, sizeof *f);
+    tv_cov_set(P, tv2_P0, -24);
+    for (i = 0; i < 4; ++i) {
+        x[i] = POS(tv2_x0[i]);
+    }
+    for (i = 0; i < 3; ++i) {
+        f->R[i] = VAR(tv2_r[i]);
+    }
+#ifdef MTT_REAL_FIXED
+    mtt_kalman_predict(MTT_FX_CONST(1.0, MTT_FX_T_FRAC), VAR(5.0), x, P, f->xp, f->Pp);
+#else
+    mtt_kalman_predict(MTT_R(1.0), MTT_R(5.0), x, P, f->xp, f->Pp);
+#endif
+    TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(f->Pp, f->R, f->S, f->Si, &f->det, f->K));
+}
+
+/* The PDA update of ALGORITHMS.md §6 in double on the inputs as given
+ * (the reference of the fixed build), and the size T of its largest term. */
+static double pda_ref(const struct fix *f, int m, const double nu[][2], const double *beta,
+                      double beta0, double x[4], double P[16], double cxy[2])
+{
+    double cx = 0.0, cy = 0.0, bs = 0.0, sxx = 0.0, sxy = 0.0, syy = 0.0, A[4][2], AP[4][4];
+    double Pp[4][4], K[4][2], r[3], si[3], w = 1.0 - beta0, M[3], T = 0.0;
+    int i, k, j;
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            Pp[i][k] = tv_cov_at((mtt_real(*)[MTT_MAX_STATE])f->Pp, i, k);
+        }
+        K[i][0] = K_D(f, i, 0);
+        K[i][1] = K_D(f, i, 1);
+    }
+    for (k = 0; k < 3; ++k) {
+        r[k] = VAR_D(f->R[k]);
+        si[k] = SI_D(f->Si, k);
+    }
+    for (j = 0; j < m; ++j) {
+        cx += beta[j] * nu[j][0];
+        cy += beta[j] * nu[j][1];
+        bs += beta[j];
+    }
+    for (j = 0; j < m; ++j) {
+        const double dx = nu[j][0] - cx, dy = nu[j][1] - cy;
+        sxx += beta[j] * dx * dx;
+        sxy += beta[j] * dx * dy;
+        syy += beta[j] * dy * dy;
+    }
+    bs = 1.0 - bs;
+    if (bs > 0.0) {
+        sxx += bs * cx * cx;
+        sxy += bs * cx * cy;
+        syy += bs * cy * cy;
+    }
+    for (i = 0; i < 4; ++i) {
+        x[i] = POS_D(f->xp[i]) + K[i][0] * cx + K[i][1] * cy;
+    }
+    M[0] = w * r[0] + sxx;
+    M[1] = w * r[1] + sxy;
+    M[2] = w * r[2] + syy;
+    A[0][0] = r[0] * si[0] + r[1] * si[1];
+    A[0][1] = r[0] * si[1] + r[1] * si[2];
+    A[1][0] = r[1] * si[0] + r[2] * si[1];
+    A[1][1] = r[1] * si[1] + r[2] * si[2];
+    for (i = 2; i < 4; ++i) {
+        A[i][0] = -K[i][0];
+        A[i][1] = -K[i][1];
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            AP[i][k] = A[i][0] * Pp[0][k] + A[i][1] * Pp[1][k] + ((i >= 2) ? Pp[i][k] : 0.0);
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        const double a = K[i][0] * M[0] + K[i][1] * M[1], b = K[i][0] * M[1] + K[i][1] * M[2];
+        for (k = 0; k < 4; ++k) {
+            const double pc = AP[i][0] * A[k][0] + AP[i][1] * A[k][1] + ((k >= 2) ? AP[i][k] : 0.0);
+            const double t1 = beta0 * Pp[i][k], t2 = w * pc, t3 = a * K[k][0] + b * K[k][1];
+            P[4 * i + k] = t1 + t2 + t3;
+            T = fmax(T, fmax(fabs(t1), fmax(fabs(t2), fabs(t3))));
+        }
+    }
+    cxy[0] = cx;
+    cxy[1] = cy;
+    return T;
+}
+
+#ifdef MTT_REAL_FIXED
+static double worst = 0.0; /* largest |error| / tolerance seen */
+#endif
+
+/* mtt_kalman_pda on f with m measurements z and betas, against x_want and
+ * P_want (the test vector). */
+static void check_pda(struct fix *f, int m, const double z[][2], const double *beta_d,
+                      double beta0_d, const double *x_want, const double *P_want)
+{
+    mtt_real nu[3][2], beta[3];
+    double nud[3][2], bd[3], xr[4], Pr[16], c[2], T, numax = 0.0;
+    mtt_state x;
+    mtt_cov P;
+    int i, k, j;
+    for (j = 0; j < m; ++j) {
+        for (k = 0; k < 2; ++k) {
+            nu[j][k] = POS(z[j][k]) - f->xp[k];
+            nud[j][k] = POS_D(nu[j][k]);
+            numax = fmax(numax, fabs(nud[j][k]));
+        }
+        beta[j] = PROB(beta_d[j]);
+        bd[j] = PROB_D(beta[j]);
+    }
+    mtt_kalman_pda(f->xp, f->Pp, f->K, f->Si, f->R, (uint16_t)m, nu, beta, PROB(beta0_d), x, P);
+    T = pda_ref(f, m, (const double(*)[2])nud, bd, PROB_D(PROB(beta0_d)), xr, Pr, c);
+    for (i = 0; i < 4; ++i) {
+        TV_ASSERT_REAL_MSG(x_want[i], xr[i], "x of the quantised inputs");
+        for (k = 0; k < 4; ++k) {
+            TEST_ASSERT_TRUE(P[i][k] == P[k][i]); /* symmetric by construction */
+            TV_ASSERT_REAL_MSG(P_want[4 * i + k], Pr[4 * i + k], "P of the quantised inputs");
+        }
+    }
+#ifdef MTT_REAL_FIXED
+    {
+        const double tolP = 21.0 * 4.0 * ldexp(T, -28);
+        for (i = 0; i < 4; ++i) {
+            const double k0 = fabs(K_D(f, i, 0)), k1 = fabs(K_D(f, i, 1));
+            const double tolx = ldexp(1.0, -MTT_FX_POS_FRAC - 1) + (k0 + k1) * (m + 1) * ldexp(numax, -27) +
+                                3.0 * ldexp(k0 * fabs(c[0]) + k1 * fabs(c[1]), -27);
+            tv_assert_q(xr[i], POS_D(x[i]), tolx, "x", __LINE__);
+            worst = fmax(worst, fabs(POS_D(x[i]) - xr[i]) / tolx);
+            for (k = 0; k < 4; ++k) {
+                tv_assert_q(Pr[4 * i + k], tv_cov_at(P, i, k), tolP, "P", __LINE__);
+                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - Pr[4 * i + k]) / tolP);
+            }
+        }
+        /* stored renormalised: the largest mantissa on 28 bits */
+        TEST_ASSERT_TRUE(P[0][0] < (1 << 28) && (P[0][0] >= (1 << 27) || P[2][2] >= (1 << 27) ||
+                                                   P[3][3] >= (1 << 27) || P[1][1] >= (1 << 27)));
+    }
+#else
+    (void)T;
+    TV_ASSERT_VEC(x_want, x, 4);
+    TV_ASSERT_MAT4(P_want, P);
+#endif
+}
+
+/* One measurement, beta 1, beta0 0: the Kalman update (TV2 x_upd, P_upd). */
+static void test_tv2_update(void)
+{
+    struct fix f;
+    const double one = 1.0;
+    tv2_fix(&f);
+    check_pda(&f, 1, &tv2_z, &one, 0.0, tv2_xupd, tv2_Pupd);
+}
+
+/* No measurement, beta0 0: the Joseph form P_c (TV2 P_upd); x stays. */
+static void test_tv2_joseph(void)
+{
+    struct fix f;
+    tv2_fix(&f);
+    check_pda(&f, 0, NULL, NULL, 0.0, tv2_xpred, tv2_Pupd);
+}
+
+/* No measurement, beta0 1: the prediction itself (TV2 x_pred, P_pred). */
+static void test_tv2_keeps_prediction(void)
+{
+    struct fix f;
+    tv2_fix(&f);
+    check_pda(&f, 0, NULL, NULL, 1.0, tv2_xpred, tv2_Ppred);
+}
+
+/* Three measurements with TV6's IPDA betas (TV6 x_upd, P_upd). */
+static void test_tv6_pda(void)
+{
+    struct fix f;
+    tv2_fix(&f);
+    check_pda(&f, 3, tv5_z, tv6_beta, tv6_beta0, tv6_x, tv6_P);
+}
+
+/* ---- L D L' (ALGORITHMS.md §3, §16): the positive-definiteness test
+ * with its margin (d_i > rel P_ii), and b' A^-1 b.  Fixed point: A is
+ * normalised to 29 bits and every quotient E_ik E_jk / d_k is bounded by
+ * max |A| (Cauchy-Schwarz on the pivots), so each of the 10 roundings of
+ * the 4 x 4 factorisation (two per quotient, one reciprocal per pivot) is
+ * an error of at most 2^-28 max |A| on an entry of A; b' A^-1 b moves by
+ * |x' dA x| <= 10 2^-28 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
+ * b is rounded to 24 bits and each y_i = b_i - sum L_ik y_k carries one
+ * rounding per quotient (at most 3 at 2^-25 max |b|): a perturbation of b
+ * of 4 units, 2 (sum |x_i|) 4 2^-25 max |b|; the four terms y_i^2 / d_i on
+ * 29 bits, their sum's alignment and the Q24 result: 6 2^-29 d2 + 2^-25. ---- */
+static double quad_tol(const double A[16], const double b[4], double *d2)
+{
+    /* x = A^-1 b by Gauss-Jordan in double (the 4 x 4 test matrices are
+     * well conditioned) */
+    double a[4][5], amax = 0.0, bmax = 0.0, l1 = 0.0, q = 0.0;
+    int i, j, k;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            a[i][j] = A[4 * i + j];
+            amax = fmax(amax, fabs(A[4 * i + j]));
+        }
+        a[i][4] = b[i];
+        bmax = fmax(bmax, fabs(b[i]));
+    }
+    for (k = 0; k < 4; ++k) {
+        for (i = 0; i < 4; ++i) {
+            if (i != k) {
+                const double g = a[i][k] / a[k][k];
+                for (j = k; j < 5; ++j) {
+                    a[i][j] -= g * a[k][j];
+                }
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        const double x = a[i][4] / a[i][i];
+        l1 += fabs(x);
+        q += b[i] * x;
+    }
+    *d2 = q;
+    return 10.0 * ldexp(amax, -28) * l1 * l1 + 8.0 * l1 * ldexp(bmax, -25) + 6.0 * ldexp(fabs(q), -29) +
+           ldexp(1.0, -25);
+}
+
+static void check_quad(mtt_cov A, const double b_d[4], double want)
+{
+    double Ad[16], bq[4], ref, tol;
+    mtt_state b;
+    mtt_real d2 = MTT_ZERO;
+    int i, k;
+    for (i = 0; i < 4; ++i) {
+        b[i] = POS(b_d[i]);
+        bq[i] = POS_D(b[i]);
+        for (k = 0; k < 4; ++k) {
+            Ad[4 * i + k] = tv_cov_at(A, i, k);
+        }
+    }
+    tol = quad_tol(Ad, bq, &ref);
+    TV_ASSERT_REAL_MSG(want, ref, "b' A^-1 b of the quantised inputs");
+    TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(A, b, &d2));
+    TV_ASSERT_Q(ref, d2, MTT_FX_D2_FRAC, tol);
+#ifdef MTT_REAL_FIXED
+    worst = fmax(worst, fabs(TV_Q(d2, MTT_FX_D2_FRAC) - ref) / tol);
+#endif
+}
+
+static void test_quad_and_pd(void)
+{
+    struct fix f;
+    double b[4];
+    mtt_state x;
+    mtt_cov P;
+    int i;
+    tv2_fix(&f);
+    /* b = P^ e1: b' P^-1 b = P^_11 = 8.666666667 (TV2); b = P^ e4: 6 */
+    for (i = 0; i < 4; ++i) {
+        b[i] = tv2_Ppred[4 * i];
+    }
+    check_quad(f.Pp, b, 8.666666667);
+    for (i = 0; i < 4; ++i) {
+        b[i] = tv2_Ppred[4 * i + 3];
+    }
+    check_quad(f.Pp, b, 6.0);
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(f.Pp, MTT_FRAME_COV_MARGIN));
+    /* TV2's updated P is positive definite with the margin */
+    mtt_kalman_pda(f.xp, f.Pp, f.K, f.Si, f.R, 0, NULL, NULL, MTT_ZERO, x, P);
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(P, MTT_FRAME_COV_MARGIN));
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(P, MTT_SEED_COV_MARGIN));
+}
+
+static void test_pd_rejects(void)
+{
+    /* indefinite ([[1, 2], [2, 1]] has eigenvalue -1), singular, and a
+     * pivot d_1 = 1 - c^2 on either side of the margins */
+    static const double indef[16] = {1, 2, 0, 0, 2, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    static const double sing[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0};
+    static const double neg[16] = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double near[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    mtt_cov A;
+    mtt_real d2 = MTT_D2(42.0);
+    const mtt_state b = {POS(1.0), POS(1.0), POS(1.0), POS(1.0)};
+    tv_cov_set(A, indef, -28);
+    TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
+    TEST_ASSERT_TRUE(d2 == MTT_D2(42.0)); /* untouched */
+    tv_cov_set(A, sing, -28);
+    TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_chol_quad(A, b, &d2));
+    tv_cov_set(A, neg, -28);
+    TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    /* c = 1 - 1e-7: d_1 = 2e-7, below 16 float eps (1.9e-6; the fixed
+     * build's margins are the float ones, the double build's 2^-29 times
+     * smaller); c = 1 - 1e-5: above it, below the seed margin 1000 eps
+     * (1.2e-4) */
+#ifndef MTT_REAL_DOUBLE
+    near[1] = near[4] = 1.0 - 1e-7;
+    tv_cov_set(A, near, -28);
+    TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    near[1] = near[4] = 1.0 - 1e-5;
+    tv_cov_set(A, near, -28);
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_SEED_COV_MARGIN));
+#else
+    near[1] = near[4] = 1.0 - 1e-5;
+    tv_cov_set(A, near, -28);
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_SEED_COV_MARGIN));
+#endif
+#ifdef MTT_REAL_FIXED
+    /* far beyond every threshold: saturates, never wraps */
+    {
+        const mtt_state far = {MTT_FX_POS_LIMIT, -MTT_FX_POS_LIMIT, 0, 0};
+        near[1] = near[4] = 0.0;
+        near[0] = near[5] = near[10] = near[15] = 1e-6;
+        tv_cov_set(A, near, -50);
+        TEST_ASSERT_EQUAL_INT(0, mtt_chol_quad(A, far, &d2));
+        TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, d2);
+    }
+#endif
+}
+
+static void report(void)
+{
+#ifdef MTT_REAL_FIXED
+    printf("largest |error| / derived tolerance: %.3g\n", worst);
+#endif
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_tv2_update);
+    RUN_TEST(test_tv2_joseph);
+    RUN_TEST(test_tv2_keeps_prediction);
+    RUN_TEST(test_tv6_pda);
+    RUN_TEST(test_quad_and_pd);
+    RUN_TEST(test_pd_rejects);
+    report();
+    return UNITY_END();
+}
