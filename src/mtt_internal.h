@@ -287,7 +287,7 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
 
 /* ---- merge.c: track merging (ALGORITHMS.md §12.3) ---- */
 /* d^2 of two states; returns -1 when P_a + P_b is not positive definite. */
-int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2);
+int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_d2 *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
 /* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */
