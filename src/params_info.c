@@ -169,17 +169,12 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
 
 #ifdef MTT_REAL_FIXED
 /* v (user's units) in Q frac, rounded to nearest; 0 when outside the
- * format (NaN included). */
+ * format (NaN included): the host boundary's one conversion (fx_double.c). */
 static int to_real(double v, int frac, mtt_real *out)
 {
-    const double x = v * (double)((uint32_t)1 << frac);
-    if (!(x > -2147483647.0 && x < 2147483647.0)) {
-        return 0;
-    }
-    *out = (mtt_real)((x < 0.0) ? x - 0.5 : x + 0.5);
-    return 1;
+    return mtt_fx_from_double(v, frac, out) == MTT_OK;
 }
-#define FROM_REAL(x, r) ((double)(x) / (double)((uint32_t)1 << (r)->frac))
+#define FROM_REAL(x, r) mtt_fx_to_double((x), (r)->frac)
 #define ROW_FRAC(r) ((r)->frac)
 #else
 /* Beyond mtt_real's range the conversion is undefined: tested first. */
