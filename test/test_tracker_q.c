@@ -33,8 +33,10 @@
  * insensitive to the gain; beta0 P^'s share, carried by F instead, is
  * injected again each frame).  The existence: the L of the tracker is
  * a Q16 ratio (three roundings of 2^-17) plus L's change with d^2 (from
- * dx) and d^2's own error (2e-6, docs/FIXED_POINT.md §7); carried by
- * dP/dP^ (p11 - p21) and dP/dL, plus four Q30 roundings per frame.  The
+ * dx) and d^2's own error (2e-6, docs/FIXED_POINT.md §7), through dP/dL;
+ * the prediction's 2.51 Q30 units and the update's own (num = L P^ and
+ * den = 1 - P^ + num in Q16: test_existence.c's upd_tol) each frame; the
+ * error carried from the frame before through dP/dP^ (p11 - p21).  The
  * view adds half a unit of its format.  The test fails when any
  * component leaves its bound, and also when the bound itself exceeds
  * 10^-3 of the measurement sigma (10^-2 in float: it would no longer
@@ -544,8 +546,15 @@ static void ref_step(ref *r, const mtt_params *p, const double z[2])
     dL = ((F_PROB > 0) ? 3.0 * ldexp(1.0, -17) : 8.0 * UNIT_REL * L) + 0.5 * pd * pg * lik / lam * dd2;
     {
         const double den = 1.0 - exp_ + L * exp_;
-        r->bex = L / (den * den) * fabs(p11 - p21) * r->bex + exp_ * (1.0 - exp_) / (den * den) * dL +
-                 ((F_PROB > 0) ? 4.0 * ldexp(1.0, -31) : 4.0 * UNIT_REL);
+        /* the prediction's own error (test_existence.c: 2.51 Q30 units)
+         * and the update's (test_existence.c's upd_tol: num = L P^ and
+         * den = 1 - P^ + num in Q16, the quotient in Q30) */
+        const double q = ldexp(1.0, -17), post = L * exp_ / den;
+        const double dnum = q * (1.0 + exp_) + L * ldexp(1.0, -31);
+        const double e_pred = (F_PROB > 0) ? 2.51 * ldexp(1.0, -30) : 4.0 * UNIT_REL;
+        const double e_upd = (F_PROB > 0) ? (dnum + post * (q + dnum)) / den + ldexp(1.0, -31) : 4.0 * UNIT_REL;
+        r->bex = L / (den * den) * fabs(p11 - p21) * (r->bex + e_pred) + exp_ * (1.0 - exp_) / (den * den) * dL +
+                 e_upd;
         r->ex = L * exp_ / den;
     }
 }
