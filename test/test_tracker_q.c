@@ -669,6 +669,131 @@ void test_single_target_against_reference(void)
            N_FRAMES, worst[0], worst[1], worst[2], worst[3]);
 }
 
+/* ---- merging (ALGORITHMS.md §12.3) at two block exponents ---- */
+
+/* Two seeded tracks, covariances 16 times apart (their blocks' exponents
+ * differ by 4), both gating one detection (one cluster), updated by ipda
+ * (each alone: the reference of ref_step); merge d^2 of the updated pair
+ * in double, and its bound from the states' and covariances' bounds:
+ * |d(d^2)| <= 2 sum |w_i| (bx_a + bx_b)_i + sum |w_i w_j| (bP_a + bP_b)_ij
+ * with w = (P_a + P_b)^-1 (x_a - x_b), plus the L D L' quadratic form's
+ * own 2^-20 relative (test_update_q.c).  A threshold above d^2 + bound
+ * merges, one below d^2 - bound does not. */
+static void seed_ref(ref *r, double x0, double y0, double vx, double vy, double var)
+{
+    mtt_real x[4], P[16];
+    uint32_t id = 0;
+    int i;
+    memset(r, 0, sizeof *r);
+    r->x[0] = x0;
+    r->x[1] = y0;
+    r->x[2] = vx;
+    r->x[3] = vy;
+    for (i = 0; i < 4; ++i) {
+        r->P[i][i] = var;
+        x[i] = to_q(r->x[i], F_POS);
+    }
+    for (i = 0; i < 16; ++i) {
+        P[i] = to_q((i % 5 == 0) ? var : 0.0, F_VAR);
+    }
+    r->ex = 1.0;
+    mat_eye(r->M[0]);
+    r->nh = 1; /* the seed is exact in every format: no error yet */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+}
+
+static double merge_d2(const ref *a, const ref *b, double *bound)
+{
+    double A[4][4], w[4], d[4], L[4][4], dd[4], y[4], s = 0.0, e = 0.0;
+    int i, j, k;
+    for (i = 0; i < 4; ++i) {
+        d[i] = a->x[i] - b->x[i];
+        for (j = 0; j < 4; ++j) {
+            A[i][j] = a->P[i][j] + b->P[i][j];
+        }
+    }
+    /* A = L D L', then w = A^-1 d */
+    for (i = 0; i < 4; ++i) {
+        double di = A[i][i];
+        for (j = 0; j < i; ++j) {
+            double v = A[i][j];
+            for (k = 0; k < j; ++k) {
+                v -= L[i][k] * L[j][k] * dd[k];
+            }
+            L[i][j] = v / dd[j];
+            di -= L[i][j] * v;
+        }
+        dd[i] = di;
+    }
+    for (i = 0; i < 4; ++i) {
+        y[i] = d[i];
+        for (k = 0; k < i; ++k) {
+            y[i] -= L[i][k] * y[k];
+        }
+    }
+    for (i = 3; i >= 0; --i) {
+        w[i] = y[i] / dd[i];
+        for (k = i + 1; k < 4; ++k) {
+            w[i] -= L[k][i] * w[k];
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        s += d[i] * w[i];
+        e += 2.0 * fabs(w[i]) * (a->bx[i] + b->bx[i]);
+        for (j = 0; j < 4; ++j) {
+            e += fabs(w[i] * w[j]) * (a->bP[i][j] + b->bP[i][j] + ((F_VAR > 0) ? ldexp(1.0, -F_VAR) : 0.0));
+        }
+    }
+    *bound = e + ldexp(s, -20) + ((F_VAR > 0) ? ldexp(1.0, -24) : 0.0);
+    return s;
+}
+
+void test_merge_at_two_exponents(void)
+{
+    int pass;
+    for (pass = 0; pass < 2; ++pass) {
+        mtt_params p;
+        mtt_stats st;
+        mtt_track_view v;
+        ref ra, rb;
+        size_t n;
+        double d2, bound;
+        double z[2] = {101.3, 100.9};
+        mtt_meas m;
+        scene_params(&p, MTT_ASSOC_IPDA);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        seed_ref(&ra, 100.0, 100.0, 1.0, 0.5, 0.25);
+        seed_ref(&rb, 100.5, 100.25, 2.0, -0.5, 4.0);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, to_q(0.0, F_TIME), NULL, 0));
+        m = sim_meas(to_q(z[0], F_POS), to_q(z[1], F_POS), to_q(0.0, F_POS), 0);
+        z[0] = from_q(m.x, F_POS);
+        z[1] = from_q(m.y, F_POS);
+        ref_step(&ra, &p, z);
+        ref_step(&rb, &p, z);
+        d2 = merge_d2(&ra, &rb, &bound);
+        TEST_ASSERT_TRUE_MESSAGE(bound <= 1e-3 * d2, "the bound of d^2 tests nothing");
+        set1(&p, "merge_threshold", (pass == 0) ? d2 + bound : d2 - bound);
+        /* the threshold is read at init: a second tracker, same seeds */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        seed_ref(&ra, 100.0, 100.0, 1.0, 0.5, 0.25);
+        seed_ref(&rb, 100.5, 100.25, 2.0, -0.5, 4.0);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, to_q(0.0, F_TIME), NULL, 0));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, to_q(1.0, F_TIME), &m, 1));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+        if (pass == 0) {
+            TEST_ASSERT_EQUAL_UINT32(1u, st.last.merges);
+            TEST_ASSERT_EQUAL_UINT(1u, (unsigned)n);
+            /* the survivor: the smaller position trace, the first seed */
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+            TEST_ASSERT_EQUAL_UINT32(0u, v.id);
+        } else {
+            TEST_ASSERT_EQUAL_UINT32(0u, st.last.merges);
+            TEST_ASSERT_EQUAL_UINT(2u, (unsigned)n);
+        }
+    }
+}
+
 /* ---- two targets in clutter: the pipeline as a whole ---- */
 
 void test_two_targets_in_clutter(void)
@@ -736,6 +861,7 @@ int main(void)
     RUN_TEST(test_time_steps_and_wrap);
     RUN_TEST(test_seed_view_round_trip);
     RUN_TEST(test_single_target_against_reference);
+    RUN_TEST(test_merge_at_two_exponents);
     RUN_TEST(test_two_targets_in_clutter);
     return UNITY_END();
 }
