@@ -440,6 +440,11 @@ int main(int argc, char **argv)
             if (mtt_params_default(&p) != MTT_OK)
                 return 2;
             p.association = (mtt_assoc)k;
+            if (MTT_REAL_KIND > 2) {
+                const double dens = 5e-6; /* the fixed-point build needs it declared */
+                if (mtt_params_set(&p, "clutter_density", &dens, 1) != MTT_OK)
+                    return 2;
+            }
             if (mtt_params_check(&p, NULL) != MTT_OK)
                 continue; /* not built yet */
             rc = run((mtt_assoc)k, frames, seed, progress, &r);

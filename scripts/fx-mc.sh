@@ -7,10 +7,13 @@
 #
 #   scripts/fx-mc.sh [RUNS] [SCENARIO...]     (default 200; crossing3 formations dim)
 #
-# Needs build/host-float and build/host-fixed (cmake --preset ...; cmake
-# --build --preset ...).  Both run lm_ihpda_variant s0 (the fixed-point
-# build has no contest variant).  Output under build/fx-mc/; the table
-# (Markdown) on stdout.  GOSPA goal: fixed within 3 % of float.
+# The fixed side is build/host-fixed's mtt-track (cmake --workflow --preset
+# test-fixed, or configure + build the preset); the float side is the same
+# configuration in float, built here into build/fx-float (the host-float-small
+# preset with the tools on): the same bounds (MTT_MAX_TRACKS 16, ...), so the
+# tables compare the arithmetic alone.  Both run lm_ihpda_variant s0 (the
+# fixed-point build has no contest variant).  Output under build/fx-mc/; the
+# table (Markdown) on stdout.  GOSPA goal: fixed within 3 % of float.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,8 +25,11 @@ SCENARIOS=("$@")
 MODES=(lm-ihpda ihpda lm-ipda ipda)
 OUT="$ROOT/build/fx-mc"
 JOBS="${JOBS:-2}"
-declare -A BIN=([float]="$ROOT/build/host-float/cli/mtt-track" [fixed]="$ROOT/build/host-fixed/cli/mtt-track")
+declare -A BIN=([float]="$ROOT/build/fx-float/cli/mtt-track" [fixed]="$ROOT/build/host-fixed/cli/mtt-track")
 
+cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \
+  -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
+cmake --build "$ROOT/build/fx-float" -j2 --target mtt-track >/dev/null
 for b in float fixed; do
   [[ -x "${BIN[$b]}" ]] || { echo "fx-mc: ${BIN[$b]} missing (build the host-$b preset)" >&2; exit 2; }
 done
