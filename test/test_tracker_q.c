@@ -174,6 +174,18 @@ void test_fixed_build_refusals(void)
 #else
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
 #endif
+#ifdef MTT_REAL_FIXED
+    {
+        /* R = sigma^2 outside the variance format (0, 32768) unit^2 */
+        const double small[2] = {1.0, 0.001}, large[2] = {200.0, 1.0};
+        scene_params(&p, MTT_ASSOC_IPDA);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_set(&p, "meas_sigma", small, 2));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
+        TEST_ASSERT_EQUAL_STRING("meas_sigma", field);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_set(&p, "meas_sigma", large, 2));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_init(&trk, &p));
+    }
+#endif
     scene_params(&p, MTT_ASSOC_IPDA);
     p.motion = MTT_MOTION_IMM;
     TEST_ASSERT_EQUAL_INT(MTT_WITH_IMM ? MTT_OK : MTT_ERR_UNSUPPORTED, mtt_tracker_init(&trk, &p));
