@@ -102,17 +102,7 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
  * Pp is as mtt_kalman_predict leaves it (largest mantissa below 2^28), K and
  * S^-1 as mtt_kalman_innov leaves them. */
 
-/* |OR| of n values: its bit length is that of the largest |value|. */
-static uint32_t or_abs(const int32_t *v, int n)
-{
-    uint32_t u = 0u;
-    int k;
-    for (k = 0; k < n; ++k) {
-        u |= (uint32_t)((v[k] < 0) ? -v[k] : v[k]);
-    }
-    return u;
-}
-
+#define or_abs(v, n) mtt_fx_or_abs((v), (n))
 #define MULQ(a, b) mtt_fx_mulq((a), (b), 30)
 
 static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
@@ -366,6 +356,7 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     return 0;
 }
 #undef MULQ
+#undef or_abs
 
 #else /* float, double */
 

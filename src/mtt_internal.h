@@ -87,6 +87,10 @@ int32_t mtt_fx_shift(int32_t v, int s);
 /* The exponent at which a block at exponent e whose entries' |OR| is u has
  * its largest entry on `top` bits (u = 0: e - top). */
 int mtt_fx_top_exp(int e, uint32_t u, int top);
+/* |OR| of n values: its bit length is that of the largest |value|. */
+uint32_t mtt_fx_or_abs(const int32_t *v, int n);
+/* v > 0 in Q frac as m 2^e with m in [2^29, 2^30]. */
+int32_t mtt_fx_unpack(int32_t v, int frac, int *e);
 #endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive

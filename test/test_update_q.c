@@ -406,6 +406,155 @@ static void test_pd_rejects(void)
 #endif
 }
 
+/* ---- the two-point birth (ALGORITHMS.md §12.1, TV10) and the velocity
+ * cap.  Fixed point: R and dt are exact in their formats here; R/dt is one
+ * quotient q (half a unit at its exponent e2), 2R/dt^2 = 2 q / dt a second
+ * one (half a unit at e3, plus q's half unit times 2/dt, at most half a
+ * unit at e3 since 2^e2 / dt <= 2^(e3 - 1)); the three blocks meet at the
+ * largest exponent E (half a unit) and P is renormalised (half a unit of
+ * P).  Each block's largest entry has at least 26 bits, so E <= e(P) + 2:
+ * |error| <= 1.5 2^E + 0.5 u(P) <= 6.5 u(P), u(P) = 2^e(P). ---- */
+static const double tv10_P1[16] = {1, 0, 1, 0, 0, 1, 0, 1, 1, 0, 2, 0, 0, 1, 0, 2};
+static const double tv10_P2[16] = {4, 0, 8, 0, 0, 9, 0, 18, 8, 0, 32, 0, 0, 18, 0, 72};
+
+#ifdef MTT_REAL_FIXED
+#define DT(v) ((mtt_real)llround(ldexp((v), MTT_FX_T_FRAC)))
+#define UNIT(P) ldexp(1.0, MTT_COV_E(P))
+#else
+#define DT(v) ((mtt_real)(v))
+#define UNIT(P) 0.0
+#endif
+
+static void check_cov(mtt_cov P, const double *want, double tol)
+{
+    int i, k;
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            TEST_ASSERT_TRUE(P[i][k] == P[k][i]);
+#ifdef MTT_REAL_FIXED
+            tv_assert_q(want[4 * i + k], tv_cov_at(P, i, k), tol, "P", __LINE__);
+            worst = fmax(worst, fabs(tv_cov_at(P, i, k) - want[4 * i + k]) / tol);
+#else
+            (void)tol;
+            TV_ASSERT_REAL_MSG(want[4 * i + k], tv_cov_at(P, i, k), "P");
+#endif
+        }
+    }
+}
+
+static void two_point(double r11, double r12, double r22, double dt, const double *want)
+{
+    const mtt_real R[3] = {VAR(r11), VAR(r12), VAR(r22)};
+    mtt_cov P;
+    mtt_motion_two_point_cov(R, DT(dt), P);
+    check_cov(P, want, 6.5 * UNIT(P));
+}
+
+static void test_tv10_two_point(void)
+{
+    static const double full[16] = {4, 1, 8, 2, 1, 9, 2, 18, 8, 2, 32, 8, 2, 18, 8, 72};
+    two_point(1.0, 0.0, 1.0, 1.0, tv10_P1);  /* TV10 case 1 */
+    two_point(4.0, 0.0, 9.0, 0.5, tv10_P2);  /* TV10 case 2 */
+    two_point(4.0, 1.0, 9.0, 0.5, full);     /* an off-diagonal R term */
+    {
+        /* TV2's R (0.3 as its Q16 value in the fixed build), dt 3: inexact
+         * quotients */
+        const double r[3] = {1.0, VAR_D(VAR(0.3)), 2.0}, dt = 3.0;
+        double w[16];
+        int i, j;
+        for (i = 0; i < 2; ++i) {
+            for (j = 0; j < 2; ++j) {
+                const double rr = r[i + j];
+                w[4 * i + j] = rr;
+                w[4 * i + j + 2] = rr / dt;
+                w[4 * (i + 2) + j] = rr / dt;
+                w[4 * (i + 2) + j + 2] = 2.0 * rr / (dt * dt);
+            }
+        }
+        two_point(1.0, 0.3, 2.0, dt, w);
+    }
+}
+
+static mtt_mstore mstore(double x, double y)
+{
+    mtt_mstore m;
+    memset(&m, 0, sizeof m);
+    m.x = POS(x);
+    m.y = POS(y);
+    return m;
+}
+
+/* TV10 case 1: a = (100, 200), b = (130, 190), dt 1, R = I, vmax 60 (no
+ * cap: 2R/dt^2 = 2 < 3600).  x is exact in every build. */
+static void test_tv10_birth(void)
+{
+    const mtt_mstore a = mstore(100.0, 200.0), b = mstore(130.0, 190.0);
+    const mtt_real R[3] = {VAR(1.0), VAR(0.0), VAR(1.0)};
+    static const double xw[4] = {130.0, 190.0, 30.0, -10.0};
+    mtt_state x;
+    mtt_cov P;
+    int i;
+    mtt_motion_birth(&a, &b, DT(1.0), R, POS(60.0), x, P);
+    for (i = 0; i < 4; ++i) {
+        TV_ASSERT_Q(xw[i], x[i], MTT_FX_POS_FRAC, 0.0);
+    }
+    check_cov(P, tv10_P1, 6.5 * UNIT(P));
+}
+
+/* Detections 2^-10 frames apart with sigma 32 (as test_regress.c's F6):
+ * 2R/dt^2 = 2^31 > vmax^2 = 3600, so the velocity rows and columns are
+ * scaled by c = sqrt(3600 / 2^31) (P_vv = 3600).  Fixed point: c is formed
+ * before the blocks meet, to 2^-27 relative (vmax^2 and the quotient on
+ * 29 bits, the square root on 29 bits: three half units), and each of the
+ * n = 0, 1, 2 factors c of an entry adds it and one product (0.5008 unit
+ * of a block with at least 26 bits): with B_n the largest entry of the
+ * block, |error| <= n (2^-27 + 2^-26) B_n + the two-point 6.5 u(P). */
+static void test_velocity_cap(void)
+{
+    const double r = 1024.0, dt = ldexp(1.0, -10), vmax = 60.0;
+    const mtt_mstore a = mstore(10.0, 20.0), b = mstore(10.0, 20.0);
+    const mtt_real R[3] = {VAR(r), VAR(0.0), VAR(r)};
+    const double c = sqrt(vmax * vmax / (2.0 * r / (dt * dt)));
+    double P0[16], want[16];
+    mtt_state x;
+    mtt_cov P;
+    int i, k;
+    for (i = 0; i < 2; ++i) {
+        for (k = 0; k < 2; ++k) {
+            const double rr = (i == k) ? r : 0.0;
+            P0[4 * i + k] = rr;
+            P0[4 * i + k + 2] = rr / dt;
+            P0[4 * (i + 2) + k] = rr / dt;
+            P0[4 * (i + 2) + k + 2] = 2.0 * rr / (dt * dt);
+        }
+    }
+    for (i = 0; i < 16; ++i) {
+        want[i] = P0[i] * ((i / 4 >= 2) ? c : 1.0) * ((i % 4 >= 2) ? c : 1.0);
+    }
+    mtt_motion_birth(&a, &b, DT(dt), R, POS(vmax), x, P);
+    TV_ASSERT_Q(0.0, x[2], MTT_FX_POS_FRAC, 0.0);
+#ifdef MTT_REAL_FIXED
+    {
+        double B[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < 16; ++i) {
+            const int n = (i / 4 >= 2) + (i % 4 >= 2);
+            B[n] = fmax(B[n], fabs(want[i]));
+        }
+        for (i = 0; i < 4; ++i) {
+            for (k = 0; k < 4; ++k) {
+                const int n = (i >= 2) + (k >= 2);
+                const double tol = n * (ldexp(1.0, -27) + ldexp(1.0, -26)) * B[n] + 6.5 * UNIT(P);
+                tv_assert_q(want[4 * i + k], tv_cov_at(P, i, k), tol, "capped P", __LINE__);
+                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - want[4 * i + k]) / tol);
+            }
+        }
+    }
+#else
+    check_cov(P, want, 0.0);
+#endif
+    TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(P, MTT_SEED_COV_MARGIN));
+}
+
 static void report(void)
 {
 #ifdef MTT_REAL_FIXED
@@ -422,6 +571,9 @@ int main(void)
     RUN_TEST(test_tv6_pda);
     RUN_TEST(test_quad_and_pd);
     RUN_TEST(test_pd_rejects);
+    RUN_TEST(test_tv10_two_point);
+    RUN_TEST(test_tv10_birth);
+    RUN_TEST(test_velocity_cap);
     report();
     return UNITY_END();
 }

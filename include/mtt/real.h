@@ -170,6 +170,8 @@ typedef int32_t mtt_pos;
 #define MTT_COV_E(P) ((P)[MTT_MAX_STATE][0])
 /* dt = 1 frame (the common case) multiplies by nothing. */
 #define MTT_MUL_T(dt, v) (((dt) == ((int32_t)1 << MTT_FX_T_FRAC)) ? (v) : mtt_fx_mul((dt), (v), MTT_FX_T_FRAC))
+/* v / dt (a position difference over Q16 frames: a velocity), saturated. */
+#define MTT_DIV_T(v, dt) mtt_fx_div((v), (dt), MTT_FX_T_FRAC)
 /* (a + b) / 2 without forming a + b (no headroom needed), rounded down. */
 #define MTT_MEAN2(a, b) (((a) >> 1) + ((b) >> 1) + ((a) & (b) & 1))
 #define MTT_COV_FIT(P, dt) mtt_fx_cov_fit((P), (dt))
@@ -265,6 +267,7 @@ typedef mtt_real mtt_pos;
 
 #define MTT_COV_ROWS(n) (n)
 #define MTT_MUL_T(dt, v) ((dt) * (v))
+#define MTT_DIV_T(v, dt) ((v) / (dt))
 #define MTT_MEAN2(a, b) (MTT_R(0.5) * ((a) + (b)))
 #define MTT_COV_FIT(P, dt) ((void)0)
 #define MTT_COV_ALIGN(A, B) ((void)0)
