@@ -30,6 +30,7 @@
 #include "mtt_internal.h"
 #include "tv_assert.h"
 #include "tv_cov.h"
+#include "tv_fixture.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -181,25 +182,20 @@ static double worst = 0.0; /* largest |error| / tolerance seen */
 
 /* mtt_kalman_pda on f with m measurements z and betas, against x_want and
  * P_want (the test vector). */
-static void check_pda(struct fix *f, int m, const double z[][2], const double *beta_d,
-                      double beta0_d, const double *x_want, const double *P_want)
+static void check_result(struct fix *f, int m, const double z[][2], const double *beta_d,
+                         mtt_real beta0, const double *x_want, const double *P_want, const mtt_real *x,
+                         mtt_cov P)
 {
-    mtt_real nu[3][2], beta[3];
     double nud[3][2], bd[3], xr[4], Pr[16], c[2], T, numax = 0.0;
-    mtt_state x;
-    mtt_cov P;
     int i, k, j;
     for (j = 0; j < m; ++j) {
         for (k = 0; k < 2; ++k) {
-            nu[j][k] = POS(z[j][k]) - f->xp[k];
-            nud[j][k] = POS_D(nu[j][k]);
+            nud[j][k] = POS_D(POS(z[j][k]) - f->xp[k]);
             numax = fmax(numax, fabs(nud[j][k]));
         }
-        beta[j] = PROB(beta_d[j]);
-        bd[j] = PROB_D(beta[j]);
+        bd[j] = PROB_D(PROB(beta_d[j]));
     }
-    mtt_kalman_pda(f->xp, f->Pp, f->K, f->Si, f->R, (uint16_t)m, nu, beta, PROB(beta0_d), x, P);
-    T = pda_ref(f, m, (const double(*)[2])nud, bd, PROB_D(PROB(beta0_d)), xr, Pr, c);
+    T = pda_ref(f, m, (const double(*)[2])nud, bd, PROB_D(beta0), xr, Pr, c);
     for (i = 0; i < 4; ++i) {
         TV_ASSERT_REAL_MSG(x_want[i], xr[i], "x of the quantised inputs");
         for (k = 0; k < 4; ++k) {
@@ -230,6 +226,25 @@ static void check_pda(struct fix *f, int m, const double z[][2], const double *b
     TV_ASSERT_VEC(x_want, x, 4);
     TV_ASSERT_MAT4(P_want, P);
 #endif
+}
+
+static void check_pda(struct fix *f, int m, const double z[][2], const double *beta_d,
+                      double beta0_d, const double *x_want, const double *P_want)
+{
+    mtt_real nu[3][2], beta[3];
+    mtt_state x;
+    mtt_cov P;
+    int k, j;
+    memset(nu, 0, sizeof nu);
+    memset(beta, 0, sizeof beta);
+    for (j = 0; j < m; ++j) {
+        for (k = 0; k < 2; ++k) {
+            nu[j][k] = POS(z[j][k]) - f->xp[k];
+        }
+        beta[j] = PROB(beta_d[j]);
+    }
+    mtt_kalman_pda(f->xp, f->Pp, f->K, f->Si, f->R, (uint16_t)m, nu, beta, PROB(beta0_d), x, P);
+    check_result(f, m, z, beta_d, PROB(beta0_d), x_want, P_want, x, P);
 }
 
 /* One measurement, beta 1, beta0 0: the Kalman update (TV2 x_upd, P_upd). */
@@ -555,6 +570,134 @@ static void test_velocity_cap(void)
     TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(P, MTT_SEED_COV_MARGIN));
 }
 
+/* ---- the update stage (update.c) on a hand-built frame: TV2's track
+ * three times over TV5's measurements.  PDA kind (`ipda`): track 0 with
+ * TV6's betas and posterior existence, track 1 with no gated measurement
+ * (keeps its prediction, L = 1 - PD PG: TV5 m = 0), track 2 invalid
+ * (untouched).  ONE kind (`ihpda`): track 0 assigned TV5's z2 with its
+ * beta and L (TV5 x_upd, P_upd, existence), track 1 with none.  The
+ * states and covariances within check_result's tolerances; the existence
+ * of a track with no measurement within the roundings of L (its Q30
+ * product and Q16 conversion: 2^-17 + 2^-31) and of the update (its Q16
+ * numerator, 2^-17, and the Q30 quotient, 2^-31), through the condition
+ * factors dE/dL = P(1-P)/den^2 and (1 + E)/den (den = 1 - P + L P). ---- */
+static mtt_tracker trk;
+
+static const double tv5_src_beta[3] = {0.3499423017, 0.7912724307, 0.1716428718}; /* TV5 */
+static const double tv5_L2 = 6.870114355;                                        /* TV5 z2 */
+static const double tv5_xupd[4] = {107.481207, 46.56073435, 8.579750984, -4.025743815};
+static const double tv5_Pupd[16] = {4.189872991,  -0.6399013683, 2.243720278,  -0.5911472809,
+                                    -0.6399013683, 3.737083804,  -0.5636540844, 2.005445908,
+                                    2.243720278,  -0.5636540844, 4.846887268,  -0.1596150748,
+                                    -0.5911472809, 2.005445908,  -0.1596150748, 4.723167884};
+
+static void stage_setup(mtt_assoc mode, struct fix *f)
+{
+    int i, j, k;
+    memset(&trk, 0, sizeof trk);
+    tv2_fix(f);
+    TV_PAR(&trk).association = mode;
+    TV_PAR(&trk).pd = PROB(0.9);
+    TV_PAR(&trk).pg = PROB(0.99);
+    for (k = 0; k < 3; ++k) {
+        TV_R(&trk)[k] = f->R[k];
+    }
+    for (j = 0; j < 3; ++j) {
+        TV_MEAS_X(&trk, j) = POS(tv5_z[j][0]);
+        TV_MEAS_Y(&trk, j) = POS(tv5_z[j][1]);
+        TV_MEAS_SRC(&trk, j) = (uint32_t)(10 + j);
+    }
+    TV_N_MEAS(&trk) = 3;
+    TV_N_TRACKS(&trk) = 3;
+    for (i = 0; i < 3; ++i) {
+        memcpy(TV_XP(&trk, i), f->xp, sizeof f->xp);
+        memcpy(TV_PP(&trk, i), f->Pp, sizeof f->Pp);
+        memcpy(TV_S(&trk, i), f->S, sizeof f->S);
+        memcpy(TV_SI(&trk, i), f->Si, sizeof f->Si);
+        memcpy(TV_GAIN(&trk, i), f->K, sizeof f->K);
+        TV_DET_S(&trk, i) = f->det;
+        TV_EX_PRED(&trk, i) = PROB(0.6);
+        TV_VALID(&trk, i) = (uint8_t)(i < 2);
+        TV_ASSIGNED(&trk, i) = -1;
+        TV_X(&trk, i)[0] = POS(-1.0); /* the old state, replaced by every valid track */
+        TV_EXISTENCE(&trk, i) = PROB(0.5);
+    }
+    /* track 0's pairs: TV5's three measurements */
+    for (j = 0; j < 3; ++j) {
+        TV_PAIR_TRACK(&trk, j) = 0;
+        TV_PAIR_MEAS(&trk, j) = (uint16_t)j;
+    }
+    TV_N_PAIRS(&trk) = 3;
+    TV_PAIR_FIRST(&trk, 0) = 0;
+    TV_PAIR_COUNT(&trk, 0) = 3;
+    TV_PAIR_FIRST(&trk, 1) = 3;
+    TV_PAIR_COUNT(&trk, 1) = 0;
+}
+
+/* Track 1 (no measurement) and track 2 (invalid) after either kind. */
+static void check_unupdated(struct fix *f)
+{
+    const double pdpg = PROB_D(MTT_MUL_PP(PROB(0.9), PROB(0.99)));
+    const double L = 1.0 - pdpg, P = 0.6, den = 1.0 - P + L * P, E = L * P / den;
+    int i, k;
+    for (i = 0; i < 4; ++i) {
+        TEST_ASSERT_TRUE(TV_X(&trk, 1)[i] == f->xp[i]);
+        for (k = 0; k < 4; ++k) {
+            TEST_ASSERT_TRUE(TV_P(&trk, 1)[i][k] == f->Pp[i][k]); /* copied bit for bit */
+        }
+    }
+    TEST_ASSERT_TRUE(tv_cov_at(TV_P(&trk, 1), 0, 0) == tv_cov_at(f->Pp, 0, 0)); /* with its exponent */
+    TV_ASSERT_PROB(0.1405242802, TV_EXISTENCE(&trk, 1),
+                   P * (1.0 - P) / (den * den) * (ldexp(1.0, -17) + ldexp(1.0, -31)) +
+                       (1.0 + E) / den * ldexp(1.0, -17) + ldexp(1.0, -31)); /* TV5 m = 0 */
+    TEST_ASSERT_EQUAL_INT(-1, TV_TRACK_MEAS(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT8(1, TV_VALID(&trk, 1));
+    TEST_ASSERT_TRUE(TV_X(&trk, 2)[0] == POS(-1.0)); /* invalid: untouched */
+    TEST_ASSERT_TRUE(TV_EXISTENCE(&trk, 2) == PROB(0.5));
+}
+
+static void test_stage_pda(void)
+{
+    struct fix f;
+    int j;
+    stage_setup(MTT_ASSOC_IPDA, &f);
+    for (j = 0; j < 3; ++j) {
+        TV_PAIR_BETA(&trk, j) = PROB(tv6_beta[j]);
+    }
+    TV_BETA0(&trk, 0) = PROB(tv6_beta0);
+    TV_EX_POST(&trk, 0) = PROB(0.942486148);
+    mtt_update_frame(&trk);
+    check_result(&f, 3, tv5_z, tv6_beta, PROB(tv6_beta0), tv6_x, tv6_P, TV_X(&trk, 0), TV_P(&trk, 0));
+    TEST_ASSERT_TRUE(TV_EXISTENCE(&trk, 0) == PROB(0.942486148)); /* the association's */
+    TEST_ASSERT_EQUAL_INT(10, TV_TRACK_MEAS(&trk, 0));           /* largest beta: z1 */
+    TEST_ASSERT_EQUAL_UINT8(1, TV_VALID(&trk, 0));
+    check_unupdated(&f);
+}
+
+static void test_stage_one(void)
+{
+    struct fix f;
+    const double b = tv5_src_beta[1];
+    stage_setup(MTT_ASSOC_IHPDA, &f);
+    TV_ASSIGNED(&trk, 0) = 1; /* z2 */
+    TV_PAIR_BETA(&trk, 1) = PROB(b);
+    TV_PAIR_L(&trk, 1) = MTT_RATIO(6.870114355);
+    mtt_update_frame(&trk);
+    check_result(&f, 1, &tv5_z[1], &b, PROB(1.0) - PROB(b), tv5_xupd, tv5_Pupd, TV_X(&trk, 0),
+                 TV_P(&trk, 0));
+    {
+        /* P(exist | Z^k) = L P / (1 - P + L P): L's Q16 (2^-17) and the
+         * update's roundings as above */
+        const double P = 0.6, den = 1.0 - P + tv5_L2 * P, E = tv5_L2 * P / den;
+        TV_ASSERT_PROB(0.9115449069, TV_EXISTENCE(&trk, 0),
+                       P * (1.0 - P) / (den * den) * ldexp(1.0, -17) + (1.0 + E) / den * ldexp(1.0, -17) +
+                           ldexp(1.0, -31)); /* TV5 */
+    }
+    TEST_ASSERT_EQUAL_INT(11, TV_TRACK_MEAS(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT8(1, TV_VALID(&trk, 0));
+    check_unupdated(&f);
+}
+
 static void report(void)
 {
 #ifdef MTT_REAL_FIXED
@@ -574,6 +717,8 @@ int main(void)
     RUN_TEST(test_tv10_two_point);
     RUN_TEST(test_tv10_birth);
     RUN_TEST(test_velocity_cap);
+    RUN_TEST(test_stage_pda);
+    RUN_TEST(test_stage_one);
     report();
     return UNITY_END();
 }
