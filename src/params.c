@@ -282,6 +282,12 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
         bad = "clutter_density";
         st = MTT_ERR_UNSUPPORTED;
     }
+    if (bad == NULL && (!(MTT_VAR_OF(p->meas_sigma[0]) > 0) || !(MTT_VAR_OF(p->meas_sigma[0]) < MTT_FX_MAX) ||
+                        !(MTT_VAR_OF(p->meas_sigma[1]) > 0) || !(MTT_VAR_OF(p->meas_sigma[1]) < MTT_FX_MAX))) {
+        /* R = sigma^2 must be a variance of its format: (0, 32768) unit^2 */
+        bad = "meas_sigma";
+        st = MTT_ERR_PARAM;
+    }
     if (bad == NULL && p->init_gate == MTT_INIT_GATE_INTENSITY) {
         /* the intensity gate's f(I) coefficients (a2 = -1e-4) have no
          * precision in the amplitude format: the vmax circle only */

@@ -174,6 +174,18 @@ void test_fixed_build_refusals(void)
 #else
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
 #endif
+#ifdef MTT_REAL_FIXED
+    {
+        /* R = sigma^2 outside the variance format (0, 32768) unit^2 */
+        const double small[2] = {1.0, 0.001}, large[2] = {200.0, 1.0};
+        scene_params(&p, MTT_ASSOC_IPDA);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_set(&p, "meas_sigma", small, 2));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
+        TEST_ASSERT_EQUAL_STRING("meas_sigma", field);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_set(&p, "meas_sigma", large, 2));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_init(&trk, &p));
+    }
+#endif
     scene_params(&p, MTT_ASSOC_IPDA);
     p.motion = MTT_MOTION_IMM;
     TEST_ASSERT_EQUAL_INT(MTT_WITH_IMM ? MTT_OK : MTT_ERR_UNSUPPORTED, mtt_tracker_init(&trk, &p));
@@ -704,7 +716,7 @@ static void seed_ref(ref *r, double x0, double y0, double vx, double vy, double 
 
 static double merge_d2(const ref *a, const ref *b, double *bound)
 {
-    double A[4][4], w[4], d[4], L[4][4], dd[4], y[4], s = 0.0, e = 0.0;
+    double A[4][4], w[4], d[4], s = 0.0, e = 0.0;
     int i, j, k;
     for (i = 0; i < 4; ++i) {
         d[i] = a->x[i] - b->x[i];
@@ -712,29 +724,27 @@ static double merge_d2(const ref *a, const ref *b, double *bound)
             A[i][j] = a->P[i][j] + b->P[i][j];
         }
     }
-    /* A = L D L', then w = A^-1 d */
-    for (i = 0; i < 4; ++i) {
-        double di = A[i][i];
-        for (j = 0; j < i; ++j) {
-            double v = A[i][j];
-            for (k = 0; k < j; ++k) {
-                v -= L[i][k] * L[j][k] * dd[k];
+    /* w = A^-1 d by Gaussian elimination (A is positive definite: no
+     * pivoting), on copies */
+    {
+        double G[4][4], g[4];
+        memcpy(G, A, sizeof G);
+        memcpy(g, d, sizeof g);
+        for (k = 0; k < 4; ++k) {
+            for (i = k + 1; i < 4; ++i) {
+                const double f = G[i][k] / G[k][k];
+                for (j = k; j < 4; ++j) {
+                    G[i][j] -= f * G[k][j];
+                }
+                g[i] -= f * g[k];
             }
-            L[i][j] = v / dd[j];
-            di -= L[i][j] * v;
         }
-        dd[i] = di;
-    }
-    for (i = 0; i < 4; ++i) {
-        y[i] = d[i];
-        for (k = 0; k < i; ++k) {
-            y[i] -= L[i][k] * y[k];
-        }
-    }
-    for (i = 3; i >= 0; --i) {
-        w[i] = y[i] / dd[i];
-        for (k = i + 1; k < 4; ++k) {
-            w[i] -= L[k][i] * w[k];
+        for (i = 3; i >= 0; --i) {
+            w[i] = g[i];
+            for (j = i + 1; j < 4; ++j) {
+                w[i] -= G[i][j] * w[j];
+            }
+            w[i] /= G[i][i];
         }
     }
     for (i = 0; i < 4; ++i) {

@@ -228,6 +228,9 @@ typedef int32_t mtt_pos;
 #define MTT_COV_VIEW(P, i, j) mtt_fx_at((P)[i][j], MTT_COV_E(P), -MTT_FX_VAR_FRAC)
 #define MTT_COV_SET_E(P, e) (MTT_COV_E(P) = (e))
 #define MTT_COV_EMAX(A, B) ((MTT_COV_E(A) > MTT_COV_E(B)) ? MTT_COV_E(A) : MTT_COV_E(B))
+/* Constants of time (Q16 frames) and of the variance format. */
+#define MTT_TIME(x) MTT_FX_CONST(x, MTT_FX_T_FRAC)
+#define MTT_VAR(x) MTT_FX_CONST(x, MTT_FX_VAR_FRAC)
 
 #else /* float, double: every macro is the expression it stands for */
 
@@ -299,6 +302,8 @@ typedef mtt_real mtt_pos;
 #define MTT_COV_VIEW(P, i, j) ((P)[i][j])
 #define MTT_COV_SET_E(P, e) ((void)0)
 #define MTT_COV_EMAX(A, B) 0
+#define MTT_TIME(x) MTT_R(x)
+#define MTT_VAR(x) MTT_R(x)
 
 #endif /* MTT_REAL_FIXED */
 
