@@ -14,6 +14,7 @@
 # tables compare the arithmetic alone.  Both run lm_ihpda_variant s0 (the
 # fixed-point build has no contest variant).  Output under build/fx-mc/; the
 # table (Markdown) on stdout.  GOSPA goal: fixed within 3 % of float.
+# FX_MC_TABLE_ONLY=1 prints the table of the runs already under build/fx-mc/.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -35,6 +36,7 @@ for b in float fixed; do
 done
 for scn in "${SCENARIOS[@]}"; do
   for b in float fixed; do
+    [[ -n "${FX_MC_TABLE_ONLY:-}" ]] && continue # the table of the runs already made
     echo "fx-mc: $scn $b ($RUNS runs)" >&2
     PYTHONPATH=python nice -n 10 python3 -m mtt_sim.mc --scenario "scenarios/$scn.json" --runs "$RUNS" \
       --out "$OUT/$scn-$b" --mtt-track "${BIN[$b]}" --tracker mtt-track --assoc "${MODES[@]}" \

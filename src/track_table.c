@@ -12,7 +12,9 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
                      int confirmed, int born)
 {
     mtt_track *t;
+#if MTT_MAX_STATE > MTT_STATE_N
     int i;
+#endif
     if (trk->n_tracks >= MTT_MAX_TRACKS) {
         return -1;
     }
@@ -29,7 +31,6 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
     }
     MTT_COV_COPY_E(t->P, P);
 #else
-    (void)i;
     memcpy(t->x, x, sizeof t->x);
     memcpy(t->P, P, sizeof t->P);
 #endif
