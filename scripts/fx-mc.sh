@@ -31,6 +31,7 @@ declare -A BIN=([float]="$ROOT/build/fx-float/cli/mtt-track" [fixed]="$ROOT/buil
 cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \
   -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
 cmake --build "$ROOT/build/fx-float" -j2 --target mtt-track >/dev/null
+mkdir -p "$OUT"
 for b in float fixed; do
   [[ -x "${BIN[$b]}" ]] || { echo "fx-mc: ${BIN[$b]} missing (build the host-$b preset)" >&2; exit 2; }
 done
@@ -40,7 +41,7 @@ for scn in "${SCENARIOS[@]}"; do
     echo "fx-mc: $scn $b ($RUNS runs)" >&2
     PYTHONPATH=python nice -n 10 python3 -m mtt_sim.mc --scenario "scenarios/$scn.json" --runs "$RUNS" \
       --out "$OUT/$scn-$b" --mtt-track "${BIN[$b]}" --tracker mtt-track --assoc "${MODES[@]}" \
-      --set tracker.lm_ihpda_variant=s0 --no-plots --jobs "$JOBS" >/dev/null
+      --set tracker.lm_ihpda_variant=s0 --no-plots --jobs "$JOBS" >/dev/null 2>"$OUT/$scn-$b.log"
   done
 done
 
