@@ -63,6 +63,28 @@ static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real
     return MTT_IO_OK;
 }
 
+/* A scan's time as the tracker takes it: counted from the first scan's.
+ * Fixed point: Q16 of the file's time unit modulo 2^32, as the tracker
+ * compares times (docs/FIXED_POINT.md §3), so a file may be of any length
+ * (each step below 32768 units, checked with the order of the scans);
+ * float and double: mtt_io_to_real. */
+static int time_from0(double t, mtt_real *out)
+{
+#ifdef MTT_REAL_FIXED
+    const double s = t * (double)(1L << MTT_IO_TIME);
+    unsigned long long q;
+    uint32_t u;
+    if (!(s >= 0.0 && s < 9007199254740992.0)) /* 2^53: exact in a double */
+        return 0;
+    q = (unsigned long long)(s + 0.5);
+    u = (uint32_t)(q & 0xFFFFFFFFull);
+    *out = (u <= (uint32_t)INT32_MAX) ? (int32_t)u : -(int32_t)(~u) - 1; /* two's complement */
+    return 1;
+#else
+    return mtt_io_to_real(t, MTT_IO_TIME, out);
+#endif
+}
+
 static void *grow(void *p, size_t *cap, size_t elem)
 {
     size_t n = *cap != 0 ? 2 * *cap : 64;
@@ -115,7 +137,7 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
         return rc;
     if (prev == NULL)
         d->time0 = time;
-    if (!mtt_io_to_real(time - d->time0, MTT_IO_TIME, &rtime)) {
+    if (!time_from0(time - d->time0, &rtime)) {
         mtt_io_error_at(c->path, c->line, "time", "'%s' is too far from the first scan's time",
                         c->fields[COL_TIME]);
         return MTT_IO_EINPUT;
@@ -174,7 +196,17 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
                             c->fields[COL_TIME], t0, prev->scan, prev->line);
             return MTT_IO_EINPUT;
         }
-        if (prev != NULL && !(rtime > prev->rtime)) {
+#ifdef MTT_REAL_FIXED
+        if (prev != NULL && !((time - prev->time) * (double)(1L << MTT_IO_TIME) < 2147483647.0)) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' is too far after the time %s of scan %lu: a step of the "
+                            "fixed-point tracker is below 32768 time units",
+                            c->fields[COL_TIME], t0, prev->scan);
+            return MTT_IO_EINPUT;
+        }
+#endif
+        if (prev != NULL && !MTT_TIME_AFTER(rtime, prev->rtime)) {
             mtt_io_format_double(prev->time, t0, sizeof t0);
             mtt_io_format_double(d->time0, t1, sizeof t1);
             mtt_io_error_at(c->path, c->line, "time",

@@ -196,22 +196,43 @@ static void test_detections_out_of_range_counted(void)
     mtt_io_free_detections(&d);
 }
 
-/* Times must fit their format: beyond 32767 time units from the first scan
- * the fixed build refuses the file (the float build does not). */
+/* Time steps must fit the format: a step of 32768 time units or more is
+ * refused by the fixed build (the float build takes it); a long file of
+ * shorter steps is read, its times counted modulo 2^32 in Q16 as the
+ * tracker compares them (MTT_TIME_AFTER). */
 static void test_detections_time_range(void)
 {
     mtt_io_detections d;
-    const char *path = put_file("time.det.csv",
-                                "scan,time,x,y,amplitude\n"
-                                "1,5.0,1,2,\n"
-                                "2,40000.0,1,2,\n");
+    const char *gap = put_file("time.det.csv",
+                               "scan,time,x,y,amplitude\n"
+                               "1,5.0,1,2,\n"
+                               "2,40000.0,1,2,\n");
+    const char *longf = put_file("long.det.csv",
+                                 "scan,time,x,y,amplitude\n"
+                                 "1,0,1,2,\n"
+                                 "2,30000,1,2,\n"
+                                 "3,60000,1,2,\n"
+                                 "4,90000.5,1,2,\n");
+    size_t k;
     mtt_io_progname = "test_io_fixed";
 #ifdef MTT_REAL_FIXED
-    TEST_ASSERT_EQUAL_INT(MTT_IO_EINPUT, mtt_io_read_detections(path, &d));
+    TEST_ASSERT_EQUAL_INT(MTT_IO_EINPUT, mtt_io_read_detections(gap, &d));
 #else
-    TEST_ASSERT_EQUAL_INT(MTT_IO_OK, mtt_io_read_detections(path, &d));
+    TEST_ASSERT_EQUAL_INT(MTT_IO_OK, mtt_io_read_detections(gap, &d));
     mtt_io_free_detections(&d);
 #endif
+    TEST_ASSERT_EQUAL_INT(MTT_IO_OK, mtt_io_read_detections(longf, &d));
+    TEST_ASSERT_EQUAL_UINT(4u, d.n_scans);
+    for (k = 1; k < 4; ++k)
+        TEST_ASSERT_TRUE(MTT_TIME_AFTER(d.scans[k].rtime, d.scans[k - 1].rtime));
+#ifdef MTT_REAL_FIXED
+    /* 90000.5 * 2^16 modulo 2^32, as a signed word */
+    TEST_ASSERT_EQUAL_INT32((int32_t)(5898272768ll - 4294967296ll), d.scans[3].rtime);
+    TEST_ASSERT_EQUAL_INT32((int32_t)(30000 * 65536), MTT_TIME_SUB(d.scans[3].rtime, d.scans[2].rtime) - 32768);
+#else
+    TEST_ASSERT_TRUE(d.scans[3].rtime == MTT_R(90000.5));
+#endif
+    mtt_io_free_detections(&d);
 }
 
 /* Settings: each key in its row's format, read back through mtt_params_get
