@@ -12,24 +12,24 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
                      int confirmed, int born)
 {
     mtt_track *t;
-#if MTT_MAX_STATE > MTT_STATE_N
-    int i;
-#endif
     if (trk->n_tracks >= MTT_MAX_TRACKS) {
         return -1;
     }
     t = &trk->tracks[trk->n_tracks];
 #if MTT_MAX_STATE > MTT_STATE_N
-    /* The model's MTT_STATE_N leading components; the rest of the storage
-     * (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal inputs give
-     * equal tracker states byte for byte. */
-    memset(t->x, 0, sizeof t->x);
-    memset(t->P, 0, sizeof t->P);
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        t->x[i] = x[i];
-        memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
+    {
+        /* The model's MTT_STATE_N leading components; the rest of the
+         * storage (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal
+         * inputs give equal tracker states byte for byte. */
+        int i;
+        memset(t->x, 0, sizeof t->x);
+        memset(t->P, 0, sizeof t->P);
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            t->x[i] = x[i];
+            memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
+        }
+        MTT_COV_COPY_E(t->P, P);
     }
-    MTT_COV_COPY_E(t->P, P);
 #else
     memcpy(t->x, x, sizeof t->x);
     memcpy(t->P, P, sizeof t->P);
