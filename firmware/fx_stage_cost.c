@@ -2,7 +2,9 @@
  * arithmetic (mtt_kalman_predict + mtt_kalman_innov: ALGORITHMS.md §2, §3),
  * and of the gate's (ALGORITHMS.md §4: gate area, slice half-widths, the
  * likelihood peak, and d^2 with p for 4 candidates per track), on the
- * Cortex-M0+ under qemu, compiled once as the float build
+ * Cortex-M0+ under qemu, and of the update's (ALGORITHMS.md §6: the PDA
+ * update with 3 measurements and the positive-definiteness test of
+ * update.c), compiled once as the float build
  * (soft-float helpers) and once as the fixed-point build (MTT_REAL_FIXED,
  * docs/FIXED_POINT.md).  Built and run by scripts/fx-cost.sh; not part of
  * the firmware example.
@@ -10,7 +12,9 @@
  * N tracks with different states and covariances are predicted over one
  * frame; SysTick (40 instructions per tick under -icount shift=0) times the
  * loop.  Output: "S <build> predict+innov <instructions per track>" and
- * "S <build> gate (4 candidates) <instructions per track>". */
+ * "S <build> gate (4 candidates) <instructions per track>",
+ * "S <build> update (PDA 3 + cov_ok) <instructions per track>" and
+ * "S <build> cov_ok <instructions per track>". */
 #include <stdint.h>
 #include <string.h>
 
@@ -29,6 +33,8 @@ static mtt_cov P[N], Pp[N];
 static mtt_real S[N][MTT_SYM_SLOTS], Si[N][MTT_SYM_SLOTS], det[N], K[N][MTT_MAX_STATE][2];
 static volatile int sink;
 static mtt_real gsink[N];
+static mtt_state xu[N];
+static mtt_cov Pu[N];
 
 /* Candidate offsets from the prediction (TV3's, gated ones). */
 static const mtt_pos off[4][2] = {{MTT_POS(0.8), MTT_POS(-0.5)}, {MTT_POS(-3.5), MTT_POS(2.4)},
@@ -85,11 +91,15 @@ int main(void)
                            MTT_FX_CONST(2.0, MTT_FX_VAR_FRAC)};
     const char *build = "S fixed predict+innov ";
     const char *gbuild = "S fixed gate (4 candidates) ";
+    const char *ubuild = "S fixed update (PDA 3 + cov_ok) ";
+    const char *cbuild = "S fixed cov_ok ";
 #else
     const mtt_real dt = MTT_R(1.0), sw = MTT_R(5.0);
     const mtt_real R[3] = {MTT_R(1.0), MTT_R(0.3), MTT_R(2.0)};
     const char *build = "S float predict+innov ";
     const char *gbuild = "S float gate (4 candidates) ";
+    const char *ubuild = "S float update (PDA 3 + cov_ok) ";
+    const char *cbuild = "S float cov_ok ";
 #endif
     const mtt_d2 gamma = mtt_gate_gamma(MTT_P(0.99));
     uint32_t c0, c1;
@@ -128,6 +138,32 @@ int main(void)
     c1 = SYST_CVR;
     sink = ok;
     report(gbuild, c0, c1, ok > 0);
+    {
+        /* TV6-like betas over the first three candidates */
+        const mtt_prob beta[3] = {MTT_P(0.62), MTT_P(0.23), MTT_P(0.14)};
+        mtt_real nu[3][2];
+        for (k = 0; k < 3; ++k) {
+            nu[k][0] = off[k][0];
+            nu[k][1] = off[k][1];
+        }
+        ok = 0;
+        c0 = SYST_CVR;
+        for (i = 0; i < N; ++i) {
+            mtt_kalman_pda(xp[i], Pp[i], K[i], Si[i], R, 3, nu, beta, MTT_P(0.01), xu[i], Pu[i]);
+            ok += mtt_cov_ok(Pu[i], MTT_FRAME_COV_MARGIN);
+        }
+        c1 = SYST_CVR;
+        sink = ok;
+        report(ubuild, c0, c1, ok == N);
+        ok = 0;
+        c0 = SYST_CVR;
+        for (i = 0; i < N; ++i) {
+            ok += mtt_cov_ok(Pu[i], MTT_FRAME_COV_MARGIN);
+        }
+        c1 = SYST_CVR;
+        sink = ok;
+        report(cbuild, c0, c1, ok == N);
+    }
     semihost_write0("END ok\n");
     return 0;
 }

@@ -251,7 +251,8 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
  * so with A normalised to 29 bits nothing leaves the format; one
  * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
  * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
- * bits; returns 0, or -1 when a pivot is not positive. */
+ * bits; returns 0, or -1 when a pivot is not positive.  The last pivot's
+ * reciprocal only when `last` (the quadratic form needs it, the test not). */
 struct ldl_fx {
     int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], e[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
     int32_t r[MTT_MAX_STATE];
@@ -265,7 +266,7 @@ static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
     return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
 }
 
-static int ldl_fx(mtt_cov A, struct ldl_fx *f)
+static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
 {
     uint32_t u = 0u;
     int i, j, k, sh;
@@ -296,8 +297,10 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f)
             return -1;
         }
         f->d[i] = di;
-        f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
-        f->r[i] = mtt_fx_recip(di, f->rho[i]);
+        if (i + 1 < MTT_STATE_N || last) {
+            f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
+            f->r[i] = mtt_fx_recip(di, f->rho[i]);
+        }
     }
     return 0;
 }
@@ -307,7 +310,7 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
     struct ldl_fx f;
     int i;
     /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
-    if (ldl_fx(P, &f) != 0) {
+    if (ldl_fx(P, &f, 0) != 0) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -325,7 +328,7 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     int ex[MTT_MAX_STATE];
     int32_t acc = 0;
     int i, k, s, e = -127;
-    if (ldl_fx(A, &f) != 0) {
+    if (ldl_fx(A, &f, 1) != 0) {
         return -1;
     }
     /* b at 2^-(F + s) on 24 bits, so that y = L^-1 b (|y_i| <= sqrt(d2 d_i))
