@@ -251,13 +251,18 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
  * so with A normalised to 29 bits nothing leaves the format; one
  * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
  * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
- * bits; returns 0, or -1 when a pivot is not positive.  The last pivot's
- * reciprocal only when `last` (the quadratic form needs it, the test not). */
+ * bits, each row and column i then scaled by 2^t_i so that every diagonal
+ * entry has 28 or 29 bits (D A D: the pivot ratios d_i / a_ii do not
+ * change, and a block whose variances span many bits keeps the precision
+ * of its small ones, as float's per-value exponent does); returns 0, or
+ * -1 when a pivot is not positive.  The last pivot's reciprocal only when
+ * `last` (the quadratic form needs it, the test not). */
 struct ldl_fx {
     int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], e[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
     int32_t r[MTT_MAX_STATE];
     int rho[MTT_MAX_STATE];
-    int ea; /* a's exponent */
+    int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
+    int ea;               /* a's exponent */
 };
 
 /* a b / d_k, saturated */
@@ -279,8 +284,20 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
     sh = mtt_fx_top_exp(0, u, 29);
     f->ea = MTT_COV_E(A) + sh;
     for (i = 0; i < MTT_STATE_N; ++i) {
+        const int32_t aii = mtt_fx_shift(A[i][i], -sh);
+        if (!(aii > 0)) {
+            return -1;
+        }
+        f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = 0; j < MTT_STATE_N; ++j) {
-            f->a[i][j] = mtt_fx_shift(A[i][j], -sh);
+            const int32_t v = A[i][j];
+            const int tt = f->t[i] + f->t[j] - sh;
+            /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
+             * A; beyond 2^30 it is not, and saturates */
+            f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
+                                                                          : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
         }
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -331,14 +348,20 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     if (ldl_fx(A, &f, 1) != 0) {
         return -1;
     }
-    /* b at 2^-(F + s) on 24 bits, so that y = L^-1 b (|y_i| <= sqrt(d2 d_i))
+    /* D b at 2^-(F + s) on 24 bits, so that y = L^-1 D b (|y_i| <= sqrt(d2 d_i))
      * stays in the format unless the form is far beyond every threshold
      * (it saturates).  Each y_i^2 / d_i is formed on 29 bits with its own
      * exponent (relative to 2^(-2 (F + s) - ea)), then the four are summed
      * at the largest exponent plus two. */
-    s = -mtt_fx_top_exp(0, or_abs(b, MTT_STATE_N), 24);
     for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t v = mtt_fx_shift(b[i], s), q;
+        /* D b: the largest |b_i| 2^t_i on 24 bits */
+        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 24);
+        e = (k > e) ? k : e;
+    }
+    s = -e;
+    e = -127;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
         int sh;
         for (k = 0; k < i; ++k) {
             v = MTT_SUBS(v, over_pivot(&f, f.e[i][k], y[k], k));

@@ -19,7 +19,15 @@
  * final renormalisation: 3.  21 roundings in units of the largest of the
  * three terms T = max(beta0 |P^|, (1 - beta0) |P_c|, |K M K'|); with the
  * blocks' sizes at most 2 bits below their bounds (the alignments use the
- * measured sizes):  tol_P = 21 x 4 x 2^-28 T.
+ * measured sizes):  21 x 4 x 2^-28 T.  The spread sum beta (nu - nu_c)
+ * (nu - nu_c)' is held at the scale of the innovations, whose largest
+ * |nu| has 28 bits (unit u <= 2^-27 max|nu|): nu's shift and nu_c's m
+ * roundings move each nu - nu_c by at most (m/2 + 1) u, the two products
+ * per term and the (1 - sum beta) nu_c nu_c' term add their roundings, in
+ * all at most (4 m + 12) u max|nu| <= (4 m + 12) 2^-27 max|nu|^2 on an
+ * entry of M, which reaches P through K M K':
+ *   tol_P(i, k) = 84 2^-28 T
+ *                 + (4 m + 12) 2^-27 max|nu|^2 (|K_i0| + |K_i1|) (|K_k0| + |K_k1|).
  * Tolerance of x: the state moves by K nu_c rounded to the position format
  * (half a unit), nu_c carries one rounding per measurement plus the shift
  * of nu (units of 2^-27 max|nu|), times |K_i0| + |K_i1|, and K nu_c's two
@@ -213,8 +221,11 @@ static void check_result(struct fix *f, int m, const double z[][2], const double
             tv_assert_q(xr[i], POS_D(x[i]), tolx, "x", __LINE__);
             worst = fmax(worst, fabs(POS_D(x[i]) - xr[i]) / tolx);
             for (k = 0; k < 4; ++k) {
-                tv_assert_q(Pr[4 * i + k], tv_cov_at(P, i, k), tolP, "P", __LINE__);
-                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - Pr[4 * i + k]) / tolP);
+                const double ks = (fabs(K_D(f, i, 0)) + fabs(K_D(f, i, 1))) *
+                                  (fabs(K_D(f, k, 0)) + fabs(K_D(f, k, 1)));
+                const double tol = tolP + (4.0 * m + 12.0) * ldexp(numax * numax, -27) * ks;
+                tv_assert_q(Pr[4 * i + k], tv_cov_at(P, i, k), tol, "P", __LINE__);
+                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - Pr[4 * i + k]) / tol);
             }
         }
         /* stored renormalised: the largest mantissa on 28 bits */
@@ -408,6 +419,18 @@ static void test_pd_rejects(void)
     tv_cov_set(A, near, -28);
     TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_SEED_COV_MARGIN));
 #endif
+    {
+        /* variances 2^24 and 1 (a 2^24 dynamic range in one block), their
+         * correlation 1 - 2^-13: d_1 / P_11 = 2.44e-4, above both margins
+         * in float; exact in every format here.  The fixed test scales each
+         * row and column to its own variance (D A D) and resolves it too */
+        double wide[16] = {16777216.0, 4095.5, 0, 0, 4095.5, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        tv_cov_set(A, wide, -4);
+        TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+        wide[1] = wide[4] = 4096.0; /* correlation 1: singular */
+        tv_cov_set(A, wide, -4);
+        TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    }
 #ifdef MTT_REAL_FIXED
     /* far beyond every threshold: saturates, never wraps */
     {
