@@ -274,6 +274,15 @@ static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
     return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
 }
 
+/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
+ * have left its pivot positive: then both are below a_ii, a_jj < 2^30
+ * and so is their geometric mean, and the fast multiply cannot overflow
+ * (its shift rho_k - 30 >= 19; below that, the exact one) */
+static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+{
+    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
+}
+
 static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
 {
     uint32_t u = 0u;
@@ -308,10 +317,13 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
         for (j = 0; j < i; ++j) {
             int32_t v = f->a[i][j];
             for (k = 0; k < j; ++k) {
-                v = MTT_SUBS(v, over_pivot(f, f->a[i][k], f->a[j][k], k));
+                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
             }
             f->a[i][j] = v;
             di = MTT_SUBS(di, over_pivot(f, v, v, j));
+            if (!(di > 0)) {
+                return -1; /* the pivot only decreases from here */
+            }
         }
         if (!(di > 0) || !mtt_isfinite(di)) {
             return -1;
