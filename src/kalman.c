@@ -111,8 +111,9 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
 {
     int32_t AP[MTT_MAX_STATE][MTT_MAX_STATE];
     int32_t A[MTT_MAX_STATE][2], Kn[MTT_MAX_STATE][2];
-    int32_t t1[MTT_MAX_STATE * MTT_MAX_STATE], t2[MTT_MAX_STATE * MTT_MAX_STATE];
-    int32_t t3[MTT_MAX_STATE * MTT_MAX_STATE];
+    /* the upper triangles of the three terms */
+    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t2[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
     int32_t Rn[3], M[3], sp[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
     const int32_t w = MTT_P(1.0) - beta0;
     const int eP = MTT_COV_E(Pp);
@@ -251,12 +252,20 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
  * so with A normalised to 29 bits nothing leaves the format; one
  * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
  * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
- * bits; returns 0, or -1 when a pivot is not positive. */
+ * bits, each row and column i then scaled by 2^t_i so that every diagonal
+ * entry has 28 or 29 bits (D A D: the pivot ratios d_i / a_ii do not
+ * change, and a block whose variances span many bits keeps the precision
+ * of its small ones, as float's per-value exponent does); returns 0, or
+ * -1 when a pivot is not positive.  The last pivot's reciprocal only when
+ * `last` (the quadratic form needs it, the test not). */
 struct ldl_fx {
-    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], e[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
+    /* a's lower triangle is overwritten by E (each a_ij is read once, when
+     * E_ij is formed) */
+    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
     int32_t r[MTT_MAX_STATE];
     int rho[MTT_MAX_STATE];
-    int ea; /* a's exponent */
+    int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
+    int ea;               /* a's exponent */
 };
 
 /* a b / d_k, saturated */
@@ -265,7 +274,16 @@ static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
     return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
 }
 
-static int ldl_fx(mtt_cov A, struct ldl_fx *f)
+/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
+ * have left its pivot positive: then both are below a_ii, a_jj < 2^30
+ * and so is their geometric mean, and the fast multiply cannot overflow
+ * (its shift rho_k - 30 >= 19; below that, the exact one) */
+static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+{
+    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
+}
+
+static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
 {
     uint32_t u = 0u;
     int i, j, k, sh;
@@ -278,8 +296,20 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f)
     sh = mtt_fx_top_exp(0, u, 29);
     f->ea = MTT_COV_E(A) + sh;
     for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j < MTT_STATE_N; ++j) {
-            f->a[i][j] = mtt_fx_shift(A[i][j], -sh);
+        const int32_t aii = mtt_fx_shift(A[i][i], -sh);
+        if (!(aii > 0)) {
+            return -1;
+        }
+        f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j <= i; ++j) { /* the lower triangle: A is symmetric */
+            const int32_t v = A[i][j];
+            const int tt = f->t[i] + f->t[j] - sh;
+            /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
+             * A; beyond 2^30 it is not, and saturates */
+            f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
+                                                                          : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
         }
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -287,17 +317,22 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f)
         for (j = 0; j < i; ++j) {
             int32_t v = f->a[i][j];
             for (k = 0; k < j; ++k) {
-                v = MTT_SUBS(v, over_pivot(f, f->e[i][k], f->e[j][k], k));
+                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
             }
-            f->e[i][j] = v;
+            f->a[i][j] = v;
             di = MTT_SUBS(di, over_pivot(f, v, v, j));
+            if (!(di > 0)) {
+                return -1; /* the pivot only decreases from here */
+            }
         }
         if (!(di > 0) || !mtt_isfinite(di)) {
             return -1;
         }
         f->d[i] = di;
-        f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
-        f->r[i] = mtt_fx_recip(di, f->rho[i]);
+        if (i + 1 < MTT_STATE_N || last) {
+            f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
+            f->r[i] = mtt_fx_recip(di, f->rho[i]);
+        }
     }
     return 0;
 }
@@ -307,7 +342,7 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
     struct ldl_fx f;
     int i;
     /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
-    if (ldl_fx(P, &f) != 0) {
+    if (ldl_fx(P, &f, 0) != 0) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -325,20 +360,26 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
     int ex[MTT_MAX_STATE];
     int32_t acc = 0;
     int i, k, s, e = -127;
-    if (ldl_fx(A, &f) != 0) {
+    if (ldl_fx(A, &f, 1) != 0) {
         return -1;
     }
-    /* b at 2^-(F + s) on 24 bits, so that y = L^-1 b (|y_i| <= sqrt(d2 d_i))
+    /* D b at 2^-(F + s) on 24 bits, so that y = L^-1 D b (|y_i| <= sqrt(d2 d_i))
      * stays in the format unless the form is far beyond every threshold
      * (it saturates).  Each y_i^2 / d_i is formed on 29 bits with its own
      * exponent (relative to 2^(-2 (F + s) - ea)), then the four are summed
      * at the largest exponent plus two. */
-    s = -mtt_fx_top_exp(0, or_abs(b, MTT_STATE_N), 24);
     for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t v = mtt_fx_shift(b[i], s), q;
+        /* D b: the largest |b_i| 2^t_i on 24 bits */
+        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 24);
+        e = (k > e) ? k : e;
+    }
+    s = -e;
+    e = -127;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
         int sh;
         for (k = 0; k < i; ++k) {
-            v = MTT_SUBS(v, over_pivot(&f, f.e[i][k], y[k], k));
+            v = MTT_SUBS(v, over_pivot(&f, f.a[i][k], y[k], k));
         }
         y[i] = v;
         q = MULQ(v, f.r[i]);

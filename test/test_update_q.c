@@ -19,7 +19,15 @@
  * final renormalisation: 3.  21 roundings in units of the largest of the
  * three terms T = max(beta0 |P^|, (1 - beta0) |P_c|, |K M K'|); with the
  * blocks' sizes at most 2 bits below their bounds (the alignments use the
- * measured sizes):  tol_P = 21 x 4 x 2^-28 T.
+ * measured sizes):  21 x 4 x 2^-28 T.  The spread sum beta (nu - nu_c)
+ * (nu - nu_c)' is held at the scale of the innovations, whose largest
+ * |nu| has 28 bits (unit u <= 2^-27 max|nu|): nu's shift and nu_c's m
+ * roundings move each nu - nu_c by at most (m/2 + 1) u, the two products
+ * per term and the (1 - sum beta) nu_c nu_c' term add their roundings, in
+ * all at most (4 m + 12) u max|nu| <= (4 m + 12) 2^-27 max|nu|^2 on an
+ * entry of M, which reaches P through K M K':
+ *   tol_P(i, k) = 84 2^-28 T
+ *                 + (4 m + 12) 2^-27 max|nu|^2 (|K_i0| + |K_i1|) (|K_k0| + |K_k1|).
  * Tolerance of x: the state moves by K nu_c rounded to the position format
  * (half a unit), nu_c carries one rounding per measurement plus the shift
  * of nu (units of 2^-27 max|nu|), times |K_i0| + |K_i1|, and K nu_c's two
@@ -213,8 +221,11 @@ static void check_result(struct fix *f, int m, const double z[][2], const double
             tv_assert_q(xr[i], POS_D(x[i]), tolx, "x", __LINE__);
             worst = fmax(worst, fabs(POS_D(x[i]) - xr[i]) / tolx);
             for (k = 0; k < 4; ++k) {
-                tv_assert_q(Pr[4 * i + k], tv_cov_at(P, i, k), tolP, "P", __LINE__);
-                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - Pr[4 * i + k]) / tolP);
+                const double ks = (fabs(K_D(f, i, 0)) + fabs(K_D(f, i, 1))) *
+                                  (fabs(K_D(f, k, 0)) + fabs(K_D(f, k, 1)));
+                const double tol = tolP + (4.0 * m + 12.0) * ldexp(numax * numax, -27) * ks;
+                tv_assert_q(Pr[4 * i + k], tv_cov_at(P, i, k), tol, "P", __LINE__);
+                worst = fmax(worst, fabs(tv_cov_at(P, i, k) - Pr[4 * i + k]) / tol);
             }
         }
         /* stored renormalised: the largest mantissa on 28 bits */
@@ -282,14 +293,18 @@ static void test_tv6_pda(void)
 
 /* ---- L D L' (ALGORITHMS.md §3, §16): the positive-definiteness test
  * with its margin (d_i > rel P_ii), and b' A^-1 b.  Fixed point: A is
- * normalised to 29 bits and every quotient E_ik E_jk / d_k is bounded by
- * max |A| (Cauchy-Schwarz on the pivots), so each of the 10 roundings of
- * the 4 x 4 factorisation (two per quotient, one reciprocal per pivot) is
- * an error of at most 2^-28 max |A| on an entry of A; b' A^-1 b moves by
- * |x' dA x| <= 10 2^-28 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
- * b is rounded to 24 bits and each y_i = b_i - sum L_ik y_k carries one
- * rounding per quotient (at most 3 at 2^-25 max |b|): a perturbation of b
- * of 4 units, 2 (sum |x_i|) 4 2^-25 max |b|; the four terms y_i^2 / d_i on
+ * normalised to 29 bits, then scaled D A D (D >= I) so that every
+ * diagonal has 28 or 29 bits, and every quotient E_ik E_jk / d_k is
+ * bounded by the diagonal (Cauchy-Schwarz on the pivots), so each of the
+ * 10 roundings of the 4 x 4 factorisation (the quotients, the reciprocal
+ * of each pivot) is at most 2 units of the scaled matrix (mtt_fx_mulq at
+ * shift 19: 0.5 + 3 2^-1 units; the exact ones half a unit), which is at
+ * most 2 2^-28 max |A| on an entry of A since D >= I; b' A^-1 b moves by
+ * |x' dA x| <= 10 2^-27 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
+ * D b is rounded to 24 bits and each y_i = (D b)_i - sum L_ik y_k carries
+ * one rounding per quotient (at most 3 at 2^-25 max |D b|): a perturbation
+ * of D b of 4 units, 2 (sum |x_i|) 4 2^-25 max |b| where D = I (the test
+ * matrices' variances lie within a factor 4 of each other); the four terms y_i^2 / d_i on
  * 29 bits, their sum's alignment and the Q24 result: 6 2^-29 d2 + 2^-25. ---- */
 static double quad_tol(const double A[16], const double b[4], double *d2)
 {
@@ -321,7 +336,7 @@ static double quad_tol(const double A[16], const double b[4], double *d2)
         q += b[i] * x;
     }
     *d2 = q;
-    return 10.0 * ldexp(amax, -28) * l1 * l1 + 8.0 * l1 * ldexp(bmax, -25) + 6.0 * ldexp(fabs(q), -29) +
+    return 10.0 * ldexp(amax, -27) * l1 * l1 + 8.0 * l1 * ldexp(bmax, -25) + 6.0 * ldexp(fabs(q), -29) +
            ldexp(1.0, -25);
 }
 
@@ -408,6 +423,18 @@ static void test_pd_rejects(void)
     tv_cov_set(A, near, -28);
     TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_SEED_COV_MARGIN));
 #endif
+    {
+        /* variances 2^24 and 1 (a 2^24 dynamic range in one block), their
+         * correlation 1 - 2^-13: d_1 / P_11 = 2.44e-4, above both margins
+         * in float; exact in every format here.  The fixed test scales each
+         * row and column to its own variance (D A D) and resolves it too */
+        double wide[16] = {16777216.0, 4095.5, 0, 0, 4095.5, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        tv_cov_set(A, wide, -4);
+        TEST_ASSERT_EQUAL_INT(1, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+        wide[1] = wide[4] = 4096.0; /* correlation 1: singular */
+        tv_cov_set(A, wide, -4);
+        TEST_ASSERT_EQUAL_INT(0, mtt_cov_ok(A, MTT_FRAME_COV_MARGIN));
+    }
 #ifdef MTT_REAL_FIXED
     /* far beyond every threshold: saturates, never wraps */
     {
