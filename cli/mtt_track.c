@@ -214,14 +214,15 @@ static const char *status_text(mtt_status s)
 static int add_seeds(mtt_tracker *trk, const options *o, const mtt_io_settings *s,
                      const mtt_io_detections *d)
 {
-    mtt_real P2[4][4], P2flat[16], dt = MTT_R(1.0);
+    mtt_real P2[4][4], P2flat[16], dt;
     char key[64];
     size_t i;
     mtt_status st;
 
     if (s->n_seeds == 0)
         return 0;
-    if (d->n_scans >= 2 && !mtt_io_to_real(d->scans[1].time - d->scans[0].time, &dt)) {
+    (void)mtt_io_to_real(1.0, MTT_IO_TIME, &dt); /* one scan interval without a second scan */
+    if (d->n_scans >= 2 && !mtt_io_to_real(d->scans[1].time - d->scans[0].time, MTT_IO_TIME, &dt)) {
         mtt_io_error("%s: the first scan interval is out of range", o->detections);
         return EXIT_INPUT;
     }
@@ -229,7 +230,7 @@ static int add_seeds(mtt_tracker *trk, const options *o, const mtt_io_settings *
     if (st != MTT_OK) {
         mtt_io_error("%s: two-point covariance for the initial tracks failed (first scan "
                      "interval %g): %s",
-                     o->detections, (double)dt, status_text(st));
+                     o->detections, mtt_io_from_real(dt, MTT_IO_TIME), status_text(st));
         return EXIT_INPUT;
     }
     memcpy(P2flat, P2, sizeof P2flat); /* row-major, as mtt_tracker_add_track takes it */

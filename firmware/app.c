@@ -19,7 +19,9 @@
  *
  *   IT <id> conf <0|1> x .. ex <existence> mu <mu_0> .. <mu_r-1> hex <8 hex digits x (5 + r)>
  *
- * With FW_IMM 0 the program is the CV example, unchanged. */
+ * With FW_IMM 0 the program is the CV example, unchanged.  In the
+ * fixed-point build (MTT_REAL_FIXED) the T lines end "qhex <position
+ * frac> <probability frac>" and the five 32-bit words instead. */
 #include "fw.h"
 
 #ifndef FW_IMM
@@ -34,6 +36,13 @@
 #else
 #define FW_PASS ""
 #define FW_TITLE "mtt firmware scenario: frames "
+#endif
+
+/* Frame k's time: k frames (T0 = 1; Q16 frames in the fixed-point build). */
+#ifdef MTT_REAL_FIXED
+#define FW_TIME(k) ((int32_t)(k) * ((int32_t)1 << MTT_FX_T_FRAC))
+#else
+#define FW_TIME(k) ((float)(k))
 #endif
 
 /* The tracker's whole RAM cost; static, as firmware allocates it. */
@@ -101,9 +110,31 @@ static char *print_mu(char *p, const mtt_track_view *v, int hex)
 }
 #endif
 
+/* The value i of a T line (x, y, vx, vy: 3 decimals; existence: 5) and
+ * its word for the exact comparison.  The fixed-point build prints the Q
+ * values in the user's units (positions and velocities in the position
+ * format, existence in Q30) and, after "qhex <position frac> <probability
+ * frac>", their 32-bit words (fwcheck.py compare); float the IEEE-754 bits
+ * after "hex". */
+#ifdef MTT_REAL_FIXED
+#define FMT_VAL(p, v, i) fmt_q((p), (v), (i) < 4 ? MTT_FX_POS_FRAC : MTT_FX_PROB_FRAC, (i) < 4 ? 3 : 5)
+#define FMT_WORD(p, v) fmt_hex32((p), (uint32_t)(v))
+static char *fmt_word_tag(char *p)
+{
+    p = fmt_str(p, " qhex ");
+    p = fmt_u32(p, MTT_FX_POS_FRAC);
+    p = fmt_str(p, " ");
+    return fmt_u32(p, MTT_FX_PROB_FRAC);
+}
+#else
+#define FMT_VAL(p, v, i) fmt_fixed((p), (v), (i) < 4 ? 3 : 5)
+#define FMT_WORD(p, v) fmt_hex((p), (v))
+#define fmt_word_tag(p) fmt_str((p), " hex")
+#endif
+
 static void print_track(const mtt_track_view *v)
 {
-    const float val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
+    const mtt_real val[5] = {v->x[0], v->x[1], v->x[2], v->x[3], v->existence};
     static const char *const name[5] = {" x ", " y ", " vx ", " vy ", " ex "};
     int i;
     char *p = fmt_str(line, FW_PASS "T ");
@@ -112,15 +143,15 @@ static void print_track(const mtt_track_view *v)
     p = fmt_u32(p, (uint32_t)(v->confirmed != 0));
     for (i = 0; i < 5; ++i) {
         p = fmt_str(p, name[i]);
-        p = fmt_fixed(p, val[i], i < 4 ? 3 : 5);
+        p = FMT_VAL(p, val[i], i);
     }
 #if FW_IMM
     p = print_mu(p, v, 0);
 #endif
-    p = fmt_str(p, " hex");
+    p = fmt_word_tag(p);
     for (i = 0; i < 5; ++i) {
         p = fmt_str(p, " ");
-        p = fmt_hex(p, val[i]);
+        p = FMT_WORD(p, val[i]);
     }
 #if FW_IMM
     p = print_mu(p, v, 1);
@@ -143,8 +174,13 @@ int fw_app_run(void)
         return fail("params");
     }
     par.clutter_density = SCN_CLUTTER_DENSITY;
+#ifdef MTT_REAL_FIXED
+    par.process_psd = MTT_FX_CONST(0.5, MTT_FX_VAR_FRAC);
+    par.vmax = MTT_POS(10.0);
+#else
     par.process_psd = 0.5f;
     par.vmax = 10.0f;
+#endif
     par.cycle_counter = fw_cycle_counter; /* NULL on the host */
 #if FW_IMM
     par.motion = MTT_MOTION_IMM;
@@ -169,7 +205,7 @@ int fw_app_run(void)
 
     for (k = 0; k < SCN_FRAMES; ++k) {
         n = scn_frame(&scn, k, meas);
-        if (mtt_tracker_step(&trk, (float)k, meas, n) != MTT_OK) {
+        if (mtt_tracker_step(&trk, FW_TIME(k), meas, n) != MTT_OK) {
             return fail("step");
         }
         if (mtt_tracker_count(&trk, &live) != MTT_OK) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """fwcheck.py - checks and figures of the firmware proof (docs/FIRMWARE.md).
 
-  fwcheck.py doubles --nm NM ELF...          no double-precision helpers in the images
+  fwcheck.py doubles --nm NM [--float] ELF...  no double-precision helpers in the images
+                                             (--float: no float helpers either)
   fwcheck.py qemu --qemu Q --out F --elf E -- <machine args>
                                              run the image, save its output, expect "END ok"
   fwcheck.py compare --target F --host EXE   per-frame confirmed counts equal,
@@ -48,12 +49,22 @@ def nm_symbols(nm, path):
     return syms
 
 
+# --float (the fixed-point images, docs/FIXED_POINT.md): single-precision
+# helpers too (__aeabi_fadd, __aeabi_i2f, ...; libgcc's __addsf3, __fixsfsi,
+# ...) and float libm (sqrtf, expf, ...).
+FLOAT_HELPER = re.compile(
+    r"^(__aeabi_(f[a-z0-9]+|u?i2f|u?l2f)|__[a-z]+sf[0-9]?|__(fix|fixuns)sf[a-z]i|__float[a-z]*sf)$")
+
+
 def cmd_doubles(a):
     bad_total = 0
+    what = "float or double helper(s)" if a.float else "double-precision helper(s)"
     for elf in a.elf:
         bad = sorted({name for kind, name in nm_symbols(a.nm, elf)
-                      if DOUBLE_HELPER.match(name) or name in DOUBLE_LIBM})
-        print(f"{os.path.basename(elf)}: {len(bad)} double-precision helper(s)"
+                      if DOUBLE_HELPER.match(name) or name in DOUBLE_LIBM
+                      or (a.float and (FLOAT_HELPER.match(name)
+                                       or (name.endswith("f") and name[:-1] in DOUBLE_LIBM)))})
+        print(f"{os.path.basename(elf)}: {len(bad)} {what}"
               + (": " + " ".join(bad) if bad else ""))
         bad_total += len(bad)
     return 1 if bad_total else 0
@@ -117,8 +128,16 @@ def parse_run(text):
         if kind == "F":
             frames[int(f[1])] = {"meas": int(f[3]), "live": int(f[5]), "conf": int(f[7])}
         else:
-            h = f[f.index("hex") + 1:]
-            vals = [struct.unpack(">f", bytes.fromhex(w))[0] for w in h]
+            if "qhex" in f:
+                # fixed point: "qhex <position frac> <probability frac>" and the
+                # 32-bit words of x, y, vx, vy (position format), existence (Q30)
+                i = f.index("qhex")
+                fp, fe = int(f[i + 1]), int(f[i + 2])
+                w = [struct.unpack(">i", bytes.fromhex(x))[0] for x in f[i + 3:]]
+                vals = [x / 2.0 ** (fp if k < 4 else fe) for k, x in enumerate(w)]
+            else:
+                h = f[f.index("hex") + 1:]
+                vals = [struct.unpack(">f", bytes.fromhex(w))[0] for w in h]
             tracks.append({"id": int(f[1]), "conf": int(f[3]), "v": vals})
     return runs, end
 
@@ -456,6 +475,8 @@ def main():
     sub = ap.add_subparsers(dest="cmd", required=True)
     p = sub.add_parser("doubles")
     p.add_argument("--nm", required=True)
+    p.add_argument("--float", action="store_true",
+                   help="single-precision helpers and float libm too (fixed-point images)")
     p.add_argument("elf", nargs="+")
     p = sub.add_parser("qemu")
     p.add_argument("--qemu", default="")

@@ -16,17 +16,21 @@
 #include "semihost.h"
 
 static mtt_tracker trk;
+#ifdef MTT_REAL_FIXED
+volatile mtt_real fw_in = 1; /* no float anywhere in the fixed-point image */
+#else
 volatile float fw_in = 1.0f;
+#endif
 volatile uint32_t fw_out;
 
 int main(void)
 {
 #ifdef FW_SIZE_WITH_LIB
     mtt_params p;
-    mtt_meas m = {0.0f, 0.0f, 0.0f, 0};
+    mtt_meas m = {0, 0, 0, 0};
     mtt_track_view v;
     mtt_stats st;
-    mtt_real x[4] = {0.0f, 0.0f, 0.0f, 0.0f}, P[4][4], P16[16] = {0};
+    mtt_real x[4] = {0, 0, 0, 0}, P[4][4], P16[16] = {0};
     const char *name = "";
     mtt_assoc a = MTT_ASSOC_LM_IHPDA;
     size_t n = 0;

@@ -52,6 +52,7 @@ typedef struct mtt_check {
     uint32_t exempt[16];
     size_t n_exempt;
     uint64_t singular_seeds;
+    uint64_t view_saturations;    /* fixed point: tracks whose view P left the variance format */
     char msg[256];                /* the violation, when a check fails */
 } mtt_check;
 
@@ -153,6 +154,28 @@ static inline void mtt_check_eig(const double A0[4][4], double *lmin, double *lm
 
 static inline int mtt_check_finite(double v) { return v == v && fabs(v) <= 1.7976931348623157e308; }
 
+/* The view's values in the user's units, and "finite": in the fixed-point
+ * build (docs/FIXED_POINT.md §3) positions and velocities are in the
+ * position format, covariances in the variance format, existence in Q30,
+ * and a saturated value (MTT_FX_MAX / MTT_FX_MIN) is the non-finite one;
+ * mtt_fx_to_double is the host boundary's conversion.  A covariance
+ * entry of the view saturated by the variance format (not the tracker's
+ * block-floating-point covariance) is counted in view_saturations and that
+ * track's positive-definiteness check is skipped. */
+#ifdef MTT_REAL_FIXED
+#define MTT_CHECK_POS(x) mtt_fx_to_double((x), MTT_FX_POS_FRAC)
+#define MTT_CHECK_VAR(x) mtt_fx_to_double((x), MTT_FX_VAR_FRAC)
+#define MTT_CHECK_PROB(x) mtt_fx_to_double((x), MTT_FX_PROB_FRAC)
+#define MTT_CHECK_FIN(x) mtt_isfinite(x)
+#define MTT_CHECK_EPS (1.0 / 65536.0) /* the variance format's unit */
+#else
+#define MTT_CHECK_POS(x) ((double)(x))
+#define MTT_CHECK_VAR(x) ((double)(x))
+#define MTT_CHECK_PROB(x) ((double)(x))
+#define MTT_CHECK_FIN(x) mtt_check_finite((double)(x))
+#define MTT_CHECK_EPS ((double)MTT_REAL_EPS)
+#endif
+
 /* Call before the step (after any mtt_tracker_add_track), so the count
  * change is measured from here. */
 static inline int mtt_check_before(mtt_check *c, const mtt_tracker *trk)
@@ -204,8 +227,8 @@ static inline int mtt_check_frame(mtt_check *c, const mtt_tracker *trk, size_t n
 
     for (i = 0; i < count; ++i) {
         mtt_track_view v;
-        double P[4][4], piv, lmin, lmax;
-        int a, b;
+        double P[4][4], piv, lmin, lmax, ex;
+        int a, b, view_sat;
         if (mtt_tracker_track(trk, i, &v) != MTT_OK)
             MTT_CHECK_FAIL(c, "mtt_tracker_track(%zu) failed", i);
         ids[i] = v.id;
@@ -228,24 +251,34 @@ static inline int mtt_check_frame(mtt_check *c, const mtt_tracker *trk, size_t n
         if (v.meas < -1 || (v.meas >= 0 && (size_t)v.meas >= n))
             MTT_CHECK_FAIL(c, "track %u: meas index %ld out of [-1, %zu)", (unsigned)v.id,
                            (long)v.meas, n);
-        if (!mtt_check_finite((double)v.existence) || !(v.existence >= MTT_R(0.0)) ||
-            !(v.existence <= MTT_R(1.0)))
-            MTT_CHECK_FAIL(c, "track %u: existence %g outside [0, 1]", (unsigned)v.id,
-                           (double)v.existence);
-        if ((double)v.existence < c->ex_min)
-            c->ex_min = (double)v.existence;
-        if ((double)v.existence > c->ex_max)
-            c->ex_max = (double)v.existence;
+        ex = MTT_CHECK_PROB(v.existence);
+        if (!MTT_CHECK_FIN(v.existence) || !(ex >= 0.0) || !(ex <= 1.0))
+            MTT_CHECK_FAIL(c, "track %u: existence %g outside [0, 1]", (unsigned)v.id, ex);
+        if (ex < c->ex_min)
+            c->ex_min = ex;
+        if (ex > c->ex_max)
+            c->ex_max = ex;
+        view_sat = 0;
         for (a = 0; a < 4; ++a) {
-            if (!mtt_check_finite((double)v.x[a]))
+            if (!MTT_CHECK_FIN(v.x[a]))
                 MTT_CHECK_FAIL(c, "track %u: x[%d] = %g not finite", (unsigned)v.id, a,
-                               (double)v.x[a]);
+                               MTT_CHECK_POS(v.x[a]));
             for (b = 0; b < 4; ++b) {
-                if (!mtt_check_finite((double)v.P[a][b]))
+                P[a][b] = MTT_CHECK_VAR(v.P[a][b]);
+                if (!MTT_CHECK_FIN(v.P[a][b])) {
+#ifdef MTT_REAL_FIXED
+                    view_sat = 1;
+                    continue;
+#endif
                     MTT_CHECK_FAIL(c, "track %u: P[%d][%d] = %g not finite", (unsigned)v.id, a,
-                                   b, (double)v.P[a][b]);
-                P[a][b] = (double)v.P[a][b];
+                                   b, P[a][b]);
+                }
             }
+        }
+        if (view_sat) {
+            c->view_saturations++;
+            c->tracks_checked++;
+            continue;
         }
         for (a = 0; a < 4; ++a) {
             if (!(P[a][a] > 0.0))
@@ -378,10 +411,10 @@ static inline int mtt_check_pd16(const mtt_real P16[16])
     int a, b;
     for (a = 0; a < 4; ++a)
         for (b = 0; b < 4; ++b)
-            A[a][b] = 0.5 * ((double)P16[4 * a + b] + (double)P16[4 * b + a]);
+            A[a][b] = 0.5 * (MTT_CHECK_VAR(P16[4 * a + b]) + MTT_CHECK_VAR(P16[4 * b + a]));
     /* well conditioned for mtt_real: a relative pivot below ~1000 eps
      * cannot survive a float (or double) prediction and update */
-    return mtt_check_min_pivot((const double(*)[4])A) > 1e3 * (double)MTT_REAL_EPS;
+    return mtt_check_min_pivot((const double(*)[4])A) > 1e3 * MTT_CHECK_EPS;
 }
 
 /* The caller seeded track id with a P that is singular, or too badly
@@ -396,11 +429,18 @@ static inline void mtt_check_exempt(mtt_check *c, uint32_t id)
 /* Is this input measurement one the library must skip as bad? */
 static inline int mtt_check_meas_bad(const mtt_meas *m)
 {
+#ifdef MTT_REAL_FIXED
+    if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y))
+        return 1;
+    if (m->has_amplitude && (!mtt_isfinite(m->amplitude) || m->amplitude < 0))
+        return 1;
+#else
     if (!mtt_check_finite((double)m->x) || !mtt_check_finite((double)m->y))
         return 1;
     if (m->has_amplitude &&
         (!mtt_check_finite((double)m->amplitude) || !(m->amplitude >= MTT_R(0.0))))
         return 1;
+#endif
     return 0;
 }
 

@@ -98,13 +98,40 @@ static int poisson(scene *s, double mean)
     }
 }
 
+/* The scene's doubles into mtt_real: the cast, or in the fixed-point build
+ * the host boundary's conversion into the position and amplitude formats
+ * (docs/FIXED_POINT.md §3: NaN, Inf and out of range saturate, and the
+ * tracker skips and counts them like NaN in float). */
+#ifdef MTT_REAL_FIXED
+static mtt_real to_q(double v, int f)
+{
+    mtt_real q;
+    (void)mtt_fx_from_double(v, f, &q); /* saturated when outside */
+    return q;
+}
+#define TO_POS(v) to_q((v), MTT_FX_POS_FRAC)
+#define TO_AMP(v) to_q((v), MTT_FX_AMP_FRAC)
+#define TO_TIME(v) to_q((v), MTT_FX_T_FRAC)
+/* Time is Q16 frames modulo 2^32 (the tracker compares it modulo 2^32). */
+#define TIME_ADD(t, d) ((mtt_real)(int32_t)((uint32_t)(t) + (uint32_t)(d)))
+#define TIME_LATER(a, b) ((uint32_t)(a) != (uint32_t)(b))
+#define REAL_NAME "fixed"
+#else
+#define TO_POS(v) ((mtt_real)(v))
+#define TO_AMP(v) ((mtt_real)(v))
+#define TO_TIME(v) ((mtt_real)(v))
+#define TIME_ADD(t, d) ((t) + (d))
+#define TIME_LATER(a, b) ((a) > (b))
+#define REAL_NAME (sizeof(mtt_real) == sizeof(float) ? "float" : "double")
+#endif
+
 static void add_meas(size_t *n, double x, double y, double amp, int has)
 {
     if (*n >= MAX_FRAME_MEAS)
         return;
-    meas[*n].x = (mtt_real)x;
-    meas[*n].y = (mtt_real)y;
-    meas[*n].amplitude = (mtt_real)amp;
+    meas[*n].x = TO_POS(x);
+    meas[*n].y = TO_POS(y);
+    meas[*n].amplitude = TO_AMP(amp);
     meas[*n].has_amplitude = has;
     ++*n;
 }
@@ -220,7 +247,8 @@ static int run(mtt_assoc mode, unsigned long frames, uint64_t seed, unsigned lon
 {
     mtt_params p;
     scene s;
-    mtt_real t = MTT_R(0.0);
+    mtt_real t = TO_TIME(0.0);
+    double t_user = 0.0; /* the time in the user's units, for messages */
     double t0 = now_sec(), dt_nom = 1.0;
     unsigned long f;
     const char *name = "?";
@@ -238,11 +266,18 @@ static int run(mtt_assoc mode, unsigned long frames, uint64_t seed, unsigned lon
     if (mtt_params_default(&p) != MTT_OK)
         return 2;
     p.association = mode;
-    p.process_psd = MTT_R(0.5);
-    p.pd = MTT_R(0.9);
-    p.snr_rho = MTT_R(3.0);
-    p.vmax = MTT_R(25.0);
-    p.clutter_density = (seed & 1u) ? MTT_R(5e-6) : MTT_R(0.0); /* known, or estimated */
+    {
+        /* in the user's units through the parameter table (each key's Q
+         * format in the fixed-point build); the fixed-point build has no
+         * estimated clutter density (docs/FIXED_POINT.md finding 4) */
+        const double dens = ((seed & 1u) || MTT_REAL_KIND > 2) ? 5e-6 : 0.0; /* known, or estimated */
+        const char *const keys[5] = {"process_psd", "pd", "snr_rho", "vmax", "clutter_density"};
+        const double vals[5] = {0.5, 0.9, 3.0, 25.0, dens};
+        int k;
+        for (k = 0; k < 5; ++k)
+            if (mtt_params_set(&p, keys[k], &vals[k], 1) != MTT_OK)
+                return 2;
+    }
     st = mtt_tracker_init(&trk, &p);
     if (st != MTT_OK) {
         fprintf(stderr, PROG ": mode %s: mtt_tracker_init returned %d\n", name, (int)st);
@@ -262,13 +297,15 @@ static int run(mtt_assoc mode, unsigned long frames, uint64_t seed, unsigned lon
         else if (u < 0.05)
             dt = 0.5 + 1.5 * unif(&s);
         n = scene_frame(&s, dt, &n_bad);
-        tn = t + (mtt_real)dt;
-        if (!(tn > t)) {
+        tn = TIME_ADD(t, TO_TIME(dt));
+        if (!TIME_LATER(tn, t)) {
             /* float time has run out of resolution for this step (t ~ 1e6
              * in float has a spacing of 1/16): step by a representable one */
-            tn = t + (mtt_real)(dt_nom);
+            tn = TIME_ADD(t, TO_TIME(dt_nom));
+            dt = dt_nom;
         }
         t = tn;
+        t_user += dt;
         if (unif(&s) < 0.01) {
             ++r->frames; /* a dropped frame: the scene moved, the tracker is not stepped */
             continue;
@@ -296,7 +333,7 @@ static int run(mtt_assoc mode, unsigned long frames, uint64_t seed, unsigned lon
         if (!mtt_check_frame(&chk, &trk, n, n_bad)) {
             fprintf(stderr, PROG ": mode %s, seed %llu, frame %lu (time %.9g, %zu measurements): "
                     "invariant violated: %s\n",
-                    name, (unsigned long long)seed, f, (double)t, n, chk.msg);
+                    name, (unsigned long long)seed, f, t_user, n, chk.msg);
             return 1;
         }
         if (chk.n_prev > r->max_live)
@@ -321,7 +358,7 @@ static void report(mtt_assoc mode, uint64_t seed, const result *r)
         name = "?";
     printf("mode %s seed %llu: %lu frames (%lu stepped), real %s\n", name,
            (unsigned long long)seed, r->frames, r->steps,
-           sizeof(mtt_real) == sizeof(float) ? "float" : "double");
+           REAL_NAME);
     printf("  tracks: born %u, confirmed %u, deleted %u, merged %u, numeric deletions %u, "
            "max live %lu, births dropped %u\n",
            (unsigned)c->births, (unsigned)c->confirmations, (unsigned)c->deletions,
@@ -336,6 +373,12 @@ static void report(mtt_assoc mode, uint64_t seed, const result *r)
            "%.3g, min eigenvalue ratio %.3g, max asymmetry %.3g, existence in [%.3g, %.9g]\n",
            (unsigned long long)chk.tracks_checked, chk.min_pivot_rel, chk.min_eig,
            chk.min_eig_rel, chk.max_asym, chk.ex_min, chk.ex_max);
+#ifdef MTT_REAL_FIXED
+    printf("  fixed point: %llu track checks with a view covariance beyond the variance format "
+           "(Q%d, not the tracker's own covariance); numeric deletions %u\n",
+           (unsigned long long)chk.view_saturations, MTT_FX_VAR_FRAC,
+           (unsigned)c->numeric_deletions);
+#endif
     printf("  time: %.2f us per step (library), %.2f us per frame with checks, %.1f s in all\n",
            r->steps ? 1e6 * r->step_sec / (double)r->steps : 0.0,
            r->frames ? 1e6 * r->wall_sec / (double)r->frames : 0.0, r->wall_sec);
@@ -397,6 +440,11 @@ int main(int argc, char **argv)
             if (mtt_params_default(&p) != MTT_OK)
                 return 2;
             p.association = (mtt_assoc)k;
+            if (MTT_REAL_KIND > 2) {
+                const double dens = 5e-6; /* the fixed-point build needs it declared */
+                if (mtt_params_set(&p, "clutter_density", &dens, 1) != MTT_OK)
+                    return 2;
+            }
             if (mtt_params_check(&p, NULL) != MTT_OK)
                 continue; /* not built yet */
             rc = run((mtt_assoc)k, frames, seed, progress, &r);

@@ -8,6 +8,12 @@
 #include <string.h>
 
 enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS };
+
+#ifdef MTT_REAL_FIXED
+#define MTT_IO_SATURATES 1 /* out of the format: saturated, skipped by the tracker */
+#else
+#define MTT_IO_SATURATES 0
+#endif
 static const char *const det_cols[N_COLS] = {"scan", "time", "x", "y", "amplitude"};
 
 /* Report a field that failed to parse; always MTT_IO_EINPUT. */
@@ -33,19 +39,50 @@ static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *
     return MTT_IO_EINPUT;
 }
 
-/* Parse a finite number that fits mtt_real. */
-static int field_real(const mtt_io_csv *c, int col, double *d, mtt_real *r)
+/* Parse a finite number into mtt_real of format fmt (mtt_io_to_real).
+ * In the fixed-point build a coordinate or amplitude outside its format
+ * is not an error of the file: it takes the saturation value, which the
+ * tracker skips and counts in meas_bad like a NaN in float
+ * (docs/FIXED_POINT.md §3); only the time must fit.  Float and double: a
+ * value that overflows mtt_real is an error. */
+static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r)
 {
     mtt_io_num e = mtt_io_parse_double(c->fields[col], d);
     if (e != MTT_IO_NUM_OK)
         return bad_number(c, col, e, "a finite number");
-    if (!mtt_io_to_real(*d, r)) {
+#ifdef MTT_REAL_FIXED
+    if (col == COL_TIME)
+        return MTT_IO_OK; /* only time - time0 is converted (below) */
+#endif
+    if (!mtt_io_to_real(*d, fmt, r) && !MTT_IO_SATURATES) {
         mtt_io_error_at(c->path, c->line, det_cols[col],
                         "'%s' does not fit the tracker's real type (mtt_real=" MTT_IO_REAL_NAME ")",
                         c->fields[col]);
         return MTT_IO_EINPUT;
     }
     return MTT_IO_OK;
+}
+
+/* A scan's time as the tracker takes it: counted from the first scan's.
+ * Fixed point: Q16 of the file's time unit modulo 2^32, as the tracker
+ * compares times (docs/FIXED_POINT.md §3), so a file may be of any length
+ * (each step below 32768 units, checked with the order of the scans);
+ * float and double: mtt_io_to_real. */
+static int time_from0(double t, mtt_real *out)
+{
+#ifdef MTT_REAL_FIXED
+    const double s = t * (double)(1L << MTT_IO_TIME);
+    unsigned long long q;
+    uint32_t u;
+    if (!(s >= 0.0 && s < 9007199254740992.0)) /* 2^53: exact in a double */
+        return 0;
+    q = (unsigned long long)(s + 0.5);
+    u = (uint32_t)(q & 0xFFFFFFFFull);
+    *out = (u <= (uint32_t)INT32_MAX) ? (int32_t)u : -(int32_t)(~u) - 1; /* two's complement */
+    return 1;
+#else
+    return mtt_io_to_real(t, MTT_IO_TIME, out);
+#endif
 }
 
 static void *grow(void *p, size_t *cap, size_t elem)
@@ -96,11 +133,11 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     if (e != MTT_IO_NUM_OK)
         return bad_number(c, COL_SCAN, e, "a non-negative integer");
     memset(&m, 0, sizeof m);
-    if ((rc = field_real(c, COL_TIME, &time, &rtime)) != MTT_IO_OK)
+    if ((rc = field_real(c, COL_TIME, MTT_IO_TIME, &time, &rtime)) != MTT_IO_OK)
         return rc;
     if (prev == NULL)
         d->time0 = time;
-    if (!mtt_io_to_real(time - d->time0, &rtime)) {
+    if (!time_from0(time - d->time0, &rtime)) {
         mtt_io_error_at(c->path, c->line, "time", "'%s' is too far from the first scan's time",
                         c->fields[COL_TIME]);
         return MTT_IO_EINPUT;
@@ -113,11 +150,11 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             return MTT_IO_EINPUT;
         }
     } else {
-        if ((rc = field_real(c, COL_X, &x, &m.x)) != MTT_IO_OK ||
-            (rc = field_real(c, COL_Y, &y, &m.y)) != MTT_IO_OK)
+        if ((rc = field_real(c, COL_X, MTT_IO_POS, &x, &m.x)) != MTT_IO_OK ||
+            (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y)) != MTT_IO_OK)
             return rc;
         if (c->fields[COL_AMP][0] != '\0') {
-            if ((rc = field_real(c, COL_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
+            if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
                 return rc;
             if (!(amp >= 0.0)) {
                 mtt_io_error_at(c->path, c->line, "amplitude", "'%s' is negative: must be >= 0",
@@ -159,7 +196,17 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
                             c->fields[COL_TIME], t0, prev->scan, prev->line);
             return MTT_IO_EINPUT;
         }
-        if (prev != NULL && !(rtime > prev->rtime)) {
+#ifdef MTT_REAL_FIXED
+        if (prev != NULL && !((time - prev->time) * (double)(1L << MTT_IO_TIME) < 2147483647.0)) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' is too far after the time %s of scan %lu: a step of the "
+                            "fixed-point tracker is below 32768 time units",
+                            c->fields[COL_TIME], t0, prev->scan);
+            return MTT_IO_EINPUT;
+        }
+#endif
+        if (prev != NULL && !MTT_TIME_AFTER(rtime, prev->rtime)) {
             mtt_io_format_double(prev->time, t0, sizeof t0);
             mtt_io_format_double(d->time0, t1, sizeof t1);
             mtt_io_error_at(c->path, c->line, "time",

@@ -31,11 +31,37 @@
 #define MTT_IO_PRINTF(f, a)
 #endif
 
-/** "float" or "double": mtt_real, for messages. */
-#ifdef MTT_REAL_DOUBLE
+/** "float", "double" or "fixed": mtt_real, for messages. */
+#if defined(MTT_REAL_FIXED)
+#define MTT_IO_REAL_NAME "fixed"
+#elif defined(MTT_REAL_DOUBLE)
 #define MTT_IO_REAL_NAME "double"
 #else
 #define MTT_IO_REAL_NAME "float"
+#endif
+
+/** The format of each kind of number at the boundary, for mtt_io_to_real
+ *  and mtt_io_from_real.  In the fixed-point build (docs/FIXED_POINT.md §3)
+ *  the Q format's fraction bits: positions, velocities and measurement
+ *  sigmas in the declared position format; amplitudes in the declared
+ *  amplitude format; times (counted from the first scan) in Q16 of the
+ *  files' time unit, which is the nominal frame interval T0; covariance
+ *  entries (initial_tracks' P, the tracks' pxx, pxy, pyy) in the variance
+ *  format; existence and model probabilities in Q30.  Settings keys take
+ *  their row's format inside mtt_params_set/get.  Float and double: 0,
+ *  unused. */
+#if defined(MTT_REAL_FIXED)
+#define MTT_IO_POS MTT_FX_POS_FRAC
+#define MTT_IO_AMP MTT_FX_AMP_FRAC
+#define MTT_IO_TIME MTT_FX_T_FRAC
+#define MTT_IO_VAR MTT_FX_VAR_FRAC
+#define MTT_IO_PROB MTT_FX_PROB_FRAC
+#else
+#define MTT_IO_POS 0
+#define MTT_IO_AMP 0
+#define MTT_IO_TIME 0
+#define MTT_IO_VAR 0
+#define MTT_IO_PROB 0
 #endif
 
 /** Result of a reader; the values are the process exit codes. */
@@ -80,8 +106,17 @@ mtt_io_num mtt_io_parse_double(const char *s, double *out);
 /** Parse a whole field as a non-negative decimal integer (digits only). */
 mtt_io_num mtt_io_parse_count(const char *s, unsigned long *out);
 
-/** Convert to mtt_real; 0 if the value does not fit (overflows a float). */
-int mtt_io_to_real(double v, mtt_real *out);
+/** The one conversion of a file's number into mtt_real: float and double
+ *  a cast (fmt unused), 0 if the value overflows the type (*out
+ *  unchanged); the fixed-point build round(v 2^fmt) (mtt_fx_from_double),
+ *  0 if it lies outside the format, with *out the saturation value of its
+ *  sign: never a wrapped value (measure.c skips and counts such a
+ *  detection).  Returns 1 when v fits. */
+int mtt_io_to_real(double v, int fmt, mtt_real *out);
+
+/** mtt_real of format fmt (MTT_IO_POS, ...) as a double in the user's
+ *  units: exact. */
+double mtt_io_from_real(mtt_real r, int fmt);
 
 /** Write v with the fewest significant digits (at most 17) that read back
  *  as the same double.  buf needs 32 bytes. */

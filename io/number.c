@@ -1,5 +1,6 @@
 /* io/number.c - numbers in text files: whole-field parsing (strtod, decimal counts),
- * the fit into mtt_real, and the shortest text that reads back as the same double.
+ * the one conversion into mtt_real (a Q format in the fixed-point build) and
+ * back, and the shortest text that reads back as the same double.
  */
 #include "mtt_io.h"
 
@@ -48,14 +49,33 @@ mtt_io_num mtt_io_parse_count(const char *s, unsigned long *out)
     return MTT_IO_NUM_OK;
 }
 
-int mtt_io_to_real(double v, mtt_real *out)
+#ifdef MTT_REAL_FIXED
+int mtt_io_to_real(double v, int fmt, mtt_real *out)
 {
+    return mtt_fx_from_double(v, fmt, out) == MTT_OK;
+}
+
+double mtt_io_from_real(mtt_real r, int fmt)
+{
+    return mtt_fx_to_double(r, fmt);
+}
+#else
+int mtt_io_to_real(double v, int fmt, mtt_real *out)
+{
+    (void)fmt;
     /* Converting a double beyond the float range is undefined: test first. */
     if (!(fabs(v) <= (double)MTT_REAL_MAX))
         return 0;
     *out = (mtt_real)v;
     return 1;
 }
+
+double mtt_io_from_real(mtt_real r, int fmt)
+{
+    (void)fmt;
+    return (double)r;
+}
+#endif
 
 void mtt_io_format_double(double v, char *buf, size_t size)
 {

@@ -23,6 +23,14 @@ static const char *const seed_keys[] = {"x", "y", "vx", "vy", "P"};
 #define N_SEED_KEYS (sizeof seed_keys / sizeof seed_keys[0])
 
 #define KEY_MAX 160 /* longest key path in a message */
+#ifdef MTT_REAL_FIXED
+#define MTT_IO_FIXED 1
+/* A value outside its row's Q format is refused too (docs/FIXED_POINT.md §3). */
+#define FIXED_NOTE " within its fixed-point format"
+#else
+#define MTT_IO_FIXED 0
+#define FIXED_NOTE ""
+#endif
 /* Values of one key through mtt_params_set/get: imm_transition's
  * MTT_MAX_MODELS^2 slots, imm_models' 1 + MTT_PARAM_MODEL_VALUES MTT_MAX_MODELS. */
 #define VALS_MAX (MTT_MAX_MODELS * MTT_MAX_MODELS + MTT_PARAM_MODEL_VALUES * MTT_MAX_MODELS + 3)
@@ -138,7 +146,9 @@ static int unknown_key(const sctx *c, const char *key, const suggestion *sg)
     return MTT_IO_EINPUT;
 }
 
-/* A finite number that fits mtt_real. */
+/* A finite number that fits mtt_real (float, double; the fixed-point
+ * build checks each value against its own format where it is converted:
+ * mtt_params_set, seed_real). */
 static int get_number(const sctx *c, const cJSON *j, const char *key, double *out)
 {
     mtt_real r;
@@ -150,7 +160,7 @@ static int get_number(const sctx *c, const cJSON *j, const char *key, double *ou
         mtt_io_error_key(c->file, key, "must be a finite number");
         return MTT_IO_EINPUT;
     }
-    if (!mtt_io_to_real(j->valuedouble, &r)) {
+    if (!MTT_IO_FIXED && !mtt_io_to_real(j->valuedouble, 0, &r)) {
         mtt_io_error_key(c->file, key, "%g does not fit the tracker's real type (mtt_real="
                          MTT_IO_REAL_NAME ")", j->valuedouble);
         return MTT_IO_EINPUT;
@@ -232,8 +242,16 @@ static void format_real(double v, char *buf, size_t size)
     int prec;
     for (prec = 1; prec < 17; ++prec) {
         snprintf(buf, size, "%.*g", prec, v);
+#ifdef MTT_REAL_FIXED
+        /* the decimal constant the default was written as: the Q formats
+         * (at least 16 fraction bits, docs/FIXED_POINT.md §3) hold
+         * defaults to better than 1e-4 relative */
+        if (fabs(strtod(buf, NULL) - v) <= 1e-4 * fabs(v))
+            break;
+#else
         if ((mtt_real)strtod(buf, NULL) == (mtt_real)v)
             break;
+#endif
     }
     format_bound(strtod(buf, NULL), buf, size);
 }
@@ -290,12 +308,12 @@ static int report_range(const sctx *c, const mtt_param_info *info, const char *k
         if (mtt_params_set(&q, info->key, w, info->count) != MTT_OK) {
             snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)e);
             format_bound(v[e], val, sizeof val);
-            mtt_io_error_key(c->file, sub, "must be %s, found %s", range, val);
+            mtt_io_error_key(c->file, sub, "must be %s" FIXED_NOTE ", found %s", range, val);
             return MTT_IO_EINPUT;
         }
     }
     values_text(v, info->count, format_bound, val, sizeof val);
-    mtt_io_error_key(c->file, key, "must be %s, found %s", range,
+    mtt_io_error_key(c->file, key, "must be %s" FIXED_NOTE ", found %s", range,
                      info->type == MTT_PARAM_MODELS ? "a model out of range" : val);
     return MTT_IO_EINPUT;
 }
@@ -518,6 +536,16 @@ static int given_before(const cJSON *obj, const cJSON *j)
     return 0;
 }
 
+/* A seed's value into mtt_real of format fmt (get_number checked it). */
+static int seed_real(const sctx *c, const char *key, double v, int fmt, mtt_real *out)
+{
+    if (mtt_io_to_real(v, fmt, out))
+        return MTT_IO_OK;
+    mtt_io_error_key(c->file, key, "%g does not fit the tracker's real type (mtt_real="
+                     MTT_IO_REAL_NAME ")", v);
+    return MTT_IO_EINPUT;
+}
+
 static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
 {
     char tkey[KEY_MAX], mkey[KEY_MAX];
@@ -572,15 +600,16 @@ static int parse_tracks(const sctx *c, const cJSON *j, const char *key)
                 return MTT_IO_EINPUT;
             }
             if (k < 4) {
-                if ((rc = get_number(c, m, mkey, v)) != MTT_IO_OK)
+                if ((rc = get_number(c, m, mkey, v)) != MTT_IO_OK ||
+                    (rc = seed_real(c, mkey, v[0], MTT_IO_POS, &seed->x[k])) != MTT_IO_OK)
                     return rc;
-                seed->x[k] = (mtt_real)v[0];
             } else {
                 size_t e;
                 if ((rc = parse_cov(c, m, mkey, v)) != MTT_IO_OK)
                     return rc;
                 for (e = 0; e < 16; ++e)
-                    seed->P[e] = (mtt_real)v[e];
+                    if ((rc = seed_real(c, mkey, v[e], MTT_IO_VAR, &seed->P[e])) != MTT_IO_OK)
+                        return rc;
             }
         }
         for (k = 0; k < 4; ++k) {
@@ -840,7 +869,7 @@ static int default_models(const sctx *c)
     if (p->imm_n_models < 2u)
         return MTT_IO_OK; /* a build without IMM */
     (void)c;
-    for (i = 0; i < 2u; ++i) {
+    for (i = 0; i < 2u && i < MTT_MAX_MODELS; ++i) {
         p->imm_psd[i] = p->process_psd;
     }
     return MTT_IO_OK;

@@ -12,8 +12,10 @@
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
 #      worst-case stack of mtt_tracker_step, instructions per frame
 #   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
-#      converted to fixed point so far; checks: build, no float or double
-#      helper, cppcheck of those stages; prints their .text
+#      converted to fixed point; checks: build, no float or double helper,
+#      cppcheck of those stages; prints their .text; once every stage is
+#      converted also the firmware example as in 2 (ctest with the no-float
+#      and no-double-helper checks, the same figures)
 #   4. cppcheck and clang-tidy on src/, float and double (one check each)
 #
 # Ends with "ci-firmware: N passed, M failed" (scripts/dev.sh adds it to its
@@ -88,7 +90,9 @@ figures() {
     --archive "$b/libmtt.a" --text-limit 16384 || return 1
   "${FWCHECK[@]}" stack --label "$preset" --build "$b" --src "$ROOT/src" \
     --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
-  "${FWCHECK[@]}" doubles --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
+  local fl=()
+  [[ "$preset" == "$FIXED_PRESET" ]] && fl=(--float) # no float helper either
+  "${FWCHECK[@]}" doubles "${fl[@]}" --nm arm-none-eabi-nm "$b/firmware/mtt-fw.elf" || return 1
   # M4F: the figure of record; M0+: ARMv6-M code on qemu's Cortex-M3 (AN385).
   # A library with the IMM (MTT_WITH_IMM) also runs the scene with
   # motion = imm (mtt-fw-imm.elf): its busiest frame is required and printed.
@@ -153,6 +157,17 @@ fixed() {
   check "$FIXED_PRESET: no float or double helper" fixed_helpers "$b/libmtt.a"
   check "$FIXED_PRESET: cppcheck of the converted stages" fixed_cppcheck
   say "$FIXED_PRESET: libmtt.a .text $(arm-none-eabi-size -t "$b/libmtt.a" | awk 'END {print $1}') bytes"
+  # Once the pipeline is converted (MTT_FIXED_COMPLETE) the firmware example
+  # builds: its ctest (no double and no float helper in the images, the qemu
+  # run, the comparison with the fixed-point host build) and the same figures
+  # as the other presets (.text, stack, busiest frame).
+  if [[ -f "$b/firmware/mtt-fw.elf" ]]; then
+    ctest_checks "$FIXED_PRESET"
+    say "--- $FIXED_PRESET figures"
+    figures "$FIXED_PRESET" || fail "$FIXED_PRESET: figures"
+  else
+    say "$FIXED_PRESET: no firmware example yet (the pipeline is not converted: MTT_FIXED_COMPLETE OFF)"
+  fi
 }
 
 # ---------------------------------------------------------------- static analysis

@@ -5,7 +5,8 @@
 # qemu-system-arm -icount shift=0 (firmware/fx_cost.c), beside the
 # soft-float helpers and newlib functions they replace; then the prediction
 # stage's arithmetic per track (mtt_kalman_predict + mtt_kalman_innov,
-# and the gate's (area, widths, peak, d^2 and p of 4 candidates per track),
+# the gate's (area, widths, peak, d^2 and p of 4 candidates per track), and
+# the update's (the PDA update with 3 measurements and mtt_cov_ok),
 # firmware/fx_stage_cost.c) built as float (soft float) and as fixed point.
 #
 #   ./scripts/fx-cost.sh [OUTDIR]     (default build/fx-cost)

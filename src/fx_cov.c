@@ -91,8 +91,7 @@ void mtt_fx_cov_align(mtt_cov A, mtt_cov B)
     }
 }
 
-/* v > 0 in Q frac as m 2^e with m in [2^29, 2^30]. */
-static int32_t unpack(int32_t v, int frac, int *e)
+int32_t mtt_fx_unpack(int32_t v, int frac, int *e)
 {
     const int l = bitlen(v);
     *e = -frac - (30 - l);
@@ -114,8 +113,8 @@ void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
         return;
     }
     {
-        const int32_t dm = unpack(dt, MTT_FX_T_FRAC, &ds);
-        const int32_t sm = unpack(sw, MTT_FX_VAR_FRAC, &ss);
+        const int32_t dm = mtt_fx_unpack(dt, MTT_FX_T_FRAC, &ds);
+        const int32_t sm = mtt_fx_unpack(sw, MTT_FX_VAR_FRAC, &ss);
         /* q33 = sw dt, q13 = sw dt^2 / 2, q11 = sw dt^3 / 3 */
         m[2] = mtt_fx_mul(sm, dm, 30);
         e[2] = ss + ds + 30;
@@ -216,6 +215,37 @@ int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny)
     }
     /* d^2 = q 2^(e(S^-1) - 2 (F + s) + 60), returned in Q24 (saturated) */
     return mtt_fx_at(q, MTT_SYM_E(Si) - 2 * (MTT_FX_POS_FRAC + s) + 60, -MTT_FX_D2_FRAC);
+}
+
+/* ---- shared by the PDA update and L D L' (kalman.c) ---- */
+
+int32_t mtt_fx_shift(int32_t v, int s)
+{
+    if (s >= 0) {
+        return v * ((int32_t)1 << s);
+    }
+    if (s < -31) {
+        return 0;
+    }
+    /* shr_round's rounding written out: a call to it here makes GCC stop
+     * inlining it into the prediction's exponent moves (+260 instructions
+     * per track, as with mtt_fx_mahal2) */
+    return (v >> (-s - 1) >> 1) + ((v >> (-s - 1)) & 1);
+}
+
+uint32_t mtt_fx_or_abs(const int32_t *v, int n)
+{
+    uint32_t u = 0u;
+    int k;
+    for (k = 0; k < n; ++k) {
+        u |= (uint32_t)((v[k] < 0) ? -v[k] : v[k]);
+    }
+    return u;
+}
+
+int mtt_fx_top_exp(int e, uint32_t u, int top)
+{
+    return e + (32 - mtt_fx_clz(u)) - top;
 }
 
 #endif /* MTT_REAL_FIXED */

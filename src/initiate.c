@@ -6,11 +6,16 @@
  * U_k = measurements of frame k not used by any track; U_k-1 = the same of
  * the previous frame minus those that already started a track.  Every
  * accepted pair starts one tentative track (merging removes duplicates).
- * Cost: O((|U_k| + |U_k-1| + pairs within reach) log n), by an x sweep. */
+ * Cost: O((|U_k| + |U_k-1| + pairs within reach) log n), by an x sweep.
+ * Fixed-point build (docs/FIXED_POINT.md): the vmax circle only (params.c
+ * refuses the intensity gate), tested on magnitudes scaled to 15 bits;
+ * positions saturate instead of overflowing; the two-point covariance of
+ * mtt_init_two_point_cov is returned in the variance format. */
 #include <string.h>
 
 #include "mtt_internal.h"
 
+#ifndef MTT_REAL_FIXED
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
 {
     const mtt_real *f1 = p->intensity_f1, *f2 = p->intensity_f2;
@@ -39,9 +44,31 @@ mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I)
     return w1 * v1 + (MTT_R(1.0) - w1) * v2;
 }
 
+#define IN_CIRCLE(dx, dy, r) ((dx) * (dx) + (dy) * (dy) <= (r) * (r))
+#else
+/* dx^2 + dy^2 <= r^2 (r >= 0) on magnitudes cut to 15 bits of the largest
+ * (to 2^-14 of r): no product leaves 32 bits. */
+static int in_circle(mtt_pos dx, mtt_pos dy, mtt_pos r)
+{
+    uint32_t ux = (uint32_t)MTT_ABS(dx), uy = (uint32_t)MTT_ABS(dy), ur = (uint32_t)r;
+    const int s = 17 - mtt_fx_clz(ur); /* bits of r beyond 15 */
+    if (r < 0 || ux > ur || uy > ur) {
+        return 0;
+    }
+    if (s > 0) {
+        ux >>= s;
+        uy >>= s;
+        ur >>= s;
+    }
+    return ux * ux + uy * uy <= ur * ur;
+}
+#define IN_CIRCLE(dx, dy, r) in_circle((dx), (dy), (r))
+#endif
+
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt)
 {
-    const mtt_real dx = b->x - a->x, dy = b->y - a->y;
+    const mtt_pos dx = MTT_SUBS(b->x, a->x), dy = MTT_SUBS(b->y, a->y);
+#ifndef MTT_REAL_FIXED
     if (trk->par.init_gate == MTT_INIT_GATE_INTENSITY && a->has_amp) {
         mtt_real f = mtt_init_intensity_f(&trk->par, a->amp);
         mtt_real sp2, s11, s12, s22, det, d2;
@@ -56,8 +83,9 @@ int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_msto
         d2 = (s22 * dx * dx - MTT_R(2.0) * s12 * dx * dy + s11 * dy * dy) / det;
         return d2 <= trk->gamma;
     }
+#endif
     /* A detection without amplitude falls back to the vmax circle. */
-    return dx * dx + dy * dy <= (trk->par.vmax * dt) * (trk->par.vmax * dt);
+    return IN_CIRCLE(dx, dy, MTT_MUL_T(dt, trk->par.vmax));
 }
 
 static int idx_less(const void *a, const void *b, const void *ctx)
@@ -71,11 +99,14 @@ static int idx_less(const void *a, const void *b, const void *ctx)
  * sqrt(gamma (sigma_P^2 + R_xx)) = sqrt(f^2 + gamma R_xx). */
 static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
 {
-    mtt_real r = trk->par.vmax * dt;
+    mtt_real r = MTT_MUL_T(dt, trk->par.vmax);
+#ifndef MTT_REAL_FIXED
     uint16_t a;
+#endif
     if (trk->par.init_gate != MTT_INIT_GATE_INTENSITY) {
         return r;
     }
+#ifndef MTT_REAL_FIXED
     for (a = 0; a < trk->n_prev; ++a) {
         if (trk->prev[a].has_amp) {
             mtt_real f = mtt_init_intensity_f(&trk->par, trk->prev[a].amp);
@@ -83,6 +114,7 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
             r = (ra > r) ? ra : r;
         }
     }
+#endif
     return r;
 }
 
@@ -93,15 +125,15 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
  * counted: no track was possible. */
 static int birth_ok(const mtt_state x, mtt_cov P)
 {
-    const mtt_state zero = {MTT_R(0.0)};
-    mtt_real d2;
+    const mtt_state zero = {MTT_ZERO};
+    mtt_d2 d2;
     return mtt_state_finite(x) && mtt_chol_quad(P, zero, &d2) == 0;
 }
 
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
 {
     uint16_t j, a, k;
-    if (trk->par.initiate && dt > MTT_R(0.0) && trk->n_prev > 0u) {
+    if (trk->par.initiate && dt > MTT_ZERO && trk->n_prev > 0u) {
         /* U_k-1 sorted along x once: each z_k scans only the slice within
          * reach, O((n + pairs) log n) instead of |U_k| x |U_k-1|. */
         const mtt_real r = reach_x(trk, dt);
@@ -114,13 +146,13 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             }
             while (lo < hi) {
                 uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-                if (trk->prev[trk->prev_order[mid]].x < b->x - r) {
+                if (trk->prev[trk->prev_order[mid]].x < MTT_SUBS(b->x, r)) {
                     lo = (uint16_t)(mid + 1u);
                 } else {
                     hi = mid;
                 }
             }
-            for (k = lo; k < trk->n_prev && trk->prev[trk->prev_order[k]].x <= b->x + r; ++k) {
+            for (k = lo; k < trk->n_prev && trk->prev[trk->prev_order[k]].x <= MTT_ADDS(b->x, r); ++k) {
                 trk->init_cand[nc++] = trk->prev_order[k];
             }
             /* Births in input order of z_k-1, as a plain double loop would;
@@ -190,22 +222,25 @@ mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_rea
     if (P == NULL) {
         return MTT_ERR_NULL;
     }
-    if (!(sx > MTT_R(0.0)) || !(sy > MTT_R(0.0)) || !(dt > MTT_R(0.0)) ||
+    if (!(sx > MTT_ZERO) || !(sy > MTT_ZERO) || !(dt > MTT_ZERO) ||
         !mtt_isfinite(sx) || !mtt_isfinite(sy) || !mtt_isfinite(dt)) {
         return MTT_ERR_VALUE;
     }
-    R[0] = sx * sx;
-    R[1] = MTT_R(0.0);
-    R[2] = sy * sy;
-#if MTT_MAX_STATE == 4
+    R[0] = MTT_VAR_OF(sx);
+    R[1] = MTT_ZERO;
+    R[2] = MTT_VAR_OF(sy);
+#if MTT_MAX_STATE == 4 && !defined(MTT_REAL_FIXED)
     mtt_motion_two_point_cov(R, dt, P); /* mtt_cov is mtt_real[4][4] */
 #else
     {
+        /* the CV part; fixed point: from the block to the variance format */
         mtt_cov Pm;
-        int i;
+        int i, j;
         mtt_motion_two_point_cov(R, dt, Pm);
-        for (i = 0; i < 4; ++i) { /* the CV part */
-            memcpy(P[i], Pm[i], sizeof P[i]);
+        for (i = 0; i < 4; ++i) {
+            for (j = 0; j < 4; ++j) {
+                P[i][j] = MTT_COV_VIEW(Pm, i, j);
+            }
         }
     }
 #endif

@@ -91,9 +91,317 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
     return MTT_MAHAL2(Si, nx, ny);
 }
 
-#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
+#ifdef MTT_REAL_FIXED
+/* The fixed-point build (docs/FIXED_POINT.md §2, §3): the same formulas as
+ * the float text below, in block floating point.  Every intermediate block
+ * (the normalised innovations, the spread, M, A, A Pp, P_c, K M K') is a set
+ * of int32 mantissas with one exponent, chosen from the block's inputs so
+ * that each product is one mtt_fx_mulq at shift 30 and each sum a plain
+ * add (the bounds are noted at each step); the three PSD terms of P are
+ * aligned to one exponent by their measured sizes, then P is renormalised.
+ * Pp is as mtt_kalman_predict leaves it (largest mantissa below 2^28), K and
+ * S^-1 as mtt_kalman_innov leaves them. */
 
-static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+#define or_abs(v, n) mtt_fx_or_abs((v), (n))
+#define MULQ(a, b) mtt_fx_mulq((a), (b), 30)
+
+static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
+                  const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                  mtt_real beta0, mtt_state x, mtt_cov P)
+{
+    int32_t AP[MTT_MAX_STATE][MTT_MAX_STATE];
+    int32_t A[MTT_MAX_STATE][2], Kn[MTT_MAX_STATE][2];
+    /* the upper triangles of the three terms */
+    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t2[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t Rn[3], M[3], sp[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
+    const int32_t w = MTT_P(1.0) - beta0;
+    const int eP = MTT_COV_E(Pp);
+    uint32_t u = 0u;
+    int s, eK, eR, eSp, eM, eAp, eA, iA, E1, E2, E3, E, i, k, c;
+    uint16_t j;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return; /* not a model of motion.h (folded away for a constant n) */
+    }
+    /* Innovations at 2^-(F + s) with |nu| < 2^28: |nu - nu_c| < 2^29. */
+    for (j = 0; j < m; ++j) {
+        u |= or_abs(nu[j], 2);
+    }
+    s = -mtt_fx_top_exp(0, u, 28);
+    for (j = 0; j < m; ++j) {
+        cx += MULQ(beta[j], mtt_fx_shift(nu[j][0], s));
+        cy += MULQ(beta[j], mtt_fx_shift(nu[j][1], s));
+        bsum += beta[j];
+    }
+    /* The spread as a sum of PSD terms (see the float text): each term
+     * below 2^28, their beta-weighted sum too; exponent 30 - 2 (F + s). */
+    for (j = 0; j < m; ++j) {
+        const int32_t dx = mtt_fx_shift(nu[j][0], s) - cx, dy = mtt_fx_shift(nu[j][1], s) - cy;
+        const int32_t bx = MULQ(beta[j], dx);
+        sp[0] += MULQ(bx, dx);
+        sp[1] += MULQ(bx, dy);
+        sp[2] += MULQ(MULQ(beta[j], dy), dy);
+    }
+    bsum = MTT_P(1.0) - bsum;
+    if (bsum > 0) {
+        const int32_t bx = MULQ(bsum, cx);
+        sp[0] += MULQ(bx, cx);
+        sp[1] += MULQ(bx, cy);
+        sp[2] += MULQ(MULQ(bsum, cy), cy);
+    }
+    eSp = 30 - 2 * (MTT_FX_POS_FRAC + s);
+    /* K to 29 bits (its exponent eK): the state moves by K nu_c. */
+    u = 0u;
+    for (i = 0; i < n; ++i) {
+        u |= or_abs(K[i], 2);
+    }
+    k = mtt_fx_top_exp(0, u, 29);
+    eK = eP + MTT_SYM_E(Si) + 28 + k;
+    for (i = 0; i < n; ++i) {
+        Kn[i][0] = mtt_fx_shift(K[i][0], -k);
+        Kn[i][1] = mtt_fx_shift(K[i][1], -k);
+        /* |K| < 2^29, |nu_c| < 2^28 + m: the sum below 2^28 */
+        x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
+                                         30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
+    }
+    /* R to 29 bits (exponent eR); M = (1 - beta0) R + spread at the
+     * exponent where the larger of the two has 29 bits: |M| < 2^30. */
+    k = mtt_fx_top_exp(0, or_abs(R, 3), 29);
+    eR = -MTT_FX_VAR_FRAC + k;
+    for (c = 0; c < 3; ++c) {
+        Rn[c] = mtt_fx_shift(R[c], -k);
+        M[c] = MULQ(w, Rn[c]);
+    }
+    eM = mtt_fx_top_exp(eR, or_abs(M, 3), 29);
+    k = mtt_fx_top_exp(eSp, or_abs(sp, 3), 29);
+    eM = (k > eM) ? k : eM;
+    for (c = 0; c < 3; ++c) {
+        M[c] = mtt_fx_shift(M[c], eR - eM) + mtt_fx_shift(sp[c], eSp - eM);
+    }
+    /* A = I - K H: its position block R S^-1 (each entry below 2^28 at
+     * eAp), its other rows -K; one exponent eA (largest on 29 bits, at
+     * least -30 so that A's identity part, 2^-eA, is a right shift). */
+    eAp = eR + MTT_SYM_E(Si) + 30;
+    A[0][0] = MULQ(Rn[0], Si[0]) + MULQ(Rn[1], Si[1]);
+    A[0][1] = MULQ(Rn[0], Si[1]) + MULQ(Rn[1], Si[2]);
+    A[1][0] = MULQ(Rn[1], Si[0]) + MULQ(Rn[2], Si[1]);
+    A[1][1] = MULQ(Rn[1], Si[1]) + MULQ(Rn[2], Si[2]);
+    eA = mtt_fx_top_exp(eAp, or_abs(A[0], 2) | or_abs(A[1], 2), 29);
+    u = 0u;
+    for (i = MTT_MEAS_DIM; i < n; ++i) {
+        u |= or_abs(Kn[i], 2);
+    }
+    k = mtt_fx_top_exp(eK, u, 29);
+    eA = (k > eA) ? k : eA;
+    eA = (eA < -30) ? -30 : eA;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < 2; ++k) {
+            A[i][k] = (i < MTT_MEAS_DIM) ? mtt_fx_shift(A[i][k], eAp - eA) : -mtt_fx_shift(Kn[i][k], eK - eA);
+        }
+    }
+    iA = -(eA + 30); /* the identity at A's exponent is 2^30 2^iA, iA <= 0 */
+    /* A Pp at E1 = eA + eP + 30: products below 2^27, the identity part
+     * below 2^28: |AP| < 2^29. */
+    E1 = eA + eP + 30;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            AP[i][k] = MULQ(A[i][0], Pp[0][k]) + MULQ(A[i][1], Pp[1][k]) +
+                       ((i >= MTT_MEAS_DIM) ? mtt_fx_shift(Pp[i][k], iA) : 0);
+        }
+    }
+    /* Upper triangles of the three terms: beta0 Pp (below 2^28 at eP),
+     * (1 - beta0) A Pp A' (below 2^30 at E2), K M K' (below 2^30 at E3). */
+    E2 = E1 + eA + 30;
+    E3 = eK + eM + 30 + eK + 30;
+    c = 0;
+    for (i = 0; i < n; ++i) {
+        const int32_t a = MULQ(Kn[i][0], M[0]) + MULQ(Kn[i][1], M[1]);
+        const int32_t b = MULQ(Kn[i][0], M[1]) + MULQ(Kn[i][1], M[2]);
+        for (k = i; k < n; ++k) {
+            const int32_t pc = MULQ(AP[i][0], A[k][0]) + MULQ(AP[i][1], A[k][1]) +
+                               ((k >= MTT_MEAS_DIM) ? mtt_fx_shift(AP[i][k], iA) : 0);
+            t1[c] = MULQ(beta0, Pp[i][k]);
+            t2[c] = MULQ(w, pc);
+            t3[c] = MULQ(a, Kn[k][0]) + MULQ(b, Kn[k][1]);
+            ++c;
+        }
+    }
+    /* One exponent for the sum: each term below 2^29 there. */
+    E = mtt_fx_top_exp(eP, or_abs(t1, c), 29);
+    k = mtt_fx_top_exp(E2, or_abs(t2, c), 29);
+    E = (k > E) ? k : E;
+    k = mtt_fx_top_exp(E3, or_abs(t3, c), 29);
+    E = (k > E) ? k : E;
+    c = 0;
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            const int32_t v = mtt_fx_shift(t1[c], eP - E) + mtt_fx_shift(t2[c], E2 - E) +
+                              mtt_fx_shift(t3[c], E3 - E);
+            P[i][k] = v;
+            P[k][i] = v;
+            ++c;
+        }
+    }
+    MTT_COV_E(P) = E;
+    MTT_COV_NORM(P);
+}
+
+/* L D L' without L: E_ij = L_ij d_j, so d_i = A_ii - sum_j E_ij^2 / d_j and
+ * E_ij = A_ij - sum_k E_ik E_jk / d_k.  For a positive definite A every
+ * such quotient is at most sqrt(A_ii A_jj) (Cauchy-Schwarz on the pivots),
+ * so with A normalised to 29 bits nothing leaves the format; one
+ * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
+ * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
+ * bits, each row and column i then scaled by 2^t_i so that every diagonal
+ * entry has 28 or 29 bits (D A D: the pivot ratios d_i / a_ii do not
+ * change, and a block whose variances span many bits keeps the precision
+ * of its small ones, as float's per-value exponent does); returns 0, or
+ * -1 when a pivot is not positive.  The last pivot's reciprocal only when
+ * `last` (the quadratic form needs it, the test not). */
+struct ldl_fx {
+    /* a's lower triangle is overwritten by E (each a_ij is read once, when
+     * E_ij is formed) */
+    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
+    int32_t r[MTT_MAX_STATE];
+    int rho[MTT_MAX_STATE];
+    int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
+    int ea;               /* a's exponent */
+};
+
+/* a b / d_k, saturated */
+static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+{
+    return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
+}
+
+/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
+ * have left its pivot positive: then both are below a_ii, a_jj < 2^30
+ * and so is their geometric mean, and the fast multiply cannot overflow
+ * (its shift rho_k - 30 >= 19; below that, the exact one) */
+static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+{
+    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
+}
+
+static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
+{
+    uint32_t u = 0u;
+    int i, j, k, sh;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        u |= or_abs(A[i], MTT_STATE_N);
+    }
+    if (u == 0u) {
+        return -1;
+    }
+    sh = mtt_fx_top_exp(0, u, 29);
+    f->ea = MTT_COV_E(A) + sh;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        const int32_t aii = mtt_fx_shift(A[i][i], -sh);
+        if (!(aii > 0)) {
+            return -1;
+        }
+        f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j <= i; ++j) { /* the lower triangle: A is symmetric */
+            const int32_t v = A[i][j];
+            const int tt = f->t[i] + f->t[j] - sh;
+            /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
+             * A; beyond 2^30 it is not, and saturates */
+            f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
+                                                                          : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
+        }
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        int32_t di = f->a[i][i];
+        for (j = 0; j < i; ++j) {
+            int32_t v = f->a[i][j];
+            for (k = 0; k < j; ++k) {
+                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
+            }
+            f->a[i][j] = v;
+            di = MTT_SUBS(di, over_pivot(f, v, v, j));
+            if (!(di > 0)) {
+                return -1; /* the pivot only decreases from here */
+            }
+        }
+        if (!(di > 0) || !mtt_isfinite(di)) {
+            return -1;
+        }
+        f->d[i] = di;
+        if (i + 1 < MTT_STATE_N || last) {
+            f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
+            f->r[i] = mtt_fx_recip(di, f->rho[i]);
+        }
+    }
+    return 0;
+}
+
+int mtt_cov_ok(mtt_cov P, mtt_real rel)
+{
+    struct ldl_fx f;
+    int i;
+    /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
+    if (ldl_fx(P, &f, 0) != 0) {
+        return 0;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        if (!(f.d[i] > MULQ(rel, f.a[i][i]))) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
+{
+    struct ldl_fx f;
+    int32_t y[MTT_MAX_STATE], t[MTT_MAX_STATE];
+    int ex[MTT_MAX_STATE];
+    int32_t acc = 0;
+    int i, k, s, e = -127;
+    if (ldl_fx(A, &f, 1) != 0) {
+        return -1;
+    }
+    /* D b at 2^-(F + s) on 24 bits, so that y = L^-1 D b (|y_i| <= sqrt(d2 d_i))
+     * stays in the format unless the form is far beyond every threshold
+     * (it saturates).  Each y_i^2 / d_i is formed on 29 bits with its own
+     * exponent (relative to 2^(-2 (F + s) - ea)), then the four are summed
+     * at the largest exponent plus two. */
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        /* D b: the largest |b_i| 2^t_i on 24 bits */
+        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 24);
+        e = (k > e) ? k : e;
+    }
+    s = -e;
+    e = -127;
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
+        int sh;
+        for (k = 0; k < i; ++k) {
+            v = MTT_SUBS(v, over_pivot(&f, f.a[i][k], y[k], k));
+        }
+        y[i] = v;
+        q = MULQ(v, f.r[i]);
+        sh = mtt_fx_top_exp(0, (uint32_t)((q < 0) ? -q : q), 0) + mtt_fx_top_exp(0, (uint32_t)((v < 0) ? -v : v), 29);
+        sh = (sh < 0) ? 0 : sh;
+        t[i] = mtt_fx_mul(q, v, sh);
+        ex[i] = sh + 30 - f.rho[i];
+        e = (ex[i] > e) ? ex[i] : e;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        acc = MTT_ADDS(acc, mtt_fx_at(t[i], ex[i], e + 2));
+    }
+    /* acc at 2^(e + 2 - 2 (F + s) - ea), returned in Q24 (saturated) */
+    *d2 = mtt_fx_at(acc, e + 2 - 2 * (MTT_FX_POS_FRAC + s) - f.ea, -MTT_FX_D2_FRAC);
+    return 0;
+}
+#undef MULQ
+#undef or_abs
+
+#else /* float, double */
+
+static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                   const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                   mtt_real beta0, mtt_state x, mtt_cov P)
 {
@@ -173,7 +481,9 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
     }
 }
 
-void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+#endif /* MTT_REAL_FIXED */
+
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P)
 {
@@ -181,13 +491,15 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
 }
 
 #if MTT_WITH_IMM
-void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                       const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                       mtt_real beta0, mtt_state x, mtt_cov P)
 {
     pda_n(n, xp, Pp, K, Si, R, m, nu, beta, beta0, x, P);
 }
 #endif
+
+#ifndef MTT_REAL_FIXED /* the fixed L D L' is above */
 
 /* A = L D L' (unit lower L, its diagonal not written) of the leading
  * n x n block, without square roots: cheap on soft float.  Returns 0, or

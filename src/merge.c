@@ -7,18 +7,24 @@
  * smaller position-covariance trace (then higher existence, then lower
  * identity), keeps its state, takes the larger existence and the OR of the
  * confirmed flags.  With lm-ihpda contest, two tracks both contested this
- * frame are no candidates (ALGORITHMS.md §10.4). */
+ * frame are no candidates (ALGORITHMS.md §10.4).
+ * Fixed-point build (docs/FIXED_POINT.md §3): P_a + P_b at the larger of
+ * the two block exponents, d^2 in Q24 through the integer L D L', the
+ * traces compared at one exponent. */
 #include "mtt_internal.h"
 
-int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2)
+int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_d2 *d2)
 {
     mtt_cov A;
     mtt_state d;
     int i, j;
+    /* fixed point: both blocks at the larger exponent (identity otherwise) */
+    MTT_COV_SET_E(A, MTT_COV_EMAX(a->P, b->P));
     for (i = 0; i < MTT_STATE_N; ++i) {
-        d[i] = a->x[i] - b->x[i];
+        d[i] = MTT_SUBS(a->x[i], b->x[i]);
         for (j = 0; j < MTT_STATE_N; ++j) {
-            A[i][j] = a->P[i][j] + b->P[i][j];
+            A[i][j] = MTT_ADD(MTT_AT(a->P[i][j], MTT_COV_E(a->P), MTT_COV_E(A)),
+                              MTT_AT(b->P[i][j], MTT_COV_E(b->P), MTT_COV_E(A)));
         }
     }
     return mtt_chol_quad(A, d, d2);
@@ -37,7 +43,7 @@ static int less_cand(const void *pa, const void *pb, const void *ctx)
     return a->b < b->b;
 }
 
-static void add_cand(mtt_tracker *trk, mtt_real d2, uint16_t a, uint16_t b)
+static void add_cand(mtt_tracker *trk, mtt_d2 d2, uint16_t a, uint16_t b)
 {
     mtt_merge_cand c;
     uint16_t k, worst = 0;
@@ -62,17 +68,17 @@ static void add_cand(mtt_tracker *trk, mtt_real d2, uint16_t a, uint16_t b)
 
 void mtt_merge_frame(mtt_tracker *trk)
 {
-    const mtt_real thr = trk->par.merge_threshold;
+    const mtt_d2 thr = trk->par.merge_threshold;
     uint16_t c, q1, q2, k;
     trk->n_merge = 0;
-    if (!(thr > MTT_R(0.0))) {
+    if (!(thr > MTT_ZERO)) {
         return;
     }
     for (c = 0; c < trk->n_clusters; ++c) {
         for (q1 = trk->cl_first[c]; q1 < trk->cl_first[c + 1u]; ++q1) {
             for (q2 = (uint16_t)(q1 + 1u); q2 < trk->cl_first[c + 1u]; ++q2) {
                 uint16_t a = trk->cl_list[q1], b = trk->cl_list[q2];
-                mtt_real d2;
+                mtt_d2 d2;
                 /* A track the update found numerically invalid is deleted
                  * as such, not merged (it would be counted twice). */
                 if (!trk->tf[a].valid || !trk->tf[b].valid) {
@@ -98,8 +104,9 @@ void mtt_merge_frame(mtt_tracker *trk)
         if (ta->dead || tb->dead) {
             continue;
         }
-        tra = ta->P[0][0] + ta->P[1][1];
-        trb = tb->P[0][0] + tb->P[1][1];
+        /* fixed point: both at the larger exponent */
+        tra = MTT_AT(MTT_ADD(ta->P[0][0], ta->P[1][1]), MTT_COV_E(ta->P), MTT_COV_EMAX(ta->P, tb->P));
+        trb = MTT_AT(MTT_ADD(tb->P[0][0], tb->P[1][1]), MTT_COV_E(tb->P), MTT_COV_EMAX(ta->P, tb->P));
         /* a has the lower index, hence the lower identity: it wins full ties. */
         if (tra < trb || (tra == trb && ta->existence >= tb->existence)) {
             keep = ta;

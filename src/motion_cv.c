@@ -60,7 +60,94 @@ void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
     MTT_COV_COPY_E(Pp, FP);
 }
 
-#ifndef MTT_REAL_FIXED /* not yet converted (docs/FIXED_POINT.md, Status) */
+#ifdef MTT_REAL_FIXED
+/* The velocity cap of the float text below, on the two-point blocks before
+ * they meet at one exponent (so a capped P keeps the position block's
+ * precision): c^2 = vmax^2 / max(2R/dt^2) when that is below 1, as the
+ * mantissa cm (Q30, at least 29 bits) of c = cm 2^-30 2^-z; returns 1 and
+ * sets *z, or 0 for no cap.  v: the 2R/dt^2 block at exponent e3. */
+static int cap_factor(const int32_t v[3], int e3, mtt_real vmax, int32_t *cm, int *z)
+{
+    const int32_t vv = (v[0] > v[2]) ? v[0] : v[2];
+    int32_t vm, cap, q;
+    int a, g, t;
+    if (!(vv > 0) || !(vmax > 0)) {
+        return 0;
+    }
+    a = -mtt_fx_top_exp(0, (uint32_t)vmax, 30);
+    vm = mtt_fx_shift(vmax, a);
+    cap = mtt_fx_mulq(vm, vm, 30); /* vmax^2 at 2^ec, ec = 30 - 2 (F + a) */
+    /* q = cap 2^g / vv on 28 or 29 bits; cap / vv = q 2^-t with t even */
+    g = 28 + mtt_fx_top_exp(0, (uint32_t)vv, 0) - mtt_fx_top_exp(0, (uint32_t)cap, 0);
+    t = g - (30 - 2 * (MTT_FX_POS_FRAC + a)) + e3;
+    if (t & 1) {
+        ++g;
+        ++t;
+    }
+    if (t <= 0 || g < 0 || g > 62) {
+        return 0; /* cap / vv >= q >= 2^27, or far outside the formats */
+    }
+    q = mtt_fx_div(cap, vv, g);
+    if (t < 31 && !(q < ((int32_t)1 << t))) {
+        return 0; /* vv <= vmax^2: nothing to cap */
+    }
+    *cm = (int32_t)mtt_fx_sqrt((uint32_t)q, 30); /* sqrt(q 2^-30): c = cm 2^-30 2^(15 - t/2) */
+    *z = t / 2 - 15;
+    return 1;
+}
+
+/* Fixed point (docs/FIXED_POINT.md §2): R (Q16) on 29 bits, 1/dt from dt's
+ * mantissa dm in [2^29, 2^30] (dt = dm 2^de): R/dt and 2R/dt^2 are
+ * quotients by dm below 2^29 at their own exponents, scaled by c and c^2
+ * when vmax > 0 caps them; the three blocks meet at the largest exponent,
+ * then P is renormalised. */
+static void two_point_fx(const mtt_real R[3], mtt_real dt, mtt_real vmax, mtt_cov P)
+{
+    int32_t r[3], q[3], v[3], cm = 0;
+    int de, k, i, j, e1, e2, e3, E, z = 0;
+    const int32_t dm = mtt_fx_unpack(dt, MTT_FX_T_FRAC, &de);
+    const int sh = mtt_fx_top_exp(0, mtt_fx_or_abs(R, 3), 29);
+    e1 = -MTT_FX_VAR_FRAC + sh;
+    e2 = e1 - de - 29;
+    e3 = e2 - de - 29 + 1; /* the factor 2 */
+    for (k = 0; k < 3; ++k) {
+        r[k] = mtt_fx_shift(R[k], -sh);
+        q[k] = mtt_fx_div(r[k], dm, 29);
+        v[k] = mtt_fx_div(q[k], dm, 29);
+    }
+    if (cap_factor(v, e3, vmax, &cm, &z)) {
+        for (k = 0; k < 3; ++k) {
+            q[k] = mtt_fx_mulq(q[k], cm, 30);
+            v[k] = mtt_fx_mulq(mtt_fx_mulq(v[k], cm, 30), cm, 30);
+        }
+        e2 -= z;
+        e3 -= 2 * z;
+    }
+    E = (e2 > e1) ? e2 : e1;
+    E = (e3 > E) ? e3 : E;
+    for (i = 0; i < 2; ++i) {
+        for (j = 0; j < 2; ++j) {
+            k = i + j; /* r11, r12, r22 */
+            P[i][j] = mtt_fx_shift(r[k], e1 - E);
+            P[i][j + 2] = mtt_fx_shift(q[k], e2 - E);
+            P[i + 2][j] = P[i][j + 2];
+            P[i + 2][j + 2] = mtt_fx_shift(v[k], e3 - E);
+        }
+    }
+    MTT_COV_E(P) = E;
+    MTT_COV_NORM(P);
+}
+
+void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
+{
+    two_point_fx(R, dt, 0, P);
+}
+
+/* the two-point P with its velocity capped at vmax^2 (the float text's
+ * [CHOICE] below) */
+#define TWO_POINT_CAPPED(R, dt, vmax, P) two_point_fx((R), (dt), (vmax), (P))
+
+#else /* float, double */
 
 void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
 {
@@ -105,14 +192,15 @@ static void cap_velocity(mtt_cov P, mtt_real vmax)
     }
 }
 
+#define TWO_POINT_CAPPED(R, dt, vmax, P) (mtt_motion_two_point_cov((R), (dt), (P)), cap_velocity((P), (vmax)))
+#endif /* MTT_REAL_FIXED */
+
 void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, const mtt_real R[3],
                       mtt_real vmax, mtt_state x, mtt_cov P)
 {
     x[0] = b->x;
     x[1] = b->y;
-    x[2] = (b->x - a->x) / dt;
-    x[3] = (b->y - a->y) / dt;
-    mtt_motion_two_point_cov(R, dt, P);
-    cap_velocity(P, vmax);
+    x[2] = MTT_DIV_T(MTT_SUBS(b->x, a->x), dt);
+    x[3] = MTT_DIV_T(MTT_SUBS(b->y, a->y), dt);
+    TWO_POINT_CAPPED(R, dt, vmax, P);
 }
-#endif /* MTT_REAL_FIXED */

@@ -46,11 +46,11 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny);
 /* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
 int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
                        mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
-void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                       const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                       mtt_real beta0, mtt_state x, mtt_cov P);
 #endif
-void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[3],
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
 void mtt_sym(mtt_cov P);
@@ -81,6 +81,16 @@ int32_t mtt_fx_gate_area(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLO
 int32_t mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg, int32_t dens);
 int32_t mtt_fx_gate_lik(int32_t peak, int32_t d2);
 int32_t mtt_fx_gate_width(int32_t gamma, const int32_t S[MTT_SYM_SLOTS], int k);
+/* v 2^s: exact for s >= 0 (the caller keeps it below 2^31), rounded to
+ * nearest for s < 0 (fx_cov.c; the PDA update and L D L' of kalman.c). */
+int32_t mtt_fx_shift(int32_t v, int s);
+/* The exponent at which a block at exponent e whose entries' |OR| is u has
+ * its largest entry on `top` bits (u = 0: e - top). */
+int mtt_fx_top_exp(int e, uint32_t u, int top);
+/* |OR| of n values: its bit length is that of the largest |value|. */
+uint32_t mtt_fx_or_abs(const int32_t *v, int n);
+/* v > 0 in Q frac as m 2^e with m in [2^29, 2^30]. */
+int32_t mtt_fx_unpack(int32_t v, int frac, int *e);
 #endif
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive
@@ -92,8 +102,15 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel);
 /* Margins: a seeded covariance must leave room for a predict and update;
  * a track whose covariance falls below the per-frame one is numerically
  * invalid and deleted (ALGORITHMS.md §3, extended to P). */
+#ifdef MTT_REAL_FIXED
+/* The float build's values (1000 and 16 float epsilons) in Q30: the fixed
+ * mantissas (28 bits) are finer than float's, so the same margins hold. */
+#define MTT_SEED_COV_MARGIN MTT_P(1000.0 * 1.1920929e-7)
+#define MTT_FRAME_COV_MARGIN MTT_P(16.0 * 1.1920929e-7)
+#else
 #define MTT_SEED_COV_MARGIN (MTT_R(1000.0) * MTT_REAL_EPS)
 #define MTT_FRAME_COV_MARGIN (MTT_R(16.0) * MTT_REAL_EPS)
+#endif
 /* Solve A y = b for a symmetric positive definite A by L D L'; returns
  * d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
 int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
@@ -267,14 +284,16 @@ void mtt_associate_frame(mtt_tracker *trk);
 void mtt_update_frame(mtt_tracker *trk);
 
 /* ---- initiate.c: two-point initiation (ALGORITHMS.md §12.1, §12.2) ---- */
+#ifndef MTT_REAL_FIXED /* the intensity gate: not in the fixed-point build */
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I);
+#endif
 /* Velocity/intensity gate of a pair (a at k-1, b at k); 1 = accept. */
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt);
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
 
 /* ---- merge.c: track merging (ALGORITHMS.md §12.3) ---- */
 /* d^2 of two states; returns -1 when P_a + P_b is not positive definite. */
-int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_real *d2);
+int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_d2 *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
 /* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */

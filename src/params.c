@@ -9,40 +9,12 @@
 #include "mtt_internal.h"
 #include "params_table.h"
 
-/* Fixed-point build: the Q format of each REAL row's values
- * (docs/FIXED_POINT.md §3), by member name; PDEF and the rule bounds
- * convert their constants with it (saturated: MTT_REAL_MAX is "no
+/* Fixed-point build: PDEF and the rule bounds convert their constants
+ * with the Q format of each REAL row's values (MTT_FX_FRAC_<member>,
+ * params_table.h) (saturated: MTT_REAL_MAX is "no
  * bound"; a positive bound that rounds to 0 becomes one unit, so an open
  * or positive lower bound stays positive).  Float and double: MTT_R. */
 #ifdef MTT_REAL_FIXED
-#define MTT_FX_FRAC_contest_beta MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
-#define MTT_FX_FRAC_meas_sigma MTT_FX_POS_FRAC
-#define MTT_FX_FRAC_pd MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_pg MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_clutter_density MTT_FX_DENS_FRAC
-#define MTT_FX_FRAC_snr_rho MTT_FX_RATIO_FRAC
-#define MTT_FX_FRAC_amplitude_eta MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_markov_p11 MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_markov_p21 MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_existence_init MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_confirm_threshold MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_terminate_threshold MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_merge_threshold MTT_FX_D2_FRAC
-#define MTT_FX_FRAC_vmax MTT_FX_POS_FRAC
-#define MTT_FX_FRAC_intensity_f1 MTT_FX_AMP_FRAC
-#define MTT_FX_FRAC_intensity_f2 MTT_FX_AMP_FRAC
-#define MTT_FX_FRAC_intensity_blend MTT_FX_AMP_FRAC
-#define MTT_FX_FRAC_jpda_bias MTT_FX_DENS_FRAC
-#define MTT_FX_FRAC_jpda_star_threshold MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_nnjpda_threshold MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_adaptive_jpda_distance MTT_FX_RATIO_FRAC
-#define MTT_FX_FRAC_adaptive_jpda_shrink MTT_FX_RATIO_FRAC
-#define MTT_FX_FRAC_split_p25 MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_split_p52 MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
-#define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
-#define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
 #define PDEF(member, x) MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member)
 #define PBOUND(member, x)                                                                          \
     (((x) > 0 && MTT_FX_CONST_SAT(x, MTT_FX_FRAC_##member) == 0) ? 1                                \
@@ -308,6 +280,18 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
          * (docs/FIXED_POINT.md §2): the estimated density (0) has no
          * reference yet */
         bad = "clutter_density";
+        st = MTT_ERR_UNSUPPORTED;
+    }
+    if (bad == NULL && (!(MTT_VAR_OF(p->meas_sigma[0]) > 0) || !(MTT_VAR_OF(p->meas_sigma[0]) < MTT_FX_MAX) ||
+                        !(MTT_VAR_OF(p->meas_sigma[1]) > 0) || !(MTT_VAR_OF(p->meas_sigma[1]) < MTT_FX_MAX))) {
+        /* R = sigma^2 must be a variance of its format: (0, 32768) unit^2 */
+        bad = "meas_sigma";
+        st = MTT_ERR_PARAM;
+    }
+    if (bad == NULL && p->init_gate == MTT_INIT_GATE_INTENSITY) {
+        /* the intensity gate's f(I) coefficients (a2 = -1e-4) have no
+         * precision in the amplitude format: the vmax circle only */
+        bad = "init_gate";
         st = MTT_ERR_UNSUPPORTED;
     }
 #endif

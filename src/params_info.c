@@ -6,7 +6,10 @@
  * mtt_params_rule_ok: this file adds the texts and the conversion from and
  * to double.  Nothing in the tracker calls it, so a firmware image does not
  * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
- * that no double helper is linked). */
+ * that no double helper is linked).  In the fixed-point build the doubles
+ * are the user's units, converted from and to each row's Q format
+ * (MTT_FX_FRAC_<member>, docs/FIXED_POINT.md §3): rounded to nearest, a
+ * value outside the format refused. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -16,19 +19,30 @@
 typedef struct info_row {
     mtt_param_info info;
     size_t rule;
+#ifdef MTT_REAL_FIXED
+    int frac; /* Q format of the values */
+#endif
 } info_row;
+
+#ifdef MTT_REAL_FIXED
+#define INFO_FRAC(member) , MTT_FX_FRAC_##member
+#define INFO_NO_FRAC , 0
+#else
+#define INFO_FRAC(member)
+#define INFO_NO_FRAC
+#endif
 
 #define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
     {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
       ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
       ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 3 : 0,                 \
       ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
-     MTT_RULE_##member},
+     MTT_RULE_##member INFO_FRAC(member)},
 #define INFO_FLAG(key, member, text)                                                               \
-    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT},
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT INFO_NO_FRAC},
 #define INFO_ENUM(key, member, type, n_names, names, text)                                         \
     {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text},  \
-     MTT_RULE_COUNT},
+     MTT_RULE_COUNT INFO_NO_FRAC},
 
 static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
 
@@ -153,6 +167,30 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
 }
 #endif
 
+#ifdef MTT_REAL_FIXED
+/* v (user's units) in Q frac, rounded to nearest; 0 when outside the
+ * format (NaN included): the host boundary's one conversion (fx_double.c). */
+static int to_real(double v, int frac, mtt_real *out)
+{
+    return mtt_fx_from_double(v, frac, out) == MTT_OK;
+}
+#define FROM_REAL(x, r) mtt_fx_to_double((x), (r)->frac)
+#define ROW_FRAC(r) ((r)->frac)
+#else
+/* Beyond mtt_real's range the conversion is undefined: tested first. */
+static int to_real(double v, int frac, mtt_real *out)
+{
+    (void)frac;
+    if (!(v >= -(double)MTT_REAL_MAX && v <= (double)MTT_REAL_MAX)) {
+        return 0;
+    }
+    *out = (mtt_real)v;
+    return 1;
+}
+#define FROM_REAL(x, r) ((double)(x))
+#define ROW_FRAC(r) 0
+#endif
+
 mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
 {
     const info_row *r = NULL;
@@ -177,11 +215,9 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     }
     q = *p;
     for (k = 0; k < n; ++k) {
-        /* beyond mtt_real's range the conversion is undefined: test first */
-        if (!(v[k] >= -(double)MTT_REAL_MAX && v[k] <= (double)MTT_REAL_MAX)) {
+        if (!to_real(v[k], ROW_FRAC(r), &mtt_params_rule_at(&q, r->rule)[k])) {
             return MTT_ERR_PARAM;
         }
-        mtt_params_rule_at(&q, r->rule)[k] = (mtt_real)v[k];
     }
     if (!mtt_params_rule_ok(&q, r->rule, 0)) {
         return MTT_ERR_PARAM;
@@ -220,7 +256,7 @@ mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_
     }
     q = *p; /* mtt_params_rule_at addresses a writable mtt_params */
     for (k = 0; k < n; ++k) {
-        v[k] = (double)mtt_params_rule_at(&q, r->rule)[k];
+        v[k] = FROM_REAL(mtt_params_rule_at(&q, r->rule)[k], r);
     }
     return MTT_OK;
 }

@@ -150,6 +150,40 @@ extern const char *const mtt_model_names[3];
          "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \
     MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 
+/* Fixed-point build: the Q format of each REAL row's values
+ * (docs/FIXED_POINT.md §3), by member name (params.c's defaults and
+ * bounds, params_info.c's conversion from and to double). */
+#ifdef MTT_REAL_FIXED
+#define MTT_FX_FRAC_contest_beta MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
+#define MTT_FX_FRAC_meas_sigma MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_pd MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_pg MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_clutter_density MTT_FX_DENS_FRAC
+#define MTT_FX_FRAC_snr_rho MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_amplitude_eta MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_markov_p11 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_markov_p21 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_existence_init MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_confirm_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_terminate_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_merge_threshold MTT_FX_D2_FRAC
+#define MTT_FX_FRAC_vmax MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_intensity_f1 MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_intensity_f2 MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_intensity_blend MTT_FX_AMP_FRAC
+#define MTT_FX_FRAC_jpda_bias MTT_FX_DENS_FRAC
+#define MTT_FX_FRAC_jpda_star_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_nnjpda_threshold MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_adaptive_jpda_distance MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_adaptive_jpda_shrink MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_split_p25 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_p52 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
+#endif
+
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
 #define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,
 #define MTT_PARAM_NO_REAL(key, member, count, lo, hi, flags, cross, text)

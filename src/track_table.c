@@ -1,6 +1,9 @@
 /* track_table.c - the track table: append a track, seed a known one with
  * its checks, delete / confirm / compact at the end of a frame
- * (ALGORITHMS.md §12.4, §3), and the read-only views of the live tracks. */
+ * (ALGORITHMS.md §12.4, §3), and the read-only views of the live tracks.
+ * Fixed-point build (docs/FIXED_POINT.md §3): a seed's and a view's
+ * covariance are in the variance format (MTT_COV_VIEW), the table's in
+ * block floating point. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -9,23 +12,25 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
                      int confirmed, int born)
 {
     mtt_track *t;
-    int i;
     if (trk->n_tracks >= MTT_MAX_TRACKS) {
         return -1;
     }
     t = &trk->tracks[trk->n_tracks];
 #if MTT_MAX_STATE > MTT_STATE_N
-    /* The model's MTT_STATE_N leading components; the rest of the storage
-     * (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal inputs give
-     * equal tracker states byte for byte. */
-    memset(t->x, 0, sizeof t->x);
-    memset(t->P, 0, sizeof t->P);
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        t->x[i] = x[i];
-        memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
+    {
+        /* The model's MTT_STATE_N leading components; the rest of the
+         * storage (MTT_MAX_STATE > MTT_STATE_N with IMM) is zero, so equal
+         * inputs give equal tracker states byte for byte. */
+        int i;
+        memset(t->x, 0, sizeof t->x);
+        memset(t->P, 0, sizeof t->P);
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            t->x[i] = x[i];
+            memcpy(t->P[i], P[i], MTT_STATE_N * sizeof P[i][0]);
+        }
+        MTT_COV_COPY_E(t->P, P);
     }
 #else
-    (void)i;
     memcpy(t->x, x, sizeof t->x);
     memcpy(t->P, P, sizeof t->P);
 #endif
@@ -74,6 +79,16 @@ void mtt_track_manage(mtt_tracker *trk)
     trk->n_tracks = n;
 }
 
+/* A seed is symmetric to 1e-6 relative (the decimals of a settings file);
+ * in the fixed build to 2^-20 relative plus one unit of the variance
+ * format (its rounding). */
+#ifdef MTT_REAL_FIXED
+#define SYM_OK(a, b) (MTT_ABS(mtt_fx_sub((a), (b))) <= ((MTT_ABS(a) >> 21) + (MTT_ABS(b) >> 21) + 1))
+#else
+#define SYM_OK(a, b)                                                                               \
+    (mtt_fabs((a) - (b)) <= MTT_R(1e-6) * (mtt_fabs(a) + mtt_fabs(b)) + MTT_REAL_EPS)
+#endif
+
 mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mtt_real P16[16],
                                  uint32_t *id)
 {
@@ -103,19 +118,22 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
             return MTT_ERR_VALUE;
         }
         for (j = 0; j < i; ++j) {
-            mtt_real tol = MTT_R(1e-6) * (mtt_fabs(P[i][j]) + mtt_fabs(P[j][i])) + MTT_REAL_EPS;
-            if (mtt_fabs(P[i][j] - P[j][i]) > tol) {
+            if (!SYM_OK(P[i][j], P[j][i])) {
                 return MTT_ERR_VALUE;
             }
         }
     }
+    /* Fixed point: the variance format's values as mantissas, then the
+     * block's own exponent. */
+    MTT_COV_SET_E(P, -MTT_FX_VAR_FRAC);
+    MTT_COV_NORM(P);
     /* Positive definite, and not nearly singular for mtt_real: every
      * scale-free pivot above 1000 eps (correlations up to about 0.99994 in
      * float); a seed past that cannot survive a predict and update. */
     if (!mtt_cov_ok(P, MTT_SEED_COV_MARGIN)) {
         return MTT_ERR_VALUE;
     }
-    idx = mtt_track_append(trk, xs, P, MTT_R(1.0), 1, 0);
+    idx = mtt_track_append(trk, xs, P, MTT_P(1.0), 1, 0);
     if (idx < 0) {
         return MTT_ERR_FULL;
     }
@@ -148,7 +166,7 @@ mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count)
 mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *view)
 {
     const mtt_track *t;
-    int k;
+    int k, j;
     if (trk == NULL || view == NULL) {
         return MTT_ERR_NULL;
     }
@@ -164,13 +182,15 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     view->confirmed = t->confirmed;
     for (k = 0; k < 4; ++k) { /* the CV part: x, y, vx, vy */
         view->x[k] = t->x[k];
-        memcpy(view->P[k], t->P[k], sizeof view->P[k]);
+        for (j = 0; j < 4; ++j) {
+            view->P[k][j] = MTT_COV_VIEW(t->P, k, j);
+        }
     }
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;
     view->n_models = 1u;
-    view->mu[0] = MTT_R(1.0);
+    view->mu[0] = MTT_P(1.0);
 #if MTT_WITH_IMM
     if (trk->par.motion == MTT_MOTION_IMM) {
         view->n_models = trk->par.imm_n_models;

@@ -1,7 +1,11 @@
 /* tracker.c - the per-frame pipeline (ALGORITHMS.md §15; docs/DESIGN.md
  * stages 1-10): mtt_tracker_init, mtt_tracker_step and the statistics.
  * This file only sequences the stages; each stage computes in its own
- * file, and the association mode is a row of the mode table (associate.c). */
+ * file, and the association mode is a row of the mode table (associate.c).
+ * In the fixed-point build (docs/FIXED_POINT.md) time is a Q16 count of
+ * frames modulo 2^32 and R is formed in the variance format; the modes,
+ * IMM, split and the estimated clutter density that the build does not
+ * hold are refused by mtt_params_check with MTT_ERR_UNSUPPORTED. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -66,9 +70,9 @@ mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_
     memset(trk, 0, sizeof *trk);
     trk->par = *p;
     trk->gamma = mtt_gate_gamma(p->pg);
-    trk->R[0] = p->meas_sigma[0] * p->meas_sigma[0];
-    trk->R[1] = MTT_R(0.0);
-    trk->R[2] = p->meas_sigma[1] * p->meas_sigma[1];
+    trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
+    trk->R[1] = MTT_ZERO;
+    trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
     /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
     for (m = 1; m <= MTT_MAX_GATED; ++m) {
         mtt_ihpda_prank(m, p->snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
@@ -79,7 +83,7 @@ mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_
 
 mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, size_t n)
 {
-    mtt_real dt = MTT_R(0.0);
+    mtt_real dt = MTT_ZERO;
     const mtt_mode *md;
     uint32_t mark;
     if (trk == NULL || (meas == NULL && n > 0u)) {
@@ -88,11 +92,12 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     if (trk->magic != MTT_MAGIC) {
         return MTT_ERR_NOT_INIT;
     }
-    if (!mtt_isfinite(time) || (trk->have_time && !(time > trk->time))) {
+    /* Fixed point: time counts Q16 frames modulo 2^32 (mtt/real.h). */
+    if (!MTT_TIME_OK(time) || (trk->have_time && !MTT_TIME_AFTER(time, trk->time))) {
         return MTT_ERR_TIME;
     }
     if (trk->have_time) {
-        dt = time - trk->time;
+        dt = MTT_TIME_SUB(time, trk->time);
     }
     md = &mtt_modes[trk->par.association];
     memset(&trk->stats.last, 0, sizeof trk->stats.last);

@@ -11,7 +11,10 @@
  * (beta 1, beta0 0); existence from the association stage (ALGORITHMS.md §13.2).
  * lm-ihpda contest (ALGORITHMS.md §10.4): a contested track takes the PDA update with
  * the LM-IPDA row of the contest test instead of ONE.
- * A track with no measurement keeps its prediction, with L = 1 - PD PG. */
+ * A track with no measurement keeps its prediction, with L = 1 - PD PG.
+ * Fixed point (docs/FIXED_POINT.md): the firmware modes only (ONE and PDA
+ * with CV; IMM, the baselines and the contest variant are compiled out),
+ * the covariances in block floating point through kalman.c. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -27,7 +30,8 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
     for (i = 0; i < MTT_STATE_N; ++i) {
         memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
     }
-    t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+    MTT_COV_COPY_E(t->P, tf->Pp);
+    t->existence = mtt_existence_update(tf->ex_pred, MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(trk->par.pd, trk->par.pg))));
     t->meas = -1;
 }
 
@@ -44,7 +48,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     nu[0][1] = ms->y - tf->xp[1];
     beta[0] = pp->beta;
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, beta,
-                   MTT_R(1.0) - pp->beta, t->x, t->P);
+                   MTT_SUB(MTT_P(1.0), pp->beta), t->x, t->P);
     t->existence = mtt_existence_update(tf->ex_pred, pp->L);
     t->meas = (int32_t)ms->src;
 }

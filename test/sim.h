@@ -55,7 +55,7 @@ static inline mtt_meas sim_meas(mtt_real x, mtt_real y, mtt_real a, int has)
     return m;
 }
 
-#ifndef MTT_REAL_FIXED /* NaN and Inf: float and double only (test_measure_range.c) */
+#ifndef MTT_REAL_FIXED /* NaN and Inf: float and double (fixed: out of range, below) */
 /* Seven detections: five bad ones (NaN x, Inf y, negative, NaN and Inf
  * amplitude) and good ones at input indices 4 and 5 (the second without
  * amplitude, its negative value ignored). */
@@ -69,6 +69,19 @@ static inline void sim_bad_mix(mtt_meas m[7])
     m[4] = sim_meas(MTT_R(10.0), MTT_R(20.0), MTT_R(2.0), 1);
     m[5] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(-1.0), 0);
     m[6] = sim_meas(MTT_R(5.0), MTT_R(5.0), MTT_R(1.0) / zero, 1);
+}
+#else
+/* The same seven in the fixed-point build: saturated or out-of-range
+ * values in place of NaN and Inf (measure.c, docs/FIXED_POINT.md §3). */
+static inline void sim_bad_mix(mtt_meas m[7])
+{
+    m[0] = sim_meas(MTT_FX_MAX, MTT_POS(1.0), MTT_AMP(1.0), 1);
+    m[1] = sim_meas(MTT_POS(1.0), -MTT_FX_POS_LIMIT - 1, MTT_AMP(1.0), 1);
+    m[2] = sim_meas(MTT_POS(5.0), MTT_POS(5.0), MTT_AMP(-1.0), 1);
+    m[3] = sim_meas(MTT_POS(5.0), MTT_POS(5.0), MTT_FX_MIN, 1);
+    m[4] = sim_meas(MTT_POS(10.0), MTT_POS(20.0), MTT_AMP(2.0), 1);
+    m[5] = sim_meas(MTT_POS(5.0), MTT_POS(5.0), MTT_AMP(-1.0), 0);
+    m[6] = sim_meas(MTT_POS(5.0), MTT_POS(5.0), MTT_FX_MAX, 1);
 }
 #endif
 

@@ -1,6 +1,9 @@
 /* test_api.c - bounds, bad data and API misuse through the public API only
  * (docs/DESIGN.md "Errors and bad input"); which measurements the cap
- * keeps is checked stage-side in test_measure.c. */
+ * keeps is checked stage-side in test_measure.c.  Every build: values are
+ * written in their quantity's constant (MTT_POS, MTT_TIME, MTT_VAR, ...,
+ * mtt/real.h), and the fixed-point build's "not finite" is a saturated or
+ * out-of-range value (docs/FIXED_POINT.md §3). */
 #include <math.h>
 #include <string.h>
 
@@ -18,7 +21,7 @@ static void init_default(void)
 {
     mtt_params p;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.clutter_density = MTT_R(1e-4);
+    p.clutter_density = MTT_DENS(1e-4);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
 }
 
@@ -31,7 +34,7 @@ void test_overflow_keeps_strongest(void)
     init_default();
     TEST_ASSERT_EQUAL_INT(0, (int)(n % 7u == 0u));
     sim_amplitude_permutation(big, n);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), big, n));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(n, st.last.meas_in);
     TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, st.last.meas_dropped);
@@ -46,9 +49,9 @@ void test_overflow_without_amplitude_keeps_first(void)
     uint32_t i;
     init_default();
     for (i = 0; i < n; ++i) {
-        big[i] = sim_meas((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
+        big[i] = sim_meas((mtt_real)i * MTT_POS(1.0), MTT_POS(0.0), MTT_AMP(0.0), 0);
     }
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), big, n));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), big, n));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_dropped);
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_bad);
@@ -61,15 +64,15 @@ void test_bad_data_skipped_and_counted(void)
     mtt_stats st;
     init_default();
     sim_bad_mix(m); /* five bad, good ones at 4 and 5 */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 7));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), m, 7));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(7u, st.last.meas_in);
     TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_bad);
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_dropped);
     /* Both good detections still pair with the next frame's one (within
      * vmax = 60 of it: 2.2 and 17.5 away): two births. */
-    m[0] = sim_meas(MTT_R(12.0), MTT_R(21.0), MTT_R(2.0), 1);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
+    m[0] = sim_meas(MTT_POS(12.0), MTT_POS(21.0), MTT_AMP(2.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(2u, st.last.births);
     TEST_ASSERT_EQUAL_UINT32(5u, st.total.meas_bad);
@@ -78,51 +81,62 @@ void test_bad_data_skipped_and_counted(void)
 /* (e) API misuse returns an error and changes nothing. */
 void test_misuse_changes_nothing(void)
 {
-    mtt_meas m = sim_meas(MTT_R(1.0), MTT_R(2.0), MTT_R(1.0), 1);
+    mtt_meas m = sim_meas(MTT_POS(1.0), MTT_POS(2.0), MTT_AMP(1.0), 1);
+#ifndef MTT_REAL_FIXED
     volatile mtt_real zero = MTT_R(0.0);
+#endif
     mtt_params p;
     mtt_track_view v;
     mtt_stats st;
     size_t cnt;
     const char *field = "x";
-    mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(1.0)};
+    mtt_real x[4] = {MTT_POS(0.0), MTT_POS(0.0), MTT_POS(1.0), MTT_POS(1.0)};
     mtt_real P[16];
     uint32_t id;
     int i;
 
     init_default();
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(5.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(5.0), &m, 1));
     memcpy(&copy, &trk, sizeof trk);
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(NULL, MTT_R(6.0), &m, 1));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(&trk, MTT_R(6.0), NULL, 1));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(5.0), &m, 1)); /* equal */
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(4.0), &m, 1)); /* backwards */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(NULL, MTT_TIME(6.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step(&trk, MTT_TIME(6.0), NULL, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_TIME(5.0), &m, 1)); /* equal */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_TIME(4.0), &m, 1)); /* backwards */
+#ifndef MTT_REAL_FIXED
     TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, zero / zero, &m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_R(1.0) / zero, &m, 1));
+#else
+    /* time modulo 2^32: 2^31 Q16 units (32768 frames) ahead reads as earlier */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_TIME, mtt_tracker_step(&trk, MTT_TIME(5.0) + INT32_MIN, &m, 1));
+#endif
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_count(&trk, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_track(&trk, 0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_tracker_track(&trk, 1000, &v));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_stats(NULL, &st));
     /* add_track: NULL, not finite, not symmetric, not positive definite */
     for (i = 0; i < 16; ++i) {
-        P[i] = (i % 5 == 0) ? MTT_R(1.0) : MTT_R(0.0); /* identity */
+        P[i] = (i % 5 == 0) ? MTT_VAR(1.0) : MTT_VAR(0.0); /* identity */
     }
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_add_track(&trk, NULL, P, &id));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_add_track(&trk, x, NULL, &id));
+#ifndef MTT_REAL_FIXED
     x[1] = zero / zero;
+#else
+    x[1] = MTT_FX_MAX; /* saturated: not finite */
+#endif
     TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
-    x[1] = MTT_R(0.0);
-    P[1] = MTT_R(0.5); /* P[0][1] != P[1][0] */
+    x[1] = MTT_POS(0.0);
+    P[1] = MTT_VAR(0.5); /* P[0][1] != P[1][0] */
     TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
-    P[1] = MTT_R(0.0);
-    P[15] = MTT_R(-1.0); /* not positive definite */
+    P[1] = MTT_VAR(0.0);
+    P[15] = MTT_VAR(-1.0); /* not positive definite */
     TEST_ASSERT_EQUAL_INT(MTT_ERR_VALUE, mtt_tracker_add_track(&trk, x, P, &id));
     TEST_ASSERT_EQUAL_MEMORY(&copy, &trk, sizeof trk);
 
     /* invalid parameters: error, the first bad field named, tracker untouched */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.pd = MTT_R(1.5);
-    p.pg = MTT_R(2.0);
+    p.pd = MTT_P(1.5);
+    p.pg = MTT_P(1.5);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &field));
     TEST_ASSERT_EQUAL_STRING("pd", field);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_init(&trk, &p));
@@ -132,7 +146,7 @@ void test_misuse_changes_nothing(void)
 
     /* an uninitialised tracker is an error, not undefined behaviour */
     memset(&trk, 0, sizeof trk);
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_step(&trk, MTT_R(1.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_step(&trk, MTT_TIME(1.0), &m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_count(&trk, &cnt));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_track(&trk, 0, &v));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NOT_INIT, mtt_tracker_stats(&trk, &st));
@@ -142,7 +156,7 @@ void test_misuse_changes_nothing(void)
 /* A full table: seeding past MTT_MAX_TRACKS fails; births are counted as dropped. */
 void test_full_table(void)
 {
-    mtt_real x[4] = {MTT_R(0.0), MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+    mtt_real x[4] = {MTT_POS(0.0), MTT_POS(0.0), MTT_POS(0.0), MTT_POS(0.0)};
     mtt_real P[16];
     mtt_stats st;
     mtt_meas m[2];
@@ -150,19 +164,19 @@ void test_full_table(void)
     int i;
     init_default();
     for (i = 0; i < 16; ++i) {
-        P[i] = (i % 5 == 0) ? MTT_R(4.0) : MTT_R(0.0);
+        P[i] = (i % 5 == 0) ? MTT_VAR(4.0) : MTT_VAR(0.0);
     }
     for (i = 0; i < MTT_MAX_TRACKS; ++i) {
-        x[0] = (mtt_real)i * MTT_R(1000.0); /* far apart: no merging */
+        x[0] = (mtt_real)i * MTT_POS(1000.0); /* far apart: no merging */
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
         TEST_ASSERT_EQUAL_UINT32((uint32_t)i, id); /* identities 0, 1, ... */
     }
     TEST_ASSERT_EQUAL_INT(MTT_ERR_FULL, mtt_tracker_add_track(&trk, x, P, &id));
     /* two frames with a far-away detection pair: a birth is wanted, none possible */
-    m[0] = sim_meas(MTT_R(-5000.0), MTT_R(-5000.0), MTT_R(1.0), 1);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), m, 1));
-    m[0] = sim_meas(MTT_R(-4998.0), MTT_R(-5000.0), MTT_R(1.0), 1);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(1.0), m, 1));
+    m[0] = sim_meas(MTT_POS(-5000.0), MTT_POS(-5000.0), MTT_AMP(1.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), m, 1));
+    m[0] = sim_meas(MTT_POS(-4998.0), MTT_POS(-5000.0), MTT_AMP(1.0), 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.births);
     TEST_ASSERT_EQUAL_UINT32(1u, st.last.births_dropped);
@@ -179,17 +193,18 @@ void test_deterministic(void)
     size_t na, nb, i;
     int k, j;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.clutter_density = MTT_R(1e-3);
+    p.clutter_density = MTT_DENS(1e-3);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&a, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&b, &p));
     for (k = 0; k < 30; ++k) {
         for (j = 0; j < 20; ++j) {
             unsigned h = (unsigned)(k * 131 + j * 71) % 997u;
-            m[j] = sim_meas((mtt_real)h * MTT_R(0.3) + (mtt_real)k, (mtt_real)(j * 11),
-                      (mtt_real)(h % 13u), (int)(h % 3u != 0u));
+            m[j] = sim_meas((mtt_real)h * MTT_POS(0.3) + (mtt_real)k * MTT_POS(1.0),
+                            (mtt_real)(j * 11) * MTT_POS(1.0), (mtt_real)(h % 13u) * MTT_AMP(1.0),
+                            (int)(h % 3u != 0u));
         }
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k, m, 20));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&b, (mtt_real)k, m, 20));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k * MTT_TIME(1.0), m, 20));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&b, (mtt_real)k * MTT_TIME(1.0), m, 20));
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&a, &na));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&b, &nb));
@@ -220,12 +235,13 @@ void test_cycle_counter(void)
 {
     mtt_params p;
     mtt_stats st;
-    mtt_meas m = sim_meas(MTT_R(1.0), MTT_R(1.0), MTT_R(1.0), 1);
+    mtt_meas m = sim_meas(MTT_POS(1.0), MTT_POS(1.0), MTT_AMP(1.0), 1);
     int s;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_DENS(1e-4); /* fixed point: a declared density */
     p.cycle_counter = tick;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), &m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     for (s = 0; s < MTT_STAGE_COUNT; ++s) {
         TEST_ASSERT_EQUAL_UINT32(10u, st.stage_cycles[s]); /* one tick per stage */
@@ -242,6 +258,7 @@ static void test_init_refuses_other_configuration(void)
     const unsigned char *b = (const unsigned char *)&t;
     size_t i;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_DENS(1e-4); /* fixed point: a declared density */
     memset(&t, 0xa5, sizeof t);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
                           mtt_tracker_init_checked(&t, &p, sizeof t - 4u, (uint32_t)(MTT_CONFIG_ID)));

@@ -19,6 +19,7 @@
 
 #include "mtt_internal.h"
 #include "tv_assert.h"
+#include "tv_cov.h"
 #include "tv_fixture.h"
 #include "unity.h"
 
@@ -31,41 +32,11 @@ static const double tv2_xpred[4] = {110, 45, 10, -5}; /* TV2 */
 static const double tv2_Ppred[16] = {8.666666667, 1, 4.5, 0, 1, 8.666666667, 0, 4.5,
                                      4.5, 0, 6, 0, 0, 4.5, 0, 6}; /* TV2 */
 
-/* A covariance from doubles: mantissas round(v 2^-e) in the fixed build. */
-static void cov_set(mtt_cov P, const double *v, int e)
-{
-    int i, j;
-    memset(P, 0, sizeof(mtt_cov));
-    for (i = 0; i < 4; ++i) {
-        for (j = 0; j < 4; ++j) {
-#ifdef MTT_REAL_FIXED
-            P[i][j] = (mtt_real)llround(ldexp(v[4 * i + j], -e));
-#else
-            P[i][j] = (mtt_real)v[4 * i + j];
-#endif
-        }
-    }
-#ifdef MTT_REAL_FIXED
-    MTT_COV_E(P) = e;
-#else
-    (void)e;
-#endif
-}
-
 #ifdef MTT_REAL_FIXED
 #define MTT_FX_CONST_OR_R(v) ((mtt_real)llround(ldexp((v), MTT_FX_VAR_FRAC)))
 #else
 #define MTT_FX_CONST_OR_R(v) ((mtt_real)(v))
 #endif
-
-static double cov_at(mtt_cov P, int i, int j)
-{
-#ifdef MTT_REAL_FIXED
-    return ldexp((double)P[i][j], MTT_COV_E(P));
-#else
-    return (double)P[i][j];
-#endif
-}
 
 #ifdef MTT_REAL_FIXED
 #define ASSERT_COV(want, got, tol) tv_assert_q((want), (got), (tol), "P^", __LINE__)
@@ -116,13 +87,13 @@ static void test_tv2_predict(void)
     mtt_cov P, Pp;
     int i, j;
     double tol;
-    cov_set(P, tv2_P0, -24);
+    tv_cov_set(P, tv2_P0, -24);
     tol = predict(1.0, xp, P, Pp);
     for (i = 0; i < 4; ++i) {
         TV_ASSERT_Q(tv2_xpred[i], xp[i], MTT_FX_POS_FRAC, 0.0); /* dt = 1: exact */
         for (j = 0; j < 4; ++j) {
-            TEST_ASSERT_TRUE(cov_at(Pp, i, j) == cov_at(Pp, j, i)); /* symmetric by construction */
-            ASSERT_COV(tv2_Ppred[4 * i + j], cov_at(Pp, i, j), tol);
+            TEST_ASSERT_TRUE(tv_cov_at(Pp, i, j) == tv_cov_at(Pp, j, i)); /* symmetric by construction */
+            ASSERT_COV(tv2_Ppred[4 * i + j], tv_cov_at(Pp, i, j), tol);
         }
     }
 #ifdef MTT_REAL_FIXED
@@ -166,11 +137,11 @@ static void test_long_gap(void)
     want[13] += sw * dt * dt / 2.0;
     want[10] += sw * dt;
     want[15] += sw * dt;
-    cov_set(P, tv2_P0, -24);
+    tv_cov_set(P, tv2_P0, -24);
     tol = predict(dt, xp, P, Pp);
     for (i = 0; i < 4; ++i) {
         for (j = 0; j < 4; ++j) {
-            ASSERT_COV(want[4 * i + j], cov_at(Pp, i, j), tol);
+            ASSERT_COV(want[4 * i + j], tv_cov_at(Pp, i, j), tol);
         }
     }
     TV_ASSERT_Q(100.0 + dt * 10.0, xp[0], MTT_FX_POS_FRAC, 0.0);
@@ -228,7 +199,7 @@ static void test_tv2_innovation(void)
     mtt_real R[3], S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det, K[MTT_MAX_STATE][2];
     double dP, dS, ddet, dSi, si[3], sv[3], kv, det_d, scale_s = 1.0, scale_si = 1.0, scale_k = 1.0;
     int i, k;
-    cov_set(P, tv2_P0, -24);
+    tv_cov_set(P, tv2_P0, -24);
     dP = predict(1.0, xp, P, Pp);
     for (k = 0; k < 3; ++k) {
         R[k] = MTT_FX_CONST_OR_R(r[k]);
@@ -289,11 +260,11 @@ static void test_headroom_correlated(void)
     want[13] += q13;
     want[10] += q33;
     want[15] += q33;
-    cov_set(P, v, -17);
+    tv_cov_set(P, v, -17);
     tol = predict(1.0, xp, P, Pp);
     for (i = 0; i < 4; ++i) {
         for (j = 0; j < 4; ++j) {
-            ASSERT_COV(want[4 * i + j], cov_at(Pp, i, j), tol);
+            ASSERT_COV(want[4 * i + j], tv_cov_at(Pp, i, j), tol);
         }
     }
 }
@@ -305,7 +276,7 @@ static void test_state_saturates(void)
 #ifdef MTT_REAL_FIXED
     mtt_state x = {MTT_POS(30000.0), MTT_POS(0.0), MTT_POS(5000.0), MTT_POS(0.0)}, xp;
     mtt_cov P, Pp;
-    cov_set(P, tv2_P0, -24);
+    tv_cov_set(P, tv2_P0, -24);
     TEST_ASSERT_TRUE(mtt_state_finite(x));
     mtt_kalman_predict(MTT_FX_CONST(1.0, MTT_FX_T_FRAC), MTT_FX_CONST(5.0, MTT_FX_VAR_FRAC), x, P, xp, Pp);
     TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, xp[0]);
@@ -313,7 +284,7 @@ static void test_state_saturates(void)
 #else
     mtt_state x = {MTT_REAL_MAX, MTT_R(0.0), MTT_REAL_MAX, MTT_R(0.0)}, xp;
     mtt_cov P, Pp;
-    cov_set(P, tv2_P0, 0);
+    tv_cov_set(P, tv2_P0, 0);
     mtt_kalman_predict(MTT_R(1.0), MTT_R(5.0), x, P, xp, Pp);
     TEST_ASSERT_FALSE(mtt_state_finite(xp)); /* Inf */
 #endif
@@ -338,7 +309,7 @@ static void test_predict_stage(void)
     }
     TV_N_TRACKS(&trk) = 2;
     for (i = 0; i < 2; ++i) {
-        cov_set(TV_P(&trk, i), tv2_P0, -24);
+        tv_cov_set(TV_P(&trk, i), tv2_P0, -24);
         TV_EXISTENCE(&trk, i) = MTT_P(0.9);
         for (k = 0; k < 4; ++k) {
 #ifdef MTT_REAL_FIXED

@@ -168,7 +168,7 @@ list_settings)
 version)
     run --version
     [ "$rc" -eq 0 ] || fail "--version exit code $rc"
-    grep -E -q '^mtt-track 0\.1\.0 \(mtt_real=(float|double)\)$' "$work/stdout" ||
+    grep -E -q '^mtt-track 0\.1\.0 \(mtt_real=(float|double|fixed)\)$' "$work/stdout" ||
         fail "bad version line: $(cat "$work/stdout")"
     ;;
 usage_missing_option)

@@ -90,4 +90,18 @@ int32_t mtt_fx_log2(uint32_t x, int f);
  * Error <= 2 ulp of Q25 (6.0e-8 absolute). */
 int32_t mtt_fx_ln(uint32_t x, int f);
 
+/* ---- the host boundary (src/fx_double.c) ----------------------------
+ * The user's numbers (doubles read from the settings JSON and the CSV
+ * files, docs/FIXED_POINT.md §3) into a Qf format and back, for the host
+ * tools and params_info.c: double arithmetic, so nothing in the tracker
+ * calls them and no firmware image links them.  0 <= f <= 62.
+ *
+ * mtt_fx_from_double: round(v 2^f), ties away from zero, in *out and
+ * MTT_OK when it lies strictly inside (MTT_FX_MIN, MTT_FX_MAX); otherwise
+ * MTT_ERR_RANGE with *out the saturation value of v's sign (MTT_FX_MAX for
+ * NaN), never a wrapped value: the value measure.c skips and counts
+ * (mtt_isfinite fails on it).  mtt_fx_to_double: m 2^-f, exact. */
+int mtt_fx_from_double(double v, int f, int32_t *out);
+double mtt_fx_to_double(int32_t m, int f);
+
 #endif /* MTT_FIXED_H */

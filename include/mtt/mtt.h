@@ -245,9 +245,9 @@ typedef struct mtt_meas {
 typedef struct mtt_track_view {
     uint32_t id;          /**< unique for the tracker's life, never reused */
     int confirmed;        /**< 1 once existence reached confirm_threshold (sticky) */
-    mtt_real x[4];        /**< x, y, vx, vy */
-    mtt_real P[4][4];     /**< state covariance */
-    mtt_real existence;   /**< P(target exists | Z^k) in [0, 1] */
+    mtt_real x[4];        /**< x, y, vx, vy (fixed point: Q MTT_FX_POS_FRAC; velocity per frame) */
+    mtt_real P[4][4];     /**< state covariance (fixed point: Q MTT_FX_VAR_FRAC, saturated) */
+    mtt_real existence;   /**< P(target exists | Z^k) in [0, 1] (fixed point: Q30) */
     uint32_t age;         /**< frames since birth */
     int32_t meas;         /**< input index of the measurement used this frame, or -1 */
     uint8_t n_models;     /**< 1 (motion = cv), or r of motion = imm */
@@ -380,7 +380,10 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_p
  *  Every loop is bounded by config.h; nothing allocates or recurses.
  *  @return MTT_OK; MTT_ERR_NULL (trk NULL, or meas NULL with n > 0);
  *          MTT_ERR_NOT_INIT; MTT_ERR_TIME if time is not finite or not greater
- *          than the previous frame's time.  On error nothing changes. */
+ *          than the previous frame's time.  On error nothing changes.
+ *  Fixed point (MTT_REAL_FIXED, docs/FIXED_POINT.md): time is a Q16 count
+ *  of frames modulo 2^32, greater meaning 0 < time - previous < 2^31 taken
+ *  modulo 2^32; every value in its format (mtt/real.h). */
 MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
                                            const mtt_meas *meas, size_t n);
 
@@ -412,7 +415,8 @@ MTT_MUST_CHECK mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i,
 MTT_MUST_CHECK mtt_status mtt_tracker_stats(const mtt_tracker *trk, mtt_stats *stats);
 
 /** The two-point initial covariance of ALGORITHMS.md §12.1 for measurement sigmas
- *  (sx, sy) and frame interval dt > 0: [[R, R/dt], [R/dt, 2R/dt^2]].
+ *  (sx, sy) and frame interval dt > 0: [[R, R/dt], [R/dt, 2R/dt^2]] (fixed
+ *  point: sigmas and P as in mtt_track_view, dt in Q16 frames).
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if an argument is not finite
  *          or not positive. */
 MTT_MUST_CHECK mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt,

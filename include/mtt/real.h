@@ -170,6 +170,8 @@ typedef int32_t mtt_pos;
 #define MTT_COV_E(P) ((P)[MTT_MAX_STATE][0])
 /* dt = 1 frame (the common case) multiplies by nothing. */
 #define MTT_MUL_T(dt, v) (((dt) == ((int32_t)1 << MTT_FX_T_FRAC)) ? (v) : mtt_fx_mul((dt), (v), MTT_FX_T_FRAC))
+/* v / dt (a position difference over Q16 frames: a velocity), saturated. */
+#define MTT_DIV_T(v, dt) mtt_fx_div((v), (dt), MTT_FX_T_FRAC)
 /* (a + b) / 2 without forming a + b (no headroom needed), rounded down. */
 #define MTT_MEAN2(a, b) (((a) >> 1) + ((b) >> 1) + ((a) & (b) & 1))
 #define MTT_COV_FIT(P, dt) mtt_fx_cov_fit((P), (dt))
@@ -206,6 +208,29 @@ typedef int32_t mtt_pos;
 #define mtt_isfinite(x) (((x) > MTT_FX_MIN) && ((x) < MTT_FX_MAX))
 /* A coordinate inside the declared range (docs/FIXED_POINT.md §3). */
 #define MTT_POS_OK(x) (((x) >= -MTT_FX_POS_LIMIT) && ((x) <= MTT_FX_POS_LIMIT))
+
+/* The tracker's boundary (tracker.c, track_table.c, initiate.c, merge.c;
+ * docs/FIXED_POINT.md §3).  Time is a Q16 count of frames (T0) modulo
+ * 2^32: a step is later than the last when the difference, taken modulo
+ * 2^32, lies in (0, 2^31), so a long run never overflows.  A variance
+ * crossing the API (mtt_track_view.P, mtt_tracker_add_track,
+ * mtt_init_two_point_cov) is Q MTT_FX_VAR_FRAC (unit^2; per T0 or T0^2
+ * for the velocity rows), saturated; inside, covariances are BFP.
+ * MTT_VAR_OF squares a standard deviation of the position format into a
+ * variance. */
+#define MTT_TIME_OK(t) 1
+#define MTT_TIME_AFTER(t, t0) (((uint32_t)(t) - (uint32_t)(t0) - 1u) < 0x7FFFFFFFu)
+#define MTT_TIME_SUB(t, t0) ((int32_t)((uint32_t)(t) - (uint32_t)(t0)))
+#define MTT_VAR_OF(s)                                                                              \
+    ((2 * MTT_FX_POS_FRAC >= MTT_FX_VAR_FRAC)                                                      \
+         ? mtt_fx_mul((s), (s), (2 * MTT_FX_POS_FRAC >= MTT_FX_VAR_FRAC) ? 2 * MTT_FX_POS_FRAC - MTT_FX_VAR_FRAC : 0) \
+         : mtt_fx_at(mtt_fx_mul((s), (s), 0), -2 * MTT_FX_POS_FRAC, -MTT_FX_VAR_FRAC))
+#define MTT_COV_VIEW(P, i, j) mtt_fx_at((P)[i][j], MTT_COV_E(P), -MTT_FX_VAR_FRAC)
+#define MTT_COV_SET_E(P, e) (MTT_COV_E(P) = (e))
+#define MTT_COV_EMAX(A, B) ((MTT_COV_E(A) > MTT_COV_E(B)) ? MTT_COV_E(A) : MTT_COV_E(B))
+/* Constants of time (Q16 frames) and of the variance format. */
+#define MTT_TIME(x) MTT_FX_CONST(x, MTT_FX_T_FRAC)
+#define MTT_VAR(x) MTT_FX_CONST(x, MTT_FX_VAR_FRAC)
 
 #else /* float, double: every macro is the expression it stands for */
 
@@ -245,6 +270,7 @@ typedef mtt_real mtt_pos;
 
 #define MTT_COV_ROWS(n) (n)
 #define MTT_MUL_T(dt, v) ((dt) * (v))
+#define MTT_DIV_T(v, dt) ((v) / (dt))
 #define MTT_MEAN2(a, b) (MTT_R(0.5) * ((a) + (b)))
 #define MTT_COV_FIT(P, dt) ((void)0)
 #define MTT_COV_ALIGN(A, B) ((void)0)
@@ -268,6 +294,16 @@ typedef mtt_real mtt_pos;
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
 #define mtt_isfinite(x) (((x) == (x)) && (mtt_fabs(x) <= MTT_REAL_MAX))
 #define MTT_POS_OK(x) mtt_isfinite(x)
+
+#define MTT_TIME_OK(t) mtt_isfinite(t)
+#define MTT_TIME_AFTER(t, t0) ((t) > (t0))
+#define MTT_TIME_SUB(t, t0) ((t) - (t0))
+#define MTT_VAR_OF(s) ((s) * (s))
+#define MTT_COV_VIEW(P, i, j) ((P)[i][j])
+#define MTT_COV_SET_E(P, e) ((void)0)
+#define MTT_COV_EMAX(A, B) 0
+#define MTT_TIME(x) MTT_R(x)
+#define MTT_VAR(x) MTT_R(x)
 
 #endif /* MTT_REAL_FIXED */
 
