@@ -111,8 +111,9 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
 {
     int32_t AP[MTT_MAX_STATE][MTT_MAX_STATE];
     int32_t A[MTT_MAX_STATE][2], Kn[MTT_MAX_STATE][2];
-    int32_t t1[MTT_MAX_STATE * MTT_MAX_STATE], t2[MTT_MAX_STATE * MTT_MAX_STATE];
-    int32_t t3[MTT_MAX_STATE * MTT_MAX_STATE];
+    /* the upper triangles of the three terms */
+    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t2[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
     int32_t Rn[3], M[3], sp[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
     const int32_t w = MTT_P(1.0) - beta0;
     const int eP = MTT_COV_E(Pp);
@@ -258,7 +259,9 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
  * -1 when a pivot is not positive.  The last pivot's reciprocal only when
  * `last` (the quadratic form needs it, the test not). */
 struct ldl_fx {
-    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], e[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
+    /* a's lower triangle is overwritten by E (each a_ij is read once, when
+     * E_ij is formed) */
+    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
     int32_t r[MTT_MAX_STATE];
     int rho[MTT_MAX_STATE];
     int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
@@ -269,6 +272,15 @@ struct ldl_fx {
 static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
 {
     return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
+}
+
+/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
+ * have left its pivot positive: then both are below a_ii, a_jj < 2^30
+ * and so is their geometric mean, and the fast multiply cannot overflow
+ * (its shift rho_k - 30 >= 19; below that, the exact one) */
+static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+{
+    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
 }
 
 static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
@@ -291,7 +303,7 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
         f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j < MTT_STATE_N; ++j) {
+        for (j = 0; j <= i; ++j) { /* the lower triangle: A is symmetric */
             const int32_t v = A[i][j];
             const int tt = f->t[i] + f->t[j] - sh;
             /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
@@ -305,10 +317,13 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
         for (j = 0; j < i; ++j) {
             int32_t v = f->a[i][j];
             for (k = 0; k < j; ++k) {
-                v = MTT_SUBS(v, over_pivot(f, f->e[i][k], f->e[j][k], k));
+                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
             }
-            f->e[i][j] = v;
+            f->a[i][j] = v;
             di = MTT_SUBS(di, over_pivot(f, v, v, j));
+            if (!(di > 0)) {
+                return -1; /* the pivot only decreases from here */
+            }
         }
         if (!(di > 0) || !mtt_isfinite(di)) {
             return -1;
@@ -364,7 +379,7 @@ int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
         int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
         int sh;
         for (k = 0; k < i; ++k) {
-            v = MTT_SUBS(v, over_pivot(&f, f.e[i][k], y[k], k));
+            v = MTT_SUBS(v, over_pivot(&f, f.a[i][k], y[k], k));
         }
         y[i] = v;
         q = MULQ(v, f.r[i]);

@@ -293,14 +293,18 @@ static void test_tv6_pda(void)
 
 /* ---- L D L' (ALGORITHMS.md §3, §16): the positive-definiteness test
  * with its margin (d_i > rel P_ii), and b' A^-1 b.  Fixed point: A is
- * normalised to 29 bits and every quotient E_ik E_jk / d_k is bounded by
- * max |A| (Cauchy-Schwarz on the pivots), so each of the 10 roundings of
- * the 4 x 4 factorisation (two per quotient, one reciprocal per pivot) is
- * an error of at most 2^-28 max |A| on an entry of A; b' A^-1 b moves by
- * |x' dA x| <= 10 2^-28 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
- * b is rounded to 24 bits and each y_i = b_i - sum L_ik y_k carries one
- * rounding per quotient (at most 3 at 2^-25 max |b|): a perturbation of b
- * of 4 units, 2 (sum |x_i|) 4 2^-25 max |b|; the four terms y_i^2 / d_i on
+ * normalised to 29 bits, then scaled D A D (D >= I) so that every
+ * diagonal has 28 or 29 bits, and every quotient E_ik E_jk / d_k is
+ * bounded by the diagonal (Cauchy-Schwarz on the pivots), so each of the
+ * 10 roundings of the 4 x 4 factorisation (the quotients, the reciprocal
+ * of each pivot) is at most 2 units of the scaled matrix (mtt_fx_mulq at
+ * shift 19: 0.5 + 3 2^-1 units; the exact ones half a unit), which is at
+ * most 2 2^-28 max |A| on an entry of A since D >= I; b' A^-1 b moves by
+ * |x' dA x| <= 10 2^-27 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
+ * D b is rounded to 24 bits and each y_i = (D b)_i - sum L_ik y_k carries
+ * one rounding per quotient (at most 3 at 2^-25 max |D b|): a perturbation
+ * of D b of 4 units, 2 (sum |x_i|) 4 2^-25 max |b| where D = I (the test
+ * matrices' variances lie within a factor 4 of each other); the four terms y_i^2 / d_i on
  * 29 bits, their sum's alignment and the Q24 result: 6 2^-29 d2 + 2^-25. ---- */
 static double quad_tol(const double A[16], const double b[4], double *d2)
 {
@@ -332,7 +336,7 @@ static double quad_tol(const double A[16], const double b[4], double *d2)
         q += b[i] * x;
     }
     *d2 = q;
-    return 10.0 * ldexp(amax, -28) * l1 * l1 + 8.0 * l1 * ldexp(bmax, -25) + 6.0 * ldexp(fabs(q), -29) +
+    return 10.0 * ldexp(amax, -27) * l1 * l1 + 8.0 * l1 * ldexp(bmax, -25) + 6.0 * ldexp(fabs(q), -29) +
            ldexp(1.0, -25);
 }
 
