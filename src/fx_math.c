@@ -14,30 +14,32 @@
 
 int mtt_fx_clz(uint32_t x)
 {
-    int n = 0;
-    if (x == 0u) {
-        return 32;
+    /* a binary search by shifts (no 32-bit constants to load on Thumb-1):
+     * n counts down from 32 while the leading bit is narrowed; 0 gives 32 */
+    uint32_t y;
+    int n = 32;
+    y = x >> 16;
+    if (y != 0u) {
+        n -= 16;
+        x = y;
     }
-    if (x <= 0x0000FFFFu) {
-        n += 16;
-        x <<= 16;
+    y = x >> 8;
+    if (y != 0u) {
+        n -= 8;
+        x = y;
     }
-    if (x <= 0x00FFFFFFu) {
-        n += 8;
-        x <<= 8;
+    y = x >> 4;
+    if (y != 0u) {
+        n -= 4;
+        x = y;
     }
-    if (x <= 0x0FFFFFFFu) {
-        n += 4;
-        x <<= 4;
+    y = x >> 2;
+    if (y != 0u) {
+        n -= 2;
+        x = y;
     }
-    if (x <= 0x3FFFFFFFu) {
-        n += 2;
-        x <<= 2;
-    }
-    if (x <= 0x7FFFFFFFu) {
-        n += 1;
-    }
-    return n;
+    /* x in 0..3 now: one leading bit more when x >= 2, n - x otherwise */
+    return ((x >> 1) != 0u) ? n - 2 : n - (int)x;
 }
 
 int32_t mtt_fx_add(int32_t a, int32_t b)
@@ -122,13 +124,15 @@ static uint32_t shr_round(uint32_t hi, uint32_t lo, int s)
 
 int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
 {
+    /* mtt_fx_mull's steps without its call (a hot kernel on Cortex-M0+) */
+    const uint32_t ua = mag(a), ub = mag(b);
     uint32_t hi, lo, r;
-    const int sign = mtt_fx_mull(a, b, &hi, &lo);
-    if (sign == 0) {
+    if (ua == 0u || ub == 0u) {
         return 0;
     }
+    umull(ua, ub, &hi, &lo);
     r = shr_round(hi, lo, s);
-    return (sign < 0) ? -(int32_t)r : (int32_t)r;
+    return ((a < 0) != (b < 0)) ? -(int32_t)r : (int32_t)r;
 }
 
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s)
