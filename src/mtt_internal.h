@@ -286,7 +286,9 @@ void mtt_associate_frame(mtt_tracker *trk);
 void mtt_update_frame(mtt_tracker *trk);
 
 /* ---- initiate.c: two-point initiation (ALGORITHMS.md §12.1, §12.2) ---- */
+#ifndef MTT_REAL_FIXED /* the intensity gate: not in the fixed-point build */
 mtt_real mtt_init_intensity_f(const mtt_params *p, mtt_real I);
+#endif
 /* Velocity/intensity gate of a pair (a at k-1, b at k); 1 = accept. */
 int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_mstore *b, mtt_real dt);
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt);
