@@ -207,9 +207,9 @@ int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny)
     /* S^-1 nu: mantissas below 2^28 times |nu| <= 2^30, over 2^30: each
      * product below 2^28, each sum below 2^29; then nu' (S^-1 nu) below
      * 2^30: no overflow at any step. */
-    w0 = mtt_fx_mulq(Si[0], nx, 30) + mtt_fx_mulq(Si[1], ny, 30);
-    w1 = mtt_fx_mulq(Si[1], nx, 30) + mtt_fx_mulq(Si[2], ny, 30);
-    q = mtt_fx_mulq(nx, w0, 30) + mtt_fx_mulq(ny, w1, 30);
+    w0 = mtt_fx_mulq30(Si[0], nx) + mtt_fx_mulq30(Si[1], ny);
+    w1 = mtt_fx_mulq30(Si[1], nx) + mtt_fx_mulq30(Si[2], ny);
+    q = mtt_fx_mulq30(nx, w0) + mtt_fx_mulq30(ny, w1);
     if (q < 0) {
         q = 0; /* S^-1 is positive definite: only rounding makes it negative */
     }

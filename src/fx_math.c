@@ -135,23 +135,34 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
     return ((a < 0) != (b < 0)) ? -(int32_t)r : (int32_t)r;
 }
 
+/* The body of mtt_fx_mulq, one text for its two entries (the Q30 one
+ * with the shift folded: the hot products of the PDA update and L D L').
+ * a = ah 2^16 + al with ah signed, al in [0, 2^16): every partial product
+ * fits int32, so no sign juggling.  The two middle products and the low
+ * one are summed at 2^-18 of the product (each floored: an error in
+ * [0, 3) there), the high one added exactly.  The high part is exact only
+ * modulo 2^32 (its top bits leave the word); the sum is formed in
+ * uint32_t, where wrapping is defined, and the exact result fits int32_t. */
+#define FX_MULQ_RETURN(a, b, s)                                                                     \
+    do {                                                                                           \
+        const int32_t ah = (a) >> 16, bh = (b) >> 16;                                              \
+        const int32_t al = (int32_t)((uint32_t)(a) & 0xFFFFu), bl = (int32_t)((uint32_t)(b) & 0xFFFFu); \
+        const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +                                  \
+                            (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);                        \
+        const int k = (s) - 18;                                                                    \
+        const uint32_t high = (uint32_t)(ah * bh) << (32 - (s));                                   \
+        const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);                     \
+        return (int32_t)(high + low);                                                              \
+    } while (0)
+
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s)
 {
-    /* a = ah 2^16 + al with ah signed, al in [0, 2^16): every partial
-     * product fits int32, so no sign juggling.  The two middle products
-     * and the low one are summed at 2^-18 of the product (each floored:
-     * an error in [0, 3) there), the high one added exactly. */
-    const int32_t ah = a >> 16, bh = b >> 16;
-    const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
-    const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +
-                        (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);
-    const int k = s - 18;
-    /* The high part is exact only modulo 2^32 (its top bits leave the
-     * word); the sum is formed in uint32_t, where wrapping is defined, and
-     * the exact result fits int32_t. */
-    const uint32_t high = (uint32_t)(ah * bh) << (32 - s);
-    const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);
-    return (int32_t)(high + low);
+    FX_MULQ_RETURN(a, b, s);
+}
+
+int32_t mtt_fx_mulq30(int32_t a, int32_t b)
+{
+    FX_MULQ_RETURN(a, b, 30);
 }
 
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
@@ -302,13 +313,13 @@ int32_t mtt_fx_exp_neg(uint32_t y, int *k)
     f = ((th << 8) | (tl >> 24)) & 0x3FFFFFFFu;
     i = (int)(f >> 26);
     r = f & 0x03FFFFFFu;                  /* r < 1/16 in Q30 */
-    u = mtt_fx_mulq((int32_t)r, ln2, 30); /* u = r ln 2 < 0.0434 */
+    u = mtt_fx_mulq30((int32_t)r, ln2); /* u = r ln 2 < 0.0434 */
     /* exp(-u) = 1 - u (1 - u (1/2 - u (1/6 - u/24))) */
-    h = 178956971 - mtt_fx_mulq(u, 44739243, 30); /* 1/6 - u/24 */
-    h = 536870912 - mtt_fx_mulq(u, h, 30);        /* 1/2 - u h */
-    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* 1 - u h */
-    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* exp(-u) */
-    return mtt_fx_mulq(exp2_tab[i], h, 30);
+    h = 178956971 - mtt_fx_mulq30(u, 44739243); /* 1/6 - u/24 */
+    h = 536870912 - mtt_fx_mulq30(u, h);        /* 1/2 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq30(u, h);   /* 1 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq30(u, h);   /* exp(-u) */
+    return mtt_fx_mulq30(exp2_tab[i], h);
 }
 
 int32_t mtt_fx_exp_neg_q30(uint32_t y)

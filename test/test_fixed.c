@@ -179,6 +179,9 @@ static void test_mulq_fast(void)
             e = (double)fabsl((long double)mtt_fx_mulq(a, b, s) - ex);
             worst[s] = (e > worst[s]) ? e : worst[s];
             TEST_ASSERT_TRUE(e <= bound);
+            if (s == 30) { /* the Q30 entry: the same result */
+                TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 30), mtt_fx_mulq30(a, b));
+            }
         }
     }
     report("mulq: worst error at s = 30: %.4f ulp (bound 0.5007)", worst[30]);

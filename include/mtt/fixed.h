@@ -50,6 +50,8 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s);
  * error <= 0.5 + 3 * 2^(18-s) ulp (0.5007 ulp at s = 30).  Right shifts
  * of negative values are arithmetic (GCC, Clang, every Arm compiler). */
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s);
+/* mtt_fx_mulq(a, b, 30) with the shift folded (the same result) */
+int32_t mtt_fx_mulq30(int32_t a, int32_t b);
 
 /* round(a * 2^s / b), saturated; 0 <= s <= 62.  b = 0 saturates with
  * the sign of a (0 / 0 = 0).  Restoring division of the normalised
