@@ -239,11 +239,25 @@ int32_t mtt_fx_recip(int32_t x, int s)
  * two bits per step. */
 static uint32_t sqrt_digits(uint32_t hi, uint32_t lo, int n)
 {
-    /* root < 2^32 and rem <= 2 root, so rem needs 33 bits: kept as
-     * rem (low 32) and remc (bit 32). */
     uint32_t root = 0u, rem = 0u, remc = 0u;
     int i;
-    for (i = 0; i < n; ++i) {
+    /* The first 28 steps: root < 2^i and rem <= 2 root < 2^(i+1) after i
+     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each. */
+    for (i = 0; i < n && i < 28; ++i) {
+        uint32_t trial;
+        rem = (rem << 2) | (hi >> 30);
+        hi = (hi << 2) | (lo >> 30);
+        lo <<= 2;
+        trial = (root << 2) | 1u;
+        root <<= 1;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    /* The last steps of a 32-bit root: root < 2^32 and rem <= 2 root, so
+     * rem needs 33 bits: kept as rem (low 32) and remc (bit 32). */
+    for (; i < n; ++i) {
         /* rem = rem * 4 + next two bits; trial = 4 root + 1 (both up to 35 bits:
          * the high parts are tracked in remc / trc). */
         const uint32_t bits = hi >> 30;
