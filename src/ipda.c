@@ -6,20 +6,45 @@
  * With lambda_j the LM density lambda~ this is LM-IPDA (ALGORITHMS.md §8.1).
  * Fixed point (docs/FIXED_POINT.md §2, §3): p_j and lambda_j are held
  * relative to the clutter density, so p_j / lambda_j is a quotient of two
- * Q16 ratios; Lambda and L are Q16 ratios, the betas Q30. */
+ * Q16 ratios; Lambda and L are Q16 ratios, the betas Q30.  When Lambda
+ * saturates (many gated measurements with large p_j / lambda_j: a burst of
+ * duplicates at a confident track), the betas are formed on the row scaled
+ * by 2^-k with m < 2^k, which fits: beta_j only needs the ratios, and with
+ * the saturated sum they would add up to more than 1 (and the PDA spread
+ * term turn P indefinite). */
 #include "mtt_internal.h"
+
+#ifdef MTT_REAL_FIXED
+#define ROW(x) ((x) >> k)
+#else
+#define ROW(x) (x)
+#endif
 
 void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob *beta0, mtt_ratio *L)
 {
     const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
-    mtt_ratio big = MTT_ZERO, l;
+    mtt_ratio big = MTT_ZERO, l, lb;
     uint16_t j;
+#ifdef MTT_REAL_FIXED
+    int k = 0;
+#endif
     for (j = 0; j < m; ++j) {
         big = MTT_ADDS(big, MTT_DIV_R(pp[j].p, pp[j].lam));
     }
     l = MTT_ADDS(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg)), MTT_MUL_RP(pdpg, big));
+    lb = l;
+#ifdef MTT_REAL_FIXED
+    if (!(big < MTT_FX_MAX)) {
+        k = 32 - mtt_fx_clz(m); /* m < 2^k: the scaled sum stays below 2^31 */
+        big = 0;
+        for (j = 0; j < m; ++j) {
+            big += ROW(MTT_DIV_R(pp[j].p, pp[j].lam));
+        }
+        lb = MTT_ADDS(ROW(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg))), MTT_MUL_RP(pdpg, big));
+    }
+#endif
     for (j = 0; j < m; ++j) {
-        pp[j].beta = MTT_DIV_P(MTT_MUL_RP(pdpg, MTT_DIV_R(pp[j].p, pp[j].lam)), l);
+        pp[j].beta = MTT_DIV_P(MTT_MUL_RP(pdpg, ROW(MTT_DIV_R(pp[j].p, pp[j].lam))), lb);
     }
     *beta0 = MTT_DIV_PR(MTT_SUB(MTT_P(1.0), pdpg), l);
     *L = l;

@@ -804,6 +804,82 @@ void test_merge_at_two_exponents(void)
     }
 }
 
+/* ---- a saturated IPDA row (ALGORITHMS.md §6) ---- */
+
+/* 32 exact duplicates at a confident track: each p_j / lambda is about
+ * 8000, so Lambda = sum p_j / lambda saturates its Q16 ratio (32768) in
+ * the fixed build.  The betas must still add up to 1 - beta0 (ipda.c
+ * scales the row), or the PDA spread term turns P indefinite and the
+ * track is deleted as numerically invalid.  32 equal innovations are one
+ * measurement with beta = 1 - beta0: x = x^ + (1 - beta0) K nu with
+ * 0 <= beta0 <= (1 - PD PG) / 32768 (L saturated; exactly (1 - PD PG) / L
+ * in float), so |x - (x^ + K nu)| <= ((1 - PD PG) / 32768 + 2^-24) |K nu|
+ * plus one unit of the position format (float: 4 epsilons of |x|). */
+void test_saturated_ipda_row(void)
+{
+    const mtt_assoc modes[2] = {MTT_ASSOC_LM_IPDA, MTT_ASSOC_IPDA};
+    int mi;
+    for (mi = 0; mi < 2; ++mi) {
+        mtt_params p;
+        mtt_stats st;
+        mtt_track_view v;
+        mtt_meas m[32];
+        mtt_real x[4], P[16];
+        uint32_t id = 0;
+        size_t n;
+        int i;
+        double sw, pd, pg, sg[2], z[2], c[3], det;
+        const double vp = 1.0, vv = 0.5;
+        scene_params(&p, modes[mi]);
+        set1(&p, "clutter_density", 1e-5);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        x[0] = to_q(100.0, F_POS);
+        x[1] = to_q(100.0, F_POS);
+        x[2] = to_q(1.0, F_POS);
+        x[3] = to_q(0.5, F_POS);
+        for (i = 0; i < 16; ++i) {
+            P[i] = to_q((i == 0 || i == 5) ? vp : ((i == 10 || i == 15) ? vv : 0.0), F_VAR);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, to_q(0.0, F_TIME), NULL, 0));
+        for (i = 0; i < 32; ++i) {
+            m[i] = sim_meas(to_q(101.25, F_POS), to_q(100.625, F_POS), to_q(0.0, F_POS), 0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, to_q(1.0, F_TIME), m, 32));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+        TEST_ASSERT_EQUAL_UINT32(0u, st.last.numeric_deletions);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+        TEST_ASSERT_EQUAL_UINT(1u, (unsigned)n);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+        /* the reference: one Kalman update per axis (P diagonal per axis) */
+        sw = get1(&p, "process_psd");
+        pd = get1(&p, "pd");
+        pg = get1(&p, "pg");
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_get(&p, "meas_sigma", sg, 2));
+        z[0] = 101.25 - 101.0;
+        z[1] = 100.625 - 100.5;
+        for (i = 0; i < 2; ++i) {
+            const double ppx = vp + vv + sw / 3.0, ppv = vv + sw / 2.0;
+            const double S = ppx + sg[i] * sg[i];
+            const double kx = ppx / S * z[i], kv = ppv / S * z[i];
+            const double tol = (1.0 - pd * pg) / 32768.0 + ldexp(1.0, -24);
+            /* float: the state's own roundings, 4 epsilons of |x| */
+            const double ux = (UNIT_POS > 0.0) ? UNIT_POS : 4.0 * UNIT_REL * 101.0;
+            TEST_ASSERT_DOUBLE_WITHIN(tol * fabs(kx) + ux, (i == 0 ? 101.0 : 100.5) + kx, from_q(v.x[i], F_POS));
+            TEST_ASSERT_DOUBLE_WITHIN(tol * fabs(kv) + ux, (i == 0 ? 1.0 : 0.5) + kv, from_q(v.x[i + 2], F_POS));
+        }
+        /* positive definite: the position block and each axis's block */
+        c[0] = from_q(v.P[0][0], F_VAR);
+        c[1] = from_q(v.P[0][1], F_VAR);
+        c[2] = from_q(v.P[1][1], F_VAR);
+        det = c[0] * c[2] - c[1] * c[1];
+        TEST_ASSERT_TRUE(c[0] > 0.0 && det > 0.0);
+        TEST_ASSERT_TRUE(from_q(v.P[0][0], F_VAR) * from_q(v.P[2][2], F_VAR) >
+                         from_q(v.P[0][2], F_VAR) * from_q(v.P[0][2], F_VAR));
+        TEST_ASSERT_TRUE(from_q(v.existence, F_PROB) >= 1.0 - ldexp(1.0, -15));
+    }
+}
+
 /* ---- two targets in clutter: the pipeline as a whole ---- */
 
 void test_two_targets_in_clutter(void)
@@ -872,6 +948,7 @@ int main(void)
     RUN_TEST(test_seed_view_round_trip);
     RUN_TEST(test_single_target_against_reference);
     RUN_TEST(test_merge_at_two_exponents);
+    RUN_TEST(test_saturated_ipda_row);
     RUN_TEST(test_two_targets_in_clutter);
     return UNITY_END();
 }
