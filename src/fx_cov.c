@@ -98,6 +98,21 @@ int32_t mtt_fx_unpack(int32_t v, int frac, int *e)
     return (l <= 30) ? v * ((int32_t)1 << (30 - l)) : mtt_fx_mul(v, 1, l - 30);
 }
 
+/* round(v / 3) of 0 <= v < 2^31 (no ties: the fraction is 0, 1/3 or 2/3),
+ * which is floor((v + 1) / 3): a quotient by shifts and adds (Hacker's
+ * Delight, divu3), then the remainder's correction; the result of
+ * mtt_fx_div(v, 3, 0) without its 31 restoring steps. */
+static int32_t third(int32_t v)
+{
+    const uint32_t n = (uint32_t)v + 1u;
+    uint32_t q = (n >> 2) + (n >> 4), r;
+    q += q >> 4;
+    q += q >> 8;
+    q += q >> 16;
+    r = n - q * 3u;
+    return (int32_t)(q + ((11u * r) >> 5));
+}
+
 void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
 {
     int32_t m[3];
@@ -120,7 +135,7 @@ void mtt_fx_cov_q(int32_t dt, int32_t sw, mtt_cov Q)
         e[2] = ss + ds + 30;
         m[1] = mtt_fx_mul(m[2], dm, 30);
         e[1] = e[2] + ds + 30;
-        m[0] = mtt_fx_div(mtt_fx_mul(m[1], dm, 30), 3, 0);
+        m[0] = third(mtt_fx_mul(m[1], dm, 30));
         e[0] = e[1] + ds + 30;
         e[1] -= 1;
     }
@@ -207,9 +222,9 @@ int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny)
     /* S^-1 nu: mantissas below 2^28 times |nu| <= 2^30, over 2^30: each
      * product below 2^28, each sum below 2^29; then nu' (S^-1 nu) below
      * 2^30: no overflow at any step. */
-    w0 = mtt_fx_mulq(Si[0], nx, 30) + mtt_fx_mulq(Si[1], ny, 30);
-    w1 = mtt_fx_mulq(Si[1], nx, 30) + mtt_fx_mulq(Si[2], ny, 30);
-    q = mtt_fx_mulq(nx, w0, 30) + mtt_fx_mulq(ny, w1, 30);
+    w0 = mtt_fx_mulq30(Si[0], nx) + mtt_fx_mulq30(Si[1], ny);
+    w1 = mtt_fx_mulq30(Si[1], nx) + mtt_fx_mulq30(Si[2], ny);
+    q = mtt_fx_mulq30(nx, w0) + mtt_fx_mulq30(ny, w1);
     if (q < 0) {
         q = 0; /* S^-1 is positive definite: only rounding makes it negative */
     }

@@ -14,30 +14,32 @@
 
 int mtt_fx_clz(uint32_t x)
 {
-    int n = 0;
-    if (x == 0u) {
-        return 32;
+    /* a binary search by shifts (no 32-bit constants to load on Thumb-1):
+     * n counts down from 32 while the leading bit is narrowed; 0 gives 32 */
+    uint32_t y;
+    int n = 32;
+    y = x >> 16;
+    if (y != 0u) {
+        n -= 16;
+        x = y;
     }
-    if (x <= 0x0000FFFFu) {
-        n += 16;
-        x <<= 16;
+    y = x >> 8;
+    if (y != 0u) {
+        n -= 8;
+        x = y;
     }
-    if (x <= 0x00FFFFFFu) {
-        n += 8;
-        x <<= 8;
+    y = x >> 4;
+    if (y != 0u) {
+        n -= 4;
+        x = y;
     }
-    if (x <= 0x0FFFFFFFu) {
-        n += 4;
-        x <<= 4;
+    y = x >> 2;
+    if (y != 0u) {
+        n -= 2;
+        x = y;
     }
-    if (x <= 0x3FFFFFFFu) {
-        n += 2;
-        x <<= 2;
-    }
-    if (x <= 0x7FFFFFFFu) {
-        n += 1;
-    }
-    return n;
+    /* x in 0..3 now: one leading bit more when x >= 2, n - x otherwise */
+    return ((x >> 1) != 0u) ? n - 2 : n - (int)x;
 }
 
 int32_t mtt_fx_add(int32_t a, int32_t b)
@@ -122,32 +124,45 @@ static uint32_t shr_round(uint32_t hi, uint32_t lo, int s)
 
 int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
 {
+    /* mtt_fx_mull's steps without its call (a hot kernel on Cortex-M0+) */
+    const uint32_t ua = mag(a), ub = mag(b);
     uint32_t hi, lo, r;
-    const int sign = mtt_fx_mull(a, b, &hi, &lo);
-    if (sign == 0) {
+    if (ua == 0u || ub == 0u) {
         return 0;
     }
+    umull(ua, ub, &hi, &lo);
     r = shr_round(hi, lo, s);
-    return (sign < 0) ? -(int32_t)r : (int32_t)r;
+    return ((a < 0) != (b < 0)) ? -(int32_t)r : (int32_t)r;
 }
+
+/* The body of mtt_fx_mulq, one text for its two entries (the Q30 one
+ * with the shift folded: the hot products of the PDA update and L D L').
+ * a = ah 2^16 + al with ah signed, al in [0, 2^16): every partial product
+ * fits int32, so no sign juggling.  The two middle products and the low
+ * one are summed at 2^-18 of the product (each floored: an error in
+ * [0, 3) there), the high one added exactly.  The high part is exact only
+ * modulo 2^32 (its top bits leave the word); the sum is formed in
+ * uint32_t, where wrapping is defined, and the exact result fits int32_t. */
+#define FX_MULQ_RETURN(a, b, s)                                                                     \
+    do {                                                                                           \
+        const int32_t ah = (a) >> 16, bh = (b) >> 16;                                              \
+        const int32_t al = (int32_t)((uint32_t)(a) & 0xFFFFu), bl = (int32_t)((uint32_t)(b) & 0xFFFFu); \
+        const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +                                  \
+                            (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);                        \
+        const int k = (s) - 18;                                                                    \
+        const uint32_t high = (uint32_t)(ah * bh) << (32 - (s));                                   \
+        const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);                     \
+        return (int32_t)(high + low);                                                              \
+    } while (0)
 
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s)
 {
-    /* a = ah 2^16 + al with ah signed, al in [0, 2^16): every partial
-     * product fits int32, so no sign juggling.  The two middle products
-     * and the low one are summed at 2^-18 of the product (each floored:
-     * an error in [0, 3) there), the high one added exactly. */
-    const int32_t ah = a >> 16, bh = b >> 16;
-    const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
-    const int32_t mid = ((al * bh) >> 2) + ((ah * bl) >> 2) +
-                        (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);
-    const int k = s - 18;
-    /* The high part is exact only modulo 2^32 (its top bits leave the
-     * word); the sum is formed in uint32_t, where wrapping is defined, and
-     * the exact result fits int32_t. */
-    const uint32_t high = (uint32_t)(ah * bh) << (32 - s);
-    const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);
-    return (int32_t)(high + low);
+    FX_MULQ_RETURN(a, b, s);
+}
+
+int32_t mtt_fx_mulq30(int32_t a, int32_t b)
+{
+    FX_MULQ_RETURN(a, b, 30);
 }
 
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
@@ -175,14 +190,26 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
         q = 1u;
         n -= d;
     }
-    for (i = 0; i < 31; ++i) {
-        n <<= 1;
-        q <<= 1;
-        if (n >= d) {
-            n -= d;
-            q |= 1u;
-        }
+    /* unrolled by 31 = 6 x 5 + 1: the loop's own count and branch were a
+     * third of each pass on Cortex-M0+ (docs/FIXED_POINT.md, "Status") */
+#define FX_DIV_BIT()          \
+    do {                      \
+        n <<= 1;              \
+        q <<= 1;              \
+        if (n >= d) {         \
+            n -= d;           \
+            q += 1u;          \
+        }                     \
+    } while (0)
+    FX_DIV_BIT();
+    for (i = 0; i < 6; ++i) {
+        FX_DIV_BIT();
+        FX_DIV_BIT();
+        FX_DIV_BIT();
+        FX_DIV_BIT();
+        FX_DIV_BIT();
     }
+#undef FX_DIV_BIT
     /* |a| 2^s / |b| = (n0 / d) 2^(s - na + nb) = q 2^-sh (+ the remainder). */
     sh = 31 + na - nb - s;
     if (sh < 0) {
@@ -208,24 +235,29 @@ int32_t mtt_fx_recip(int32_t x, int s)
     return mtt_fx_div(1, x, s);
 }
 
-uint32_t mtt_fx_sqrt(uint32_t x, int f)
+/* round(sqrt(hi:lo 2^(2 n - 64))): the top 2 n bits of the radicand hi:lo,
+ * two bits per step. */
+static uint32_t sqrt_digits(uint32_t hi, uint32_t lo, int n)
 {
-    /* Radicand x 2^f = hi:lo (64 bits); two bits per step from the top.
-     * root < 2^32 and rem <= 2 root, so rem needs 33 bits: kept as
-     * rem (low 32) and remc (bit 32). */
-    uint32_t hi, lo, root = 0u, rem = 0u, remc = 0u;
+    uint32_t root = 0u, rem = 0u, remc = 0u;
     int i;
-    if (f == 0) {
-        hi = 0u;
-        lo = x;
-    } else if (f < 32) {
-        hi = x >> (32 - f);
-        lo = x << f;
-    } else {
-        hi = x;
-        lo = 0u;
+    /* The first 28 steps: root < 2^i and rem <= 2 root < 2^(i+1) after i
+     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each. */
+    for (i = 0; i < n && i < 28; ++i) {
+        uint32_t trial;
+        rem = (rem << 2) | (hi >> 30);
+        hi = (hi << 2) | (lo >> 30);
+        lo <<= 2;
+        trial = (root << 2) | 1u;
+        root <<= 1;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
     }
-    for (i = 0; i < 32; ++i) {
+    /* The last steps of a 32-bit root: root < 2^32 and rem <= 2 root, so
+     * rem needs 33 bits: kept as rem (low 32) and remc (bit 32). */
+    for (; i < n; ++i) {
         /* rem = rem * 4 + next two bits; trial = 4 root + 1 (both up to 35 bits:
          * the high parts are tracked in remc / trc). */
         const uint32_t bits = hi >> 30;
@@ -249,6 +281,23 @@ uint32_t mtt_fx_sqrt(uint32_t x, int f)
         ++root;
     }
     return root;
+}
+
+uint32_t mtt_fx_sqrt(uint32_t x, int f)
+{
+    /* Radicand x 2^f = hi:lo (64 bits), 32 steps. */
+    if (f == 0) {
+        return sqrt_digits(0u, x, 32);
+    }
+    if (f < 32) {
+        return sqrt_digits(x >> (32 - f), x << f, 32);
+    }
+    return sqrt_digits(x, 0u, 32);
+}
+
+uint32_t mtt_fx_sqrt16(uint32_t x)
+{
+    return sqrt_digits(x, 0u, 16);
 }
 
 /* 2^-(i/16) in Q30, i = 0..15, rounded. */
@@ -278,13 +327,13 @@ int32_t mtt_fx_exp_neg(uint32_t y, int *k)
     f = ((th << 8) | (tl >> 24)) & 0x3FFFFFFFu;
     i = (int)(f >> 26);
     r = f & 0x03FFFFFFu;                  /* r < 1/16 in Q30 */
-    u = mtt_fx_mulq((int32_t)r, ln2, 30); /* u = r ln 2 < 0.0434 */
+    u = mtt_fx_mulq30((int32_t)r, ln2); /* u = r ln 2 < 0.0434 */
     /* exp(-u) = 1 - u (1 - u (1/2 - u (1/6 - u/24))) */
-    h = 178956971 - mtt_fx_mulq(u, 44739243, 30); /* 1/6 - u/24 */
-    h = 536870912 - mtt_fx_mulq(u, h, 30);        /* 1/2 - u h */
-    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* 1 - u h */
-    h = MTT_FX_Q30_ONE - mtt_fx_mulq(u, h, 30);   /* exp(-u) */
-    return mtt_fx_mulq(exp2_tab[i], h, 30);
+    h = 178956971 - mtt_fx_mulq30(u, 44739243); /* 1/6 - u/24 */
+    h = 536870912 - mtt_fx_mulq30(u, h);        /* 1/2 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq30(u, h);   /* 1 - u h */
+    h = MTT_FX_Q30_ONE - mtt_fx_mulq30(u, h);   /* exp(-u) */
+    return mtt_fx_mulq30(exp2_tab[i], h);
 }
 
 int32_t mtt_fx_exp_neg_q30(uint32_t y)

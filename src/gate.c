@@ -55,39 +55,52 @@ mtt_d2 mtt_gate_gamma(mtt_prob pg)
     return -mtt_fx_ln((uint32_t)(MTT_P(1.0) - pg), MTT_FX_PROB_FRAC);
 }
 
-mtt_ratio mtt_fx_gate_area(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens)
+/* lambda V_G and p / lambda's peak from one square root of det S per
+ * track (the two differ only in the factors after it).  *peak (when not
+ * NULL) is MTT_FX_MAX and the area 0 where an input is not positive. */
+mtt_ratio mtt_fx_gate_area_peak(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob pg,
+                                int32_t dens, mtt_ratio *peak)
 {
-    int e, e1 = 0;
-    int32_t m;
-    if (!(gamma > 0) || !(det > 0) || !(dens > 0)) {
+    int e = 0, e1 = 0, s;
+    int32_t r = 0, m;
+    mtt_ratio area = 0;
+    if (peak != NULL) {
+        *peak = MTT_FX_MAX;
+    }
+    if (!(det > 0) || !(dens > 0)) {
         return 0;
     }
-    m = sqrt_det(det, S, &e);
-    m = mul_e(m, gamma, &e1);
-    m = mul_e(m, FX_PI_Q29, &e1);
-    m = mul_e(m, dens, &e1);
-    /* lambda pi gamma sqrt(det S) */
-    return ratio_at(m, e + e1 - MTT_FX_D2_FRAC - 29 - MTT_FX_DENS_FRAC);
+    r = sqrt_det(det, S, &e);
+    if (gamma > 0) {
+        m = mul_e(r, gamma, &e1);
+        m = mul_e(m, FX_PI_Q29, &e1);
+        m = mul_e(m, dens, &e1);
+        /* lambda pi gamma sqrt(det S) */
+        area = ratio_at(m, e + e1 - MTT_FX_D2_FRAC - 29 - MTT_FX_DENS_FRAC);
+    }
+    if (peak != NULL && pg > 0) {
+        e1 = 0;
+        m = mul_e(r, FX_2PI_Q28, &e1);
+        m = mul_e(m, pg, &e1);
+        m = mul_e(m, dens, &e1);
+        e += e1 - 28 - MTT_FX_PROB_FRAC - MTT_FX_DENS_FRAC;
+        /* 1 / (2 pi sqrt(det S) PG lambda) = 2^(16 - e) / m in Q16 */
+        s = MTT_FX_RATIO_FRAC - e;
+        *peak = (s < 0) ? 0 : ((s > 62) ? MTT_FX_MAX : mtt_fx_div(1, m, s));
+    }
+    return area;
+}
+
+mtt_ratio mtt_fx_gate_area(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens)
+{
+    return mtt_fx_gate_area_peak(gamma, det, S, 0, dens, NULL);
 }
 
 mtt_ratio mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob pg, int32_t dens)
 {
-    int e, e1 = 0, s;
-    int32_t m;
-    if (!(det > 0) || !(pg > 0) || !(dens > 0)) {
-        return MTT_FX_MAX;
-    }
-    m = sqrt_det(det, S, &e);
-    m = mul_e(m, FX_2PI_Q28, &e1);
-    m = mul_e(m, pg, &e1);
-    m = mul_e(m, dens, &e1);
-    e += e1 - 28 - MTT_FX_PROB_FRAC - MTT_FX_DENS_FRAC;
-    /* 1 / (2 pi sqrt(det S) PG lambda) = 2^(16 - e) / m in Q16 */
-    s = MTT_FX_RATIO_FRAC - e;
-    if (s < 0) {
-        return 0;
-    }
-    return (s > 62) ? MTT_FX_MAX : mtt_fx_div(1, m, s);
+    mtt_ratio peak;
+    (void)mtt_fx_gate_area_peak(0, det, S, pg, dens, &peak);
+    return peak;
 }
 
 mtt_ratio mtt_fx_gate_lik(mtt_ratio peak, mtt_d2 d2)
@@ -99,10 +112,12 @@ mtt_ratio mtt_fx_gate_lik(mtt_ratio peak, mtt_d2 d2)
 mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
 {
     /* An upper bound of sqrt(gamma s_kk) in the position format.  The slice
-     * only narrows the search (d^2 decides the gate), so it is rounded up:
-     * t = gamma s_kk 2^-a (exact, or 30 bits), w^2 = t 2^f in units of the
-     * position format, one square root, one more unit. */
-    int a, f, h;
+     * only narrows the search (d^2 decides the gate), so it is rounded up
+     * and 16 bits of root are enough: t = gamma s_kk 2^-a (exact, or 30
+     * bits), w^2 = t 2^f in units of the position format; T = t 2^z in
+     * [2^30, 2^32) with f - z even, w <= (sqrt16(T) + 1) 2^((f - z)/2)
+     * (at most 1.5 2^-15 relative above), one more unit for t's rounding. */
+    int a, f, z, g;
     int32_t t;
     uint32_t r;
     if (!(gamma > 0) || !(S[k] > 0)) {
@@ -111,21 +126,18 @@ mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
     a = bits((uint32_t)gamma) + bits((uint32_t)S[k]) - 30;
     a = (a < 0) ? 0 : a;
     t = mtt_fx_mul(gamma, S[k], a);
-    f = MTT_SYM_E(S) - MTT_FX_D2_FRAC + 2 * MTT_FX_POS_FRAC + a;
-    if ((f & 1) != 0) {
-        t *= 2; /* t < 2^31 */
-        f -= 1;
+    if (!(t > 0)) {
+        return 1;
     }
-    if (f >= 0) {
-        h = (f > 32) ? (f - 32) / 2 : 0;
-        r = mtt_fx_sqrt((uint32_t)t, f - 2 * h) + 1u;
-        if (h > 0) {
-            r = (h >= 31 || r > ((uint32_t)MTT_FX_MAX >> h)) ? (uint32_t)MTT_FX_MAX : (r << h);
-        }
+    f = MTT_SYM_E(S) - MTT_FX_D2_FRAC + 2 * MTT_FX_POS_FRAC + a;
+    z = mtt_fx_clz((uint32_t)t); /* >= 1: t < 2^31 */
+    z -= (f - z) & 1;
+    r = mtt_fx_sqrt16((uint32_t)t << z) + 1u; /* > sqrt(T), <= 2^16 */
+    g = (f - z) / 2;
+    if (g >= 0) {
+        r = (g >= 16 || r > ((uint32_t)MTT_FX_MAX >> g)) ? (uint32_t)MTT_FX_MAX : (r << g);
     } else {
-        h = -f / 2;
-        r = mtt_fx_sqrt((uint32_t)t, 0);
-        r = (h >= 31) ? 1u : ((r + ((uint32_t)1 << h)) >> h);
+        r = (g <= -17) ? 1u : ((r + ((uint32_t)1 << -g) - 1u) >> -g); /* rounded up */
     }
     return (r >= (uint32_t)MTT_FX_MAX) ? MTT_FX_MAX : (int32_t)(r + 1u);
 }
@@ -249,7 +261,10 @@ void mtt_gate_frame(mtt_tracker *trk)
         if (MTT_WITH_BASELINES && tf->shrink) {
             gamma /= trk->par.adaptive_jpda_shrink; /* adaptive JPDA (ALGORITHMS.md §13.7) */
         }
-        tf->vg = MTT_GATE_AREA(gamma, tf->det_s, tf->S, trk->par.clutter_density);
+        /* N(0; 0, S) / PG once per track: the pairs differ only in
+         * exp(-d2/2), so the square root and divisions are not repeated per
+         * pair (the fixed build shares sqrt(det S) with the area). */
+        MTT_GATE_AREA_PEAK(tf->vg, peak, gamma, tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
         wx = MTT_GATE_WIDTH(gamma, tf->S, 0);
         wy = MTT_GATE_WIDTH(gamma, tf->S, 2);
 #if MTT_WITH_IMM
@@ -307,9 +322,6 @@ void mtt_gate_frame(mtt_tracker *trk)
             cm[b] = mj;
             cd[b] = md;
         }
-        /* N(0; 0, S) / PG once per track: the pairs differ only in exp(-d2/2),
-         * so the square root and divisions are not repeated per pair. */
-        peak = MTT_GATE_PEAK(tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
         for (a = 0; a < nc; ++a) {
             mtt_pair np;
             np.track = i;

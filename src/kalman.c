@@ -103,7 +103,7 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
  * S^-1 as mtt_kalman_innov leaves them. */
 
 #define or_abs(v, n) mtt_fx_or_abs((v), (n))
-#define MULQ(a, b) mtt_fx_mulq((a), (b), 30)
+#define MULQ(a, b) mtt_fx_mulq30((a), (b))
 
 static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                   const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],

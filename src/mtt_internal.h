@@ -78,6 +78,8 @@ int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny);
  * density dens (Q30), that times exp(-d^2 / 2), and an upper bound of
  * sqrt(gamma s_kk) in the position format. */
 int32_t mtt_fx_gate_area(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens);
+int32_t mtt_fx_gate_area_peak(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg,
+                              int32_t dens, int32_t *peak);
 int32_t mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg, int32_t dens);
 int32_t mtt_fx_gate_lik(int32_t peak, int32_t d2);
 int32_t mtt_fx_gate_width(int32_t gamma, const int32_t S[MTT_SYM_SLOTS], int k);

@@ -179,6 +179,9 @@ static void test_mulq_fast(void)
             e = (double)fabsl((long double)mtt_fx_mulq(a, b, s) - ex);
             worst[s] = (e > worst[s]) ? e : worst[s];
             TEST_ASSERT_TRUE(e <= bound);
+            if (s == 30) { /* the Q30 entry: the same result */
+                TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 30), mtt_fx_mulq30(a, b));
+            }
         }
     }
     report("mulq: worst error at s = 30: %.4f ulp (bound 0.5007)", worst[30]);
@@ -302,6 +305,30 @@ static void test_sqrt(void)
     TEST_ASSERT_EQUAL_UINT32(0u, mtt_fx_sqrt(0u, 32));
 }
 
+/* the 16-step root of a 32-bit x: r^2 - r < x <= r^2 + r, every x < 2^20
+ * and 10^6 random x up to 2^32 - 1 */
+static void check_sqrt16(uint32_t x)
+{
+    const uint64_t r = mtt_fx_sqrt16(x);
+    TEST_ASSERT_TRUE((uint64_t)x <= r * r + r);
+    if (r > 0u) {
+        TEST_ASSERT_TRUE((uint64_t)x > r * r - r);
+    }
+}
+
+static void test_sqrt16(void)
+{
+    long i;
+    for (i = 0; i < (1L << 20); ++i) {
+        check_sqrt16((uint32_t)i);
+    }
+    for (i = 0; i < 1000000L; ++i) {
+        check_sqrt16(rnd() >> (rnd() % 32u));
+    }
+    check_sqrt16(0xFFFFFFFFu);
+    TEST_ASSERT_EQUAL_UINT32(65536u, mtt_fx_sqrt16(0xFFFFFFFFu));
+}
+
 /* |m 2^-k - 2^30 exp(-y)| in units of the mantissa (2^-30 2^-k). */
 static double exp_err(uint32_t yq)
 {
@@ -399,6 +426,7 @@ int main(void)
     RUN_TEST(test_mulq_fast);
     RUN_TEST(test_div);
     RUN_TEST(test_sqrt);
+    RUN_TEST(test_sqrt16);
     RUN_TEST(test_exp);
     RUN_TEST(test_log);
     return UNITY_END();

@@ -202,6 +202,9 @@ typedef int32_t mtt_pos;
 #define MTT_GATE_WIDTH(gamma, S, k) mtt_fx_gate_width((gamma), (S), (k))
 #define MTT_GATE_PEAK(det, S, pg, dens) mtt_fx_gate_peak((det), (S), (pg), (dens))
 #define MTT_GATE_LIK(peak, d2) mtt_fx_gate_lik((peak), (d2))
+/* lambda V_G and the peak p / lambda of one track from one sqrt(det S) */
+#define MTT_GATE_AREA_PEAK(vg, peak, gamma, det, S, pg, dens) \
+    ((vg) = mtt_fx_gate_area_peak((gamma), (det), (S), (pg), (dens), &(peak)))
 
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
@@ -289,6 +292,8 @@ typedef mtt_real mtt_pos;
 #define MTT_GATE_WIDTH(gamma, S, k) mtt_sqrt((gamma) * (S)[k])
 #define MTT_GATE_PEAK(det, S, pg, dens) mtt_gate_likelihood(MTT_R(0.0), (det), (pg))
 #define MTT_GATE_LIK(peak, d2) ((peak) * mtt_exp(MTT_R(-0.5) * (d2)))
+#define MTT_GATE_AREA_PEAK(vg, peak, gamma, det, S, pg, dens) \
+    ((vg) = MTT_GATE_AREA((gamma), (det), (S), (dens)), (peak) = MTT_GATE_PEAK((det), (S), (pg), (dens)))
 
 /* Finite test without isfinite(), whose float overloads some freestanding
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
