@@ -29,12 +29,20 @@ int mtt_state_finite(const mtt_real *x)
     return 1;
 }
 
+void mtt_kalman_predict_q(mtt_real dt, mtt_cov Q, const mtt_state x, mtt_cov P, mtt_state xp,
+                          mtt_cov Pp)
+{
+    mtt_motion_predict(dt, Q, x, P, xp, Pp);
+    mtt_sym(Pp);
+    MTT_COV_NORM(Pp);
+}
+
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp)
 {
-    mtt_motion_predict(dt, sw, x, P, xp, Pp);
-    mtt_sym(Pp);
-    MTT_COV_NORM(Pp);
+    mtt_cov Q;
+    mtt_motion_q(dt, sw, Q);
+    mtt_kalman_predict_q(dt, Q, x, P, xp, Pp);
 }
 
 /* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a

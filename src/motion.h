@@ -41,8 +41,10 @@ int mtt_state_finite(const mtt_real *x);
 
 /* Q(dt) for the process noise power spectral density sw (§2). */
 void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q);
-/* xp = F(dt) x, Pp = F P F' + Q(dt) (§2, §3); Pp is symmetrised by the caller. */
-void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+/* xp = F(dt) x, Pp = F P F' + Q (§2, §3) with Q = mtt_motion_q(dt, sw),
+ * which the caller forms once for every track of one dt and sw (Q is read,
+ * not changed); Pp is symmetrised by the caller. */
+void mtt_motion_predict(mtt_real dt, mtt_cov Q, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp);
 /* The two-point covariance of a full measurement covariance R (sym: r11,
  * r12, r22) and interval dt > 0 (§12.1). */

@@ -7,6 +7,8 @@
  *   Q = Sw [[dt^3/3 I, dt^2/2 I], [dt^2/2 I, dt I]];
  * two points z_a (time k-1) and z_b (k), dt apart:
  *   x = [z_b, (z_b - z_a)/dt], P = [[R, R/dt], [R/dt, 2R/dt^2]]. */
+#include <string.h>
+
 #include "mtt_internal.h"
 
 void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q)
@@ -29,10 +31,16 @@ void mtt_motion_q(mtt_real dt, mtt_real sw, mtt_cov Q)
 #endif
 }
 
-void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+void mtt_motion_predict(mtt_real dt, mtt_cov Q0, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp)
 {
-    mtt_cov FP, Q;
+    mtt_cov FP;
+#ifdef MTT_REAL_FIXED
+    mtt_cov Q; /* the caller's Q serves every track: aligned below in a copy */
+    memcpy(Q, Q0, sizeof Q);
+#else
+    mtt_real(*const Q)[MTT_MAX_STATE] = Q0; /* read only (no alignment in float) */
+#endif
     int i, j;
     xp[0] = MTT_ADDS(x[0], MTT_MUL_T(dt, x[2]));
     xp[1] = MTT_ADDS(x[1], MTT_MUL_T(dt, x[3]));
@@ -48,7 +56,6 @@ void mtt_motion_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
         FP[3][j] = P[3][j];
     }
     MTT_COV_COPY_E(FP, P);
-    mtt_motion_q(dt, sw, Q);
     MTT_COV_ALIGN(FP, Q);
     /* (F P) F': columns 0,1 gain dt times columns 2,3. */
     for (i = 0; i < 4; ++i) {

@@ -32,6 +32,10 @@ void mtt_csr_unshift(uint16_t *first, uint16_t n);
 /* xp = F x, Pp = F P F' + Q through the model, symmetrised (ALGORITHMS.md §2, §3). */
 void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
                         mtt_cov Pp);
+/* The same with Q = mtt_motion_q(dt, sw) formed by the caller: the
+ * prediction stage forms it once per frame for every track. */
+void mtt_kalman_predict_q(mtt_real dt, mtt_cov Q, const mtt_state x, mtt_cov P, mtt_state xp,
+                          mtt_cov Pp);
 /* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
  * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
 int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],

@@ -10,7 +10,11 @@
 
 void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
 {
+    mtt_cov Q; /* Q(dt): one dt and one Sw for every track of the frame */
     uint16_t i;
+    if (dt > MTT_ZERO) {
+        mtt_motion_q(dt, trk->par.process_psd, Q);
+    }
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track *t = &trk->tracks[i];
         mtt_track_frame *tf = &trk->tf[i];
@@ -22,7 +26,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
             if (trk->par.motion != MTT_MOTION_IMM)
 #endif
             {
-                mtt_kalman_predict(dt, trk->par.process_psd, t->x, t->P, tf->xp, tf->Pp);
+                mtt_kalman_predict_q(dt, Q, t->x, t->P, tf->xp, tf->Pp);
             }
             tf->ex_pred = mtt_existence_predict(t->existence, trk->par.markov_p11, trk->par.markov_p21);
             t->age++;
