@@ -54,7 +54,7 @@ def rows(a):
         mode, sets = ROWS[name]
         out = os.path.join(a.out, name)
         cmd = ["nice", "-n", "10", sys.executable, "-m", "mtt_sim.mc", "--scenario", a.scenario,
-               "--runs", str(a.runs), "--jobs", str(a.jobs), "--out", out, "--no-plots",
+               "--runs", str(a.runs), "--seed0", str(a.seed0), "--jobs", str(a.jobs), "--out", out, "--no-plots",
                "--tracker", "mtt-track", "--assoc", mode]
         if a.mtt_track:
             cmd += ["--mtt-track", a.mtt_track]
@@ -66,7 +66,7 @@ def rows(a):
             s = json.load(f)
         r = s["results"][mode]
         res.append((name, mode, r["totals"], r["per_scan"], r.get("seeded"), r["runs_failed"]))
-    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds 0-{a.runs - 1}), "
+    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds {a.seed0}-{a.seed0 + a.runs - 1}), "
           f"overrides {a.set or 'none'}, confirmed tracks\n")
     print("| row | mode | ID switches / run | track swaps / run | coalescence or switch | GOSPA "
           "| loc / missed / false | conf. false / scan | track fraction | failed |")
@@ -126,10 +126,10 @@ def approach_one(args):
 def approach(a):
     exe = runner.find_mtt_track(a.mtt_track)
     targets = scenario.expand_targets(scenario.load(a.scenario, a.set))
-    items = [(a.scenario, tuple(a.set), g, s, exe) for g in GATES for s in range(a.runs)]
+    items = [(a.scenario, tuple(a.set), g, s, exe) for g in GATES for s in range(a.seed0, a.seed0 + a.runs)]
     with multiprocessing.get_context("fork").Pool(a.jobs) as pool:
         res = pool.map(approach_one, items)
-    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds 0-{a.runs - 1}), overrides {a.set or 'none'}\n")
+    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds {a.seed0}-{a.seed0 + a.runs - 1}), overrides {a.set or 'none'}\n")
     print("| init_gate | births / frame | false initiations / frame | confirmed false / scan | "
           + " | ".join(f"target {t['id']} ({t['vx']:.0f} px/fr)" for t in targets) + " |")
     print("|---|---|---|---|" + "---|" * len(targets))
@@ -157,6 +157,7 @@ def main():
     q.add_argument("--runs", type=int, default=100)
     for p in (r, q):
         p.add_argument("--jobs", type=int, default=2)
+        p.add_argument("--seed0", type=int, default=0, help="seed of the first run (default 0; tune on another range)")
         p.add_argument("--mtt-track", default=None)
         p.add_argument("--set", action="append", default=[], help="scenario override KEY=VALUE (repeatable)")
     a = ap.parse_args()
