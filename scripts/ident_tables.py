@@ -89,17 +89,21 @@ def rows(a):
 GATES = ("intensity", "vmax")
 
 
-def approach_one(args):
-    scn_path, sets, gate, seed, exe = args
-    scn = scenario.load(scn_path, list(sets) + [f'tracker.init_gate="{gate}"'])
+def track_run(scn, seed, exe):
+    """Generate run `seed` of `scn`, track it with mtt-track: (run, tracks, scans, match distance)."""
     run = generate.generate(scn, seed)
-    nscan = len(run["times"])
-    cut = float(scn["metrics"]["match_distance"])
-    with tempfile.TemporaryDirectory(prefix="mtt_ap_") as td:
+    with tempfile.TemporaryDirectory(prefix="mtt_id_") as td:
         paths = generate.write_run(run, td, "run")
         tp = os.path.join(td, "run.tracks.csv")
         runner.run_tracker(exe, paths["settings"], paths["det"], tp)
         tr = csvio.read_tracks(tp)
+    return run, tr, len(run["times"]), float(scn["metrics"]["match_distance"])
+
+
+def approach_one(args):
+    scn_path, sets, gate, seed, exe = args
+    scn = scenario.load(scn_path, list(sets) + [f'tracker.init_gate="{gate}"'])
+    run, tr, nscan, cut = track_run(scn, seed, exe)
     truth = run["truth"]
     targets = scenario.expand_targets(scn)
     first_conf = {t["id"]: None for t in targets}
@@ -154,15 +158,7 @@ def approach(a):
 
 def targets_one(args):
     scn_path, sets, seed, exe = args
-    scn = scenario.load(scn_path, list(sets))
-    run = generate.generate(scn, seed)
-    nscan = len(run["times"])
-    cut = float(scn["metrics"]["match_distance"])
-    with tempfile.TemporaryDirectory(prefix="mtt_tg_") as td:
-        paths = generate.write_run(run, td, "run")
-        tp = os.path.join(td, "run.tracks.csv")
-        runner.run_tracker(exe, paths["settings"], paths["det"], tp)
-        tr = csvio.read_tracks(tp)
+    run, tr, nscan, cut = track_run(scenario.load(scn_path, list(sets)), seed, exe)
     truth = run["truth"]
     tids = sorted({int(t) for t in truth["target"]})
     cov = {t: np.zeros(nscan, bool) for t in tids}
