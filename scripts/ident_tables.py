@@ -21,7 +21,15 @@ frame to its first confirmed true track.
 
     PYTHONPATH=python scripts/ident_tables.py approach --runs 100
 
-Both run the mtt-track binary (--mtt-track, else $MTT_TRACK, else
+targets: per target, over the runs of one row: the first covered scan
+(counted from 0: the first scan in which a confirmed track is matched to
+the target), the uncovered scans after it, the loss episodes (covered, then
+not), the mean matched distance.
+
+    PYTHONPATH=python scripts/ident_tables.py targets --scenario scenarios/dim.json \
+        --runs 30 --row contest
+
+All three run the mtt-track binary (--mtt-track, else $MTT_TRACK, else
 build/host-float/cli/mtt-track), never an installed mtt package, so the
 figures are those of the build in this tree.
 """
@@ -54,7 +62,7 @@ def rows(a):
         mode, sets = ROWS[name]
         out = os.path.join(a.out, name)
         cmd = ["nice", "-n", "10", sys.executable, "-m", "mtt_sim.mc", "--scenario", a.scenario,
-               "--runs", str(a.runs), "--jobs", str(a.jobs), "--out", out, "--no-plots",
+               "--runs", str(a.runs), "--seed0", str(a.seed0), "--jobs", str(a.jobs), "--out", out, "--no-plots",
                "--tracker", "mtt-track", "--assoc", mode]
         if a.mtt_track:
             cmd += ["--mtt-track", a.mtt_track]
@@ -66,7 +74,7 @@ def rows(a):
             s = json.load(f)
         r = s["results"][mode]
         res.append((name, mode, r["totals"], r["per_scan"], r.get("seeded"), r["runs_failed"]))
-    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds 0-{a.runs - 1}), "
+    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds {a.seed0}-{a.seed0 + a.runs - 1}), "
           f"overrides {a.set or 'none'}, confirmed tracks\n")
     print("| row | mode | ID switches / run | track swaps / run | coalescence or switch | GOSPA "
           "| loc / missed / false | conf. false / scan | track fraction | failed |")
@@ -81,17 +89,21 @@ def rows(a):
 GATES = ("intensity", "vmax")
 
 
-def approach_one(args):
-    scn_path, sets, gate, seed, exe = args
-    scn = scenario.load(scn_path, list(sets) + [f'tracker.init_gate="{gate}"'])
+def track_run(scn, seed, exe):
+    """Generate run `seed` of `scn`, track it with mtt-track: (run, tracks, scans, match distance)."""
     run = generate.generate(scn, seed)
-    nscan = len(run["times"])
-    cut = float(scn["metrics"]["match_distance"])
-    with tempfile.TemporaryDirectory(prefix="mtt_ap_") as td:
+    with tempfile.TemporaryDirectory(prefix="mtt_id_") as td:
         paths = generate.write_run(run, td, "run")
         tp = os.path.join(td, "run.tracks.csv")
         runner.run_tracker(exe, paths["settings"], paths["det"], tp)
         tr = csvio.read_tracks(tp)
+    return run, tr, len(run["times"]), float(scn["metrics"]["match_distance"])
+
+
+def approach_one(args):
+    scn_path, sets, gate, seed, exe = args
+    scn = scenario.load(scn_path, list(sets) + [f'tracker.init_gate="{gate}"'])
+    run, tr, nscan, cut = track_run(scn, seed, exe)
     truth = run["truth"]
     targets = scenario.expand_targets(scn)
     first_conf = {t["id"]: None for t in targets}
@@ -126,10 +138,10 @@ def approach_one(args):
 def approach(a):
     exe = runner.find_mtt_track(a.mtt_track)
     targets = scenario.expand_targets(scenario.load(a.scenario, a.set))
-    items = [(a.scenario, tuple(a.set), g, s, exe) for g in GATES for s in range(a.runs)]
+    items = [(a.scenario, tuple(a.set), g, s, exe) for g in GATES for s in range(a.seed0, a.seed0 + a.runs)]
     with multiprocessing.get_context("fork").Pool(a.jobs) as pool:
         res = pool.map(approach_one, items)
-    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds 0-{a.runs - 1}), overrides {a.set or 'none'}\n")
+    print(f"\n{os.path.basename(a.scenario)}, {a.runs} runs (seeds {a.seed0}-{a.seed0 + a.runs - 1}), overrides {a.set or 'none'}\n")
     print("| init_gate | births / frame | false initiations / frame | confirmed false / scan | "
           + " | ".join(f"target {t['id']} ({t['vx']:.0f} px/fr)" for t in targets) + " |")
     print("|---|---|---|---|" + "---|" * len(targets))
@@ -144,6 +156,50 @@ def approach(a):
               f"{np.mean([r[3] for r in rs]):.4f} | " + " | ".join(cells) + " |")
 
 
+def targets_one(args):
+    scn_path, sets, seed, exe = args
+    run, tr, nscan, cut = track_run(scenario.load(scn_path, list(sets)), seed, exe)
+    truth = run["truth"]
+    tids = sorted({int(t) for t in truth["target"]})
+    cov = {t: np.zeros(nscan, bool) for t in tids}
+    dist = {t: [] for t in tids}
+    for k in range(nscan):
+        tm = truth["scan"] == k
+        txy = np.stack([truth["x"][tm], truth["y"][tm]], axis=1)
+        km = (tr["scan"] == k) & tr["confirmed"]
+        xy = np.stack([tr["x"][km], tr["y"][km]], axis=1) if km.any() else np.zeros((0, 2))
+        for ti, j in metrics.match(txy, xy, cut):
+            t = int(truth["target"][tm][ti])
+            cov[t][k] = True
+            dist[t].append(float(np.hypot(*(txy[ti] - xy[j]))))
+    out = []
+    for t in tids:
+        c = cov[t]
+        first = int(np.argmax(c)) if c.any() else nscan
+        after = c[first:]
+        losses = int(np.sum(after[:-1] & ~after[1:])) if len(after) > 1 else 0
+        out.append((t, first, int((~after).sum()), losses, dist[t]))
+    return out
+
+
+def targets(a):
+    exe = runner.find_mtt_track(a.mtt_track)
+    mode, sets = ROWS[a.row]
+    sets = list(sets) + [f'tracker.association="{mode}"'] + a.set
+    items = [(a.scenario, tuple(sets), s, exe) for s in range(a.seed0, a.seed0 + a.runs)]
+    with multiprocessing.get_context("fork").Pool(a.jobs) as pool:
+        res = [r for rs in pool.map(targets_one, items) for r in rs]
+    print(f"\n{os.path.basename(a.scenario)}, row {a.row}, {a.runs} runs (seeds {a.seed0}-{a.seed0 + a.runs - 1}), "
+          f"overrides {a.set or 'none'}, confirmed tracks\n")
+    print("| target | first covered scan (mean) | uncovered scans after it | loss episodes | mean matched distance |")
+    print("|---|---|---|---|---|")
+    for t in sorted({r[0] for r in res}) + ["all"]:
+        rs = [r for r in res if t == "all" or r[0] == t]
+        d = [x for r in rs for x in r[4]]
+        print(f"| {t} | {np.mean([r[1] for r in rs]):.2f} | {np.mean([r[2] for r in rs]):.2f} | "
+              f"{np.mean([r[3] for r in rs]):.3f} | {np.mean(d) if d else float('nan'):.2f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -152,15 +208,20 @@ def main():
     r.add_argument("--runs", type=int, required=True)
     r.add_argument("--out", required=True)
     r.add_argument("--rows", nargs="+", required=True, choices=sorted(ROWS))
+    g = sub.add_parser("targets")
+    g.add_argument("--scenario", required=True)
+    g.add_argument("--runs", type=int, required=True)
+    g.add_argument("--row", required=True, choices=sorted(ROWS))
     q = sub.add_parser("approach")
     q.add_argument("--scenario", default=os.path.join("scenarios", "approach.json"))
     q.add_argument("--runs", type=int, default=100)
-    for p in (r, q):
+    for p in (r, g, q):
         p.add_argument("--jobs", type=int, default=2)
+        p.add_argument("--seed0", type=int, default=0, help="seed of the first run (default 0; tune on another range)")
         p.add_argument("--mtt-track", default=None)
         p.add_argument("--set", action="append", default=[], help="scenario override KEY=VALUE (repeatable)")
     a = ap.parse_args()
-    rows(a) if a.cmd == "rows" else approach(a)
+    {"rows": rows, "targets": targets, "approach": approach}[a.cmd](a)
 
 
 if __name__ == "__main__":
