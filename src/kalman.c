@@ -100,15 +100,26 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
 }
 
 #ifdef MTT_REAL_FIXED
-/* The fixed-point build (docs/FIXED_POINT.md §2, §3): the same formulas as
- * the float text below, in block floating point.  Every intermediate block
- * (the normalised innovations, the spread, M, A, A Pp, P_c, K M K') is a set
- * of int32 mantissas with one exponent, chosen from the block's inputs so
- * that each product is one mtt_fx_mulq at shift 30 and each sum a plain
- * add (the bounds are noted at each step); the three PSD terms of P are
- * aligned to one exponent by their measured sizes, then P is renormalised.
- * Pp is as mtt_kalman_predict leaves it (largest mantissa below 2^28), K and
- * S^-1 as mtt_kalman_innov leaves them. */
+/* The fixed-point build (docs/FIXED_POINT.md §2, §3): the float text's
+ * update below in block floating point, arranged for fewer products.
+ * Every intermediate block is a set of int32 mantissas with one exponent,
+ * chosen from the block's inputs so that each product is one mtt_fx_mulq
+ * at shift 30 and each sum a plain add (the bounds are noted at each
+ * step).  With P_c = (I - K H) Pp (equal to the Joseph form for the gain
+ * K = Pp H' S^-1 that mtt_kalman_innov made),
+ *   beta0 Pp + (1 - beta0) P_c = G Pp on rows 0, 1 (all columns), with
+ *     G = beta0 I + (1 - beta0) R S^-1: I - K H's position block is
+ *     R S^-1 exactly (S = Pp_pos + R), so nothing cancels there;
+ *   Pp - (1 - beta0) K_v Pp_pos,v on the velocity block (rows and columns
+ *     2, 3): at least the Schur complement of Pp's position block, the
+ *     conditional velocity variance, so it cancels only as much as velocity
+ *     is predicted by position;
+ * plus the spread term K sp K' (sp = sum beta nu nu' - nu_c nu_c', no R:
+ * the K R K' of the Joseph form is in P_c), which with one measurement is
+ * beta (1 - beta) q q', q = K nu.  Each of the two terms is positive
+ * semi-definite; they are aligned by their measured sizes, then P is
+ * renormalised.  Pp is as mtt_kalman_predict leaves it (largest mantissa
+ * below 2^28), K and S^-1 as mtt_kalman_innov leaves them. */
 
 #define or_abs(v, n) mtt_fx_or_abs((v), (n))
 #define MULQ(a, b) mtt_fx_mulq30((a), (b))
@@ -117,16 +128,14 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
                   const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                   mtt_real beta0, mtt_state x, mtt_cov P)
 {
-    int32_t AP[MTT_MAX_STATE][MTT_MAX_STATE];
-    int32_t A[MTT_MAX_STATE][2], Kn[MTT_MAX_STATE][2];
-    /* the upper triangles of the three terms */
-    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t2[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
-    int32_t t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
-    int32_t Rn[3], M[3], sp[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
+    int32_t Kn[MTT_MAX_STATE][2], G[2][2], V[MTT_MAX_STATE][2];
+    /* the upper triangles of the two terms */
+    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t Rn[3], M[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
     const int32_t w = MTT_P(1.0) - beta0;
     const int eP = MTT_COV_E(Pp);
     uint32_t u = 0u;
-    int s, eK, eR, eSp, eM, eAp, eA, iA, E1, E2, E3, E, i, k, c;
+    int s, eK, eR, eG, eV, eM, E1, E2, E3, E, i, k, c;
     uint16_t j;
     if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
         return; /* not a model of motion.h (folded away for a constant n) */
@@ -141,23 +150,6 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         cy += MULQ(beta[j], mtt_fx_shift(nu[j][1], s));
         bsum += beta[j];
     }
-    /* The spread as a sum of PSD terms (see the float text): each term
-     * below 2^28, their beta-weighted sum too; exponent 30 - 2 (F + s). */
-    for (j = 0; j < m; ++j) {
-        const int32_t dx = mtt_fx_shift(nu[j][0], s) - cx, dy = mtt_fx_shift(nu[j][1], s) - cy;
-        const int32_t bx = MULQ(beta[j], dx);
-        sp[0] += MULQ(bx, dx);
-        sp[1] += MULQ(bx, dy);
-        sp[2] += MULQ(MULQ(beta[j], dy), dy);
-    }
-    bsum = MTT_P(1.0) - bsum;
-    if (bsum > 0) {
-        const int32_t bx = MULQ(bsum, cx);
-        sp[0] += MULQ(bx, cx);
-        sp[1] += MULQ(bx, cy);
-        sp[2] += MULQ(MULQ(bsum, cy), cy);
-    }
-    eSp = 30 - 2 * (MTT_FX_POS_FRAC + s);
     /* K to 29 bits (its exponent eK): the state moves by K nu_c. */
     u = 0u;
     for (i = 0; i < n; ++i) {
@@ -172,79 +164,129 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
                                          30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
     }
-    /* R to 29 bits (exponent eR); M = (1 - beta0) R + spread at the
-     * exponent where the larger of the two has 29 bits: |M| < 2^30. */
+    /* The spread term K sp K' at E3, each entry below 2^29. */
+    c = 0;
+    if (m == 1u) {
+        /* beta (1 - beta) q q' with q = K nu (below 2^28, then on 29 bits:
+         * exponent eM) and 4 beta (1 - beta) <= 1 in Q30 */
+        int32_t q[MTT_MAX_STATE];
+        const int32_t b4 = MULQ(beta[0], MTT_P(1.0) - beta[0]) * 4;
+        const int32_t nx = mtt_fx_shift(nu[0][0], s), ny = mtt_fx_shift(nu[0][1], s);
+        for (i = 0; i < n; ++i) {
+            q[i] = MULQ(Kn[i][0], nx) + MULQ(Kn[i][1], ny);
+        }
+        k = mtt_fx_top_exp(0, or_abs(q, n), 29);
+        eM = eK - MTT_FX_POS_FRAC - s + 30 + k;
+        for (i = 0; i < n; ++i) {
+            q[i] = mtt_fx_shift(q[i], -k);
+        }
+        for (i = 0; i < n; ++i) {
+            const int32_t bq = MULQ(b4, q[i]);
+            for (k = i; k < n; ++k) {
+                t3[c++] = MULQ(bq, q[k]);
+            }
+        }
+        E3 = 2 * eM + 28;
+    } else {
+        /* The spread as a sum of PSD terms (see the float text): each term
+         * below 2^28, their beta-weighted sum too; exponent 30 - 2 (F + s);
+         * then on 29 bits (exponent eM). */
+        for (j = 0; j < m; ++j) {
+            const int32_t dx = mtt_fx_shift(nu[j][0], s) - cx, dy = mtt_fx_shift(nu[j][1], s) - cy;
+            const int32_t bx = MULQ(beta[j], dx);
+            M[0] += MULQ(bx, dx);
+            M[1] += MULQ(bx, dy);
+            M[2] += MULQ(MULQ(beta[j], dy), dy);
+        }
+        bsum = MTT_P(1.0) - bsum;
+        if (bsum > 0) {
+            const int32_t bx = MULQ(bsum, cx);
+            M[0] += MULQ(bx, cx);
+            M[1] += MULQ(bx, cy);
+            M[2] += MULQ(MULQ(bsum, cy), cy);
+        }
+        k = mtt_fx_top_exp(0, or_abs(M, 3), 29);
+        eM = 30 - 2 * (MTT_FX_POS_FRAC + s) + k;
+        for (c = 0; c < 3; ++c) {
+            M[c] = mtt_fx_shift(M[c], -k);
+        }
+        c = 0;
+        for (i = 0; i < n; ++i) {
+            const int32_t a = MULQ(Kn[i][0], M[0]) + MULQ(Kn[i][1], M[1]);
+            const int32_t b = MULQ(Kn[i][0], M[1]) + MULQ(Kn[i][1], M[2]);
+            for (k = i; k < n; ++k) {
+                t3[c++] = MULQ(a, Kn[k][0]) + MULQ(b, Kn[k][1]);
+            }
+        }
+        E3 = eK + eM + 30 + eK + 30;
+    }
+    /* G = beta0 I + (1 - beta0) R S^-1: R on 29 bits (exponent eR), R S^-1
+     * below 2^28 at eR + e(S^-1) + 30, then G on 29 bits at eG (at least
+     * beta0's: its identity part a right shift). */
     k = mtt_fx_top_exp(0, or_abs(R, 3), 29);
     eR = -MTT_FX_VAR_FRAC + k;
     for (c = 0; c < 3; ++c) {
         Rn[c] = mtt_fx_shift(R[c], -k);
-        M[c] = MULQ(w, Rn[c]);
     }
-    eM = mtt_fx_top_exp(eR, or_abs(M, 3), 29);
-    k = mtt_fx_top_exp(eSp, or_abs(sp, 3), 29);
-    eM = (k > eM) ? k : eM;
-    for (c = 0; c < 3; ++c) {
-        M[c] = mtt_fx_shift(M[c], eR - eM) + mtt_fx_shift(sp[c], eSp - eM);
+    G[0][0] = MULQ(w, MULQ(Rn[0], Si[0]) + MULQ(Rn[1], Si[1]));
+    G[0][1] = MULQ(w, MULQ(Rn[0], Si[1]) + MULQ(Rn[1], Si[2]));
+    G[1][0] = MULQ(w, MULQ(Rn[1], Si[0]) + MULQ(Rn[2], Si[1]));
+    G[1][1] = MULQ(w, MULQ(Rn[1], Si[1]) + MULQ(Rn[2], Si[2]));
+    eR += MTT_SYM_E(Si) + 30;
+    eG = mtt_fx_top_exp(eR, or_abs(G[0], 2) | or_abs(G[1], 2), 29);
+    k = mtt_fx_top_exp(-MTT_FX_PROB_FRAC, (uint32_t)beta0, 29);
+    eG = (k > eG) ? k : eG;
+    for (i = 0; i < 2; ++i) {
+        for (k = 0; k < 2; ++k) {
+            G[i][k] = mtt_fx_shift(G[i][k], eR - eG) + ((i == k) ? mtt_fx_shift(beta0, -MTT_FX_PROB_FRAC - eG) : 0);
+        }
     }
-    /* A = I - K H: its position block R S^-1 (each entry below 2^28 at
-     * eAp), its other rows -K; one exponent eA (largest on 29 bits, at
-     * least -30 so that A's identity part, 2^-eA, is a right shift). */
-    eAp = eR + MTT_SYM_E(Si) + 30;
-    A[0][0] = MULQ(Rn[0], Si[0]) + MULQ(Rn[1], Si[1]);
-    A[0][1] = MULQ(Rn[0], Si[1]) + MULQ(Rn[1], Si[2]);
-    A[1][0] = MULQ(Rn[1], Si[0]) + MULQ(Rn[2], Si[1]);
-    A[1][1] = MULQ(Rn[1], Si[1]) + MULQ(Rn[2], Si[2]);
-    eA = mtt_fx_top_exp(eAp, or_abs(A[0], 2) | or_abs(A[1], 2), 29);
+    /* (1 - beta0) K_v on 29 bits at eV >= -30, so that Pp's part, 2^-eV
+     * times the product's unit, is a right shift. */
     u = 0u;
     for (i = MTT_MEAS_DIM; i < n; ++i) {
-        u |= or_abs(Kn[i], 2);
+        V[i][0] = MULQ(w, Kn[i][0]);
+        V[i][1] = MULQ(w, Kn[i][1]);
+        u |= or_abs(V[i], 2);
     }
-    k = mtt_fx_top_exp(eK, u, 29);
-    eA = (k > eA) ? k : eA;
-    eA = (eA < -30) ? -30 : eA;
-    for (i = 0; i < n; ++i) {
-        for (k = 0; k < 2; ++k) {
-            A[i][k] = (i < MTT_MEAS_DIM) ? mtt_fx_shift(A[i][k], eAp - eA) : -mtt_fx_shift(Kn[i][k], eK - eA);
-        }
+    eV = mtt_fx_top_exp(eK, u, 29);
+    eV = (eV < -30) ? -30 : eV;
+    for (i = MTT_MEAS_DIM; i < n; ++i) {
+        V[i][0] = mtt_fx_shift(V[i][0], eK - eV);
+        V[i][1] = mtt_fx_shift(V[i][1], eK - eV);
     }
-    iA = -(eA + 30); /* the identity at A's exponent is 2^30 2^iA, iA <= 0 */
-    /* A Pp at E1 = eA + eP + 30: products below 2^27, the identity part
-     * below 2^28: |AP| < 2^29. */
-    E1 = eA + eP + 30;
-    for (i = 0; i < n; ++i) {
-        for (k = 0; k < n; ++k) {
-            AP[i][k] = MULQ(A[i][0], Pp[0][k]) + MULQ(A[i][1], Pp[1][k]) +
-                       ((i >= MTT_MEAS_DIM) ? mtt_fx_shift(Pp[i][k], iA) : 0);
-        }
-    }
-    /* Upper triangles of the three terms: beta0 Pp (below 2^28 at eP),
-     * (1 - beta0) A Pp A' (below 2^30 at E2), K M K' (below 2^30 at E3). */
-    E2 = E1 + eA + 30;
-    E3 = eK + eM + 30 + eK + 30;
+    /* beta0 Pp + (1 - beta0) P_c: rows 0, 1 at E1 = eG + eP + 30 (|G| <
+     * 2^30, |Pp| < 2^28: below 2^29), the velocity block at E2 = eV + eP
+     * + 30 (Pp's part below 2^28, the products below 2^27 each). */
+    E1 = eG + eP + 30;
+    E2 = eV + eP + 30;
     c = 0;
-    for (i = 0; i < n; ++i) {
-        const int32_t a = MULQ(Kn[i][0], M[0]) + MULQ(Kn[i][1], M[1]);
-        const int32_t b = MULQ(Kn[i][0], M[1]) + MULQ(Kn[i][1], M[2]);
+    u = 0u; /* rows 0, 1 */
+    for (i = 0; i < MTT_MEAS_DIM; ++i) {
         for (k = i; k < n; ++k) {
-            const int32_t pc = MULQ(AP[i][0], A[k][0]) + MULQ(AP[i][1], A[k][1]) +
-                               ((k >= MTT_MEAS_DIM) ? mtt_fx_shift(AP[i][k], iA) : 0);
-            t1[c] = MULQ(beta0, Pp[i][k]);
-            t2[c] = MULQ(w, pc);
-            t3[c] = MULQ(a, Kn[k][0]) + MULQ(b, Kn[k][1]);
+            t1[c] = MULQ(G[i][0], Pp[0][k]) + MULQ(G[i][1], Pp[1][k]);
+            u |= (uint32_t)((t1[c] < 0) ? -t1[c] : t1[c]);
             ++c;
         }
     }
     /* One exponent for the sum: each term below 2^29 there. */
-    E = mtt_fx_top_exp(eP, or_abs(t1, c), 29);
-    k = mtt_fx_top_exp(E2, or_abs(t2, c), 29);
+    E = mtt_fx_top_exp(E1, u, 29);
+    u = 0u; /* the velocity block */
+    for (; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            t1[c] = mtt_fx_shift(Pp[i][k], -(eV + 30)) - MULQ(V[i][0], Pp[0][k]) - MULQ(V[i][1], Pp[1][k]);
+            u |= (uint32_t)((t1[c] < 0) ? -t1[c] : t1[c]);
+            ++c;
+        }
+    }
+    k = mtt_fx_top_exp(E2, u, 29);
     E = (k > E) ? k : E;
     k = mtt_fx_top_exp(E3, or_abs(t3, c), 29);
     E = (k > E) ? k : E;
     c = 0;
     for (i = 0; i < n; ++i) {
         for (k = i; k < n; ++k) {
-            const int32_t v = mtt_fx_shift(t1[c], eP - E) + mtt_fx_shift(t2[c], E2 - E) +
-                              mtt_fx_shift(t3[c], E3 - E);
+            const int32_t v = mtt_fx_shift(t1[c], ((i < MTT_MEAS_DIM) ? E1 : E2) - E) + mtt_fx_shift(t3[c], E3 - E);
             P[i][k] = v;
             P[k][i] = v;
             ++c;
