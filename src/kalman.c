@@ -333,10 +333,12 @@ static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
     return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
 }
 
-static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
+/* The D A D scaling of ldl_fx: f->a's lower triangle, f->t, f->ea;
+ * -1 when A is 0 or a diagonal entry is not positive. */
+static int scale_fx(mtt_cov A, struct ldl_fx *f)
 {
     uint32_t u = 0u;
-    int i, j, k, sh;
+    int i, j, sh;
     for (i = 0; i < MTT_STATE_N; ++i) {
         u |= or_abs(A[i], MTT_STATE_N);
     }
@@ -361,6 +363,15 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
             f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
                                                                           : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
         }
+    }
+    return 0;
+}
+
+static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
+{
+    int i, j, k;
+    if (scale_fx(A, f) != 0) {
+        return -1;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
         int32_t di = f->a[i][i];
@@ -387,18 +398,71 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
     return 0;
 }
 
+/* The positive-definiteness test without a division: fraction-free
+ * elimination on the D A D-scaled matrix.  Step k turns the block B = mu_k
+ * S_k (S_k the Schur complement left after k pivots, mu_k > 0 a known
+ * factor) into p B_ij - B_ik B_jk = mu_k p S_k+1,ij (p = B_kk = mu_k d_k),
+ * renormalised to 30 bits; so d_k > rel a_kk is p > rel a_kk mu_k, two
+ * products.  Each product has both factors below 2^30 (entries of a
+ * positive semi-definite block are bounded by its diagonal: a larger one
+ * fails at once), each difference stays below 2^31; every rounding is
+ * 2^-30 of the block. */
 int mtt_cov_ok(mtt_cov P, mtt_real rel)
 {
     struct ldl_fx f;
-    int i;
+    int32_t ad[MTT_MAX_STATE], mm = (int32_t)1 << 29; /* mu = mm 2^em */
+    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30);  /* rel on 30 bits */
+    const int32_t reln = mtt_fx_shift(rel, z);
+    int i, j, k, sh, em = -29;
     /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
-    if (ldl_fx(P, &f, 0) != 0) {
+    if (!(rel > 0) || scale_fx(P, &f) != 0) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
-        if (!(f.d[i] > MULQ(rel, f.a[i][i]))) {
+        for (j = 0; j <= i; ++j) {
+            const int32_t v = f.a[i][j];
+            if (!(((v < 0) ? -v : v) < ((int32_t)1 << 29))) {
+                return 0; /* |a_ij| >= 2^29 > sqrt(a_ii a_jj) */
+            }
+            f.a[i][j] = v * 2; /* below 2^30 */
+        }
+        ad[i] = f.a[i][i];
+    }
+    for (k = 0; k < MTT_STATE_N; ++k) {
+        const int32_t p = f.a[k][k];
+        uint32_t u = 0u;
+        if (!(p > 0)) {
             return 0;
         }
+        if (k > 0) {
+            /* rel a_kk mu = X 2^(30 + em - z) */
+            const int32_t X = MULQ(MULQ(reln, ad[k]), mm);
+            if (!(p > mtt_fx_at(X, 30 + em - z, 0))) {
+                return 0;
+            }
+        }
+        if (k + 1 == MTT_STATE_N) {
+            break;
+        }
+        for (i = k + 1; i < MTT_STATE_N; ++i) {
+            for (j = k + 1; j <= i; ++j) {
+                const int32_t v = MULQ(p, f.a[i][j]) - MULQ(f.a[i][k], f.a[j][k]);
+                f.a[i][j] = v;
+                u |= (uint32_t)((v < 0) ? -v : v);
+            }
+        }
+        sh = mtt_fx_top_exp(0, u, 30);
+        for (i = k + 1; i < MTT_STATE_N; ++i) {
+            for (j = k + 1; j <= i; ++j) {
+                f.a[i][j] = mtt_fx_shift(f.a[i][j], -sh);
+            }
+        }
+        /* mu_k+1 = mu_k p 2^(-30 - sh), its mantissa back on 30 bits */
+        mm = MULQ(mm, p);
+        em -= sh;
+        sh = mtt_fx_top_exp(0, (uint32_t)mm, 30);
+        mm = mtt_fx_shift(mm, -sh);
+        em += sh;
     }
     return 1;
 }
