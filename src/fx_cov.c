@@ -195,6 +195,23 @@ int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
     return -MTT_SYM_E(S) - 28 - sh;
 }
 
+void mtt_fx_si_set(int32_t Si[MTT_SYM_SLOTS], const int32_t S[MTT_SYM_SLOTS], int32_t det)
+{
+    /* S_k 2^sh / det (sh = -e(S) - 28 - e(S^-1), mtt_fx_si_exp) as S_k r
+     * 2^(sh - rho) with r = round(2^rho / det) on 30 bits: one quotient
+     * instead of three; r's relative error 2^-30 adds |S^-1| 2^-30 (a
+     * quarter unit at most) to each product's half unit. */
+    const int sh = -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si);
+    const int rho = 29 + bitlen(det);
+    const int32_t r = mtt_fx_recip(det, rho);
+    const int32_t v[3] = {S[2], -S[1], S[0]};
+    const int s = rho - sh;
+    int k;
+    for (k = 0; k < 3; ++k) {
+        Si[k] = (s >= 19 && s <= 31) ? mtt_fx_mulq(v[k], r, s) : mtt_fx_mul(v[k], r, (s < 0) ? 0 : s);
+    }
+}
+
 /* Normalises v (|v| <= MTT_FX_MAX) so that the larger of |a|, |b| has 30
  * bits: returns the shift s (values = mantissas 2^-s of the input's). */
 static int norm_pair(int32_t *a, int32_t *b)

@@ -70,9 +70,7 @@ static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SL
     }
     *det = d;
     MTT_SI_EXP(Si, S, d);
-    Si[0] = MTT_DIV_SI(S[2], d, S, Si);
-    Si[1] = MTT_DIV_SI(-S[1], d, S, Si);
-    Si[2] = MTT_DIV_SI(S[0], d, S, Si);
+    MTT_SI_SET(Si, S, d); /* adj(S) / det S */
     for (i = 0; i < n; ++i) {
         K[i][0] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[0]), MTT_MUL_K(Pp[i][1], Si[1]));
         K[i][1] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[1]), MTT_MUL_K(Pp[i][1], Si[2]));

@@ -74,6 +74,8 @@ int32_t mtt_fx_at(int32_t m, int from, int to);
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3]);
 /* Exponent of S^-1 = adj(S) / det with every entry below 2^28 (det > 0). */
 int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det);
+/* S^-1 = adj(S) / det at e(S^-1) (MTT_SYM_E(Si) set): one reciprocal of det. */
+void mtt_fx_si_set(int32_t Si[MTT_SYM_SLOTS], const int32_t S[MTT_SYM_SLOTS], int32_t det);
 /* nu' S^-1 nu in Q24 (saturated) for nu in the position format and S^-1 as
  * mantissas with their exponent (MTT_SYM_E). */
 int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny);

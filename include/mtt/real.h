@@ -189,7 +189,8 @@ typedef int32_t mtt_pos;
 #define MTT_S_EXP(Pp, R, S) (MTT_SYM_E(S) = mtt_fx_s_exp((Pp), (R)))
 #define MTT_SI_EXP(Si, S, d) (MTT_SYM_E(Si) = mtt_fx_si_exp((S), (d)))
 #define MTT_MUL_SS(a, b) mtt_fx_mulq((a), (b), 28)
-#define MTT_DIV_SI(a, d, S, Si) mtt_fx_div((a), (d), -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si))
+/* S^-1 = adj(S) / det S at e(S^-1): one reciprocal of det S, three products */
+#define MTT_SI_SET(Si, S, d) mtt_fx_si_set((Si), (S), (d))
 #define MTT_MUL_K(a, b) mtt_fx_mulq((a), (b), 28)
 /* d^2 = nu' S^-1 nu (Q24, saturated: a distance beyond 128 is outside
  * every gate): fx_cov.c. */
@@ -284,7 +285,7 @@ typedef mtt_real mtt_pos;
 #define MTT_S_EXP(Pp, R, S) ((void)0)
 #define MTT_SI_EXP(Si, S, d) ((void)0)
 #define MTT_MUL_SS(a, b) ((a) * (b))
-#define MTT_DIV_SI(a, d, S, Si) ((a) / (d))
+#define MTT_SI_SET(Si, S, d) ((Si)[0] = (S)[2] / (d), (Si)[1] = (-(S)[1]) / (d), (Si)[2] = (S)[0] / (d))
 #define MTT_MUL_K(a, b) ((a) * (b))
 #define MTT_MAHAL2(Si, nx, ny) ((Si)[0] * (nx) * (nx) + MTT_R(2.0) * (Si)[1] * (nx) * (ny) + (Si)[2] * (ny) * (ny))
 #define MTT_ABS(x) mtt_fabs(x)
