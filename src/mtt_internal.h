@@ -87,6 +87,9 @@ int32_t mtt_fx_gate_area(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLO
 int32_t mtt_fx_gate_area_peak(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg,
                               int32_t dens, int32_t *peak);
 int32_t mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg, int32_t dens);
+/* The gate's per-frame factors and the per-track area and peak from them. */
+void mtt_fx_gate_consts(int32_t gamma, int32_t pg, int32_t dens, int32_t gc[4]);
+int32_t mtt_fx_gate_area_peak_c(const int32_t gc[4], int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t *peak);
 int32_t mtt_fx_gate_lik(int32_t peak, int32_t d2);
 int32_t mtt_fx_gate_width(int32_t gamma, const int32_t S[MTT_SYM_SLOTS], int k);
 /* v 2^s: exact for s >= 0 (the caller keeps it below 2^31), rounded to
