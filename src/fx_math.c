@@ -165,6 +165,11 @@ int32_t mtt_fx_mulq30(int32_t a, int32_t b)
     FX_MULQ_RETURN(a, b, 30);
 }
 
+int32_t mtt_fx_mulq28(int32_t a, int32_t b)
+{
+    FX_MULQ_RETURN(a, b, 28);
+}
+
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
 {
     const uint32_t ua = mag(a), ub = mag(b);

@@ -182,6 +182,9 @@ static void test_mulq_fast(void)
             if (s == 30) { /* the Q30 entry: the same result */
                 TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 30), mtt_fx_mulq30(a, b));
             }
+            if (s == 28) { /* the shift-28 entry (S, K): the same result */
+                TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 28), mtt_fx_mulq28(a, b));
+            }
         }
     }
     report("mulq: worst error at s = 30: %.4f ulp (bound 0.5007)", worst[30]);

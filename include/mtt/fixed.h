@@ -52,6 +52,8 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s);
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s);
 /* mtt_fx_mulq(a, b, 30) with the shift folded (the same result) */
 int32_t mtt_fx_mulq30(int32_t a, int32_t b);
+/* mtt_fx_mulq(a, b, 28) with the shift folded (S, det S and K) */
+int32_t mtt_fx_mulq28(int32_t a, int32_t b);
 
 /* round(a * 2^s / b), saturated; 0 <= s <= 62.  b = 0 saturates with
  * the sign of a (0 / 0 = 0).  Restoring division of the normalised

@@ -146,7 +146,7 @@ typedef int32_t mtt_pos;
 #define MTT_SUB(a, b) ((a) - (b))
 #define MTT_ADDS(a, b) mtt_fx_add((a), (b))
 #define MTT_SUBS(a, b) mtt_fx_sub((a), (b))
-#define MTT_MUL_PP(a, b) mtt_fx_mulq((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_PP(a, b) mtt_fx_mulq30((a), (b)) /* MTT_FX_PROB_FRAC 30 */
 #define MTT_MUL_RP(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_MUL_RR(a, b) mtt_fx_mul((a), (b), MTT_FX_RATIO_FRAC)
 #define MTT_DIV_P(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
@@ -188,10 +188,10 @@ typedef int32_t mtt_pos;
 #define MTT_AT(m, from, to) mtt_fx_at((m), (from), (to))
 #define MTT_S_EXP(Pp, R, S) (MTT_SYM_E(S) = mtt_fx_s_exp((Pp), (R)))
 #define MTT_SI_EXP(Si, S, d) (MTT_SYM_E(Si) = mtt_fx_si_exp((S), (d)))
-#define MTT_MUL_SS(a, b) mtt_fx_mulq((a), (b), 28)
+#define MTT_MUL_SS(a, b) mtt_fx_mulq28((a), (b))
 /* S^-1 = adj(S) / det S at e(S^-1): one reciprocal of det S, three products */
 #define MTT_SI_SET(Si, S, d) mtt_fx_si_set((Si), (S), (d))
-#define MTT_MUL_K(a, b) mtt_fx_mulq((a), (b), 28)
+#define MTT_MUL_K(a, b) mtt_fx_mulq28((a), (b))
 /* d^2 = nu' S^-1 nu (Q24, saturated: a distance beyond 128 is outside
  * every gate): fx_cov.c. */
 #define MTT_MAHAL2(Si, nx, ny) mtt_fx_mahal2((Si), (nx), (ny))
