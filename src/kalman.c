@@ -143,7 +143,7 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         u |= or_abs(nu[j], 2);
     }
     s = -mtt_fx_top_exp(0, u, 28);
-    for (j = 0; j < m; ++j) {
+    for (j = 0; j < m && m != 1u; ++j) { /* one measurement: x from q below */
         cx += MULQ(beta[j], mtt_fx_shift(nu[j][0], s));
         cy += MULQ(beta[j], mtt_fx_shift(nu[j][1], s));
         bsum += beta[j];
@@ -159,8 +159,10 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         Kn[i][0] = mtt_fx_shift(K[i][0], -k);
         Kn[i][1] = mtt_fx_shift(K[i][1], -k);
         /* |K| < 2^29, |nu_c| < 2^28 + m: the sum below 2^28 */
-        x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
-                                         30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
+        if (m != 1u) {
+            x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
+                                             30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
+        }
     }
     /* The spread term K sp K' at E3, each entry below 2^29. */
     c = 0;
@@ -170,11 +172,14 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         int32_t q[MTT_MAX_STATE];
         const int32_t b4 = MULQ(beta[0], MTT_P(1.0) - beta[0]) * 4;
         const int32_t nx = mtt_fx_shift(nu[0][0], s), ny = mtt_fx_shift(nu[0][1], s);
+        eM = eK - MTT_FX_POS_FRAC - s + 30;
         for (i = 0; i < n; ++i) {
             q[i] = MULQ(Kn[i][0], nx) + MULQ(Kn[i][1], ny);
+            /* the state moves by beta q */
+            x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(beta[0], q[i]), eM, -MTT_FX_POS_FRAC));
         }
         k = mtt_fx_top_exp(0, or_abs(q, n), 29);
-        eM = eK - MTT_FX_POS_FRAC - s + 30 + k;
+        eM += k;
         for (i = 0; i < n; ++i) {
             q[i] = mtt_fx_shift(q[i], -k);
         }

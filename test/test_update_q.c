@@ -38,7 +38,9 @@
  * Tolerance of x: the state moves by K nu_c rounded to the position format
  * (half a unit), nu_c carries one rounding per measurement plus the shift
  * of nu (units of 2^-27 max|nu|), times |K_i0| + |K_i1|, and K nu_c's two
- * products and K's shift: 3 x 2^-27 (|K_i0 nu_cx| + |K_i1 nu_cy|). */
+ * products and K's shift: 3 x 2^-27 (|K_i0 nu_cx| + |K_i1 nu_cy|).  (One
+ * measurement: beta (K nu), the same count: nu's shift, K nu's two
+ * products and K's shift, the product by beta.) */
 #include <stdio.h>
 #include <string.h>
 
