@@ -412,27 +412,37 @@ static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
  * 2^-30 of the block. */
 int mtt_cov_ok(mtt_cov P, mtt_real rel)
 {
-    struct ldl_fx f;
-    int32_t ad[MTT_MAX_STATE], mm = (int32_t)1 << 29; /* mu = mm 2^em */
-    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30);  /* rel on 30 bits */
+    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], ad[MTT_MAX_STATE], mm = (int32_t)1 << 29; /* mu = mm 2^em */
+    int t[MTT_MAX_STATE];
+    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30); /* rel on 30 bits */
     const int32_t reln = mtt_fx_shift(rel, z);
     int i, j, k, sh, em = -29;
-    /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
-    if (!(rel > 0) || scale_fx(P, &f) != 0) {
+    /* d_i / P_ii is scale-free (see the float text); rel in Q30.  D P D:
+     * every diagonal entry on 29 or 30 bits, each a_ij then below 2^30
+     * unless P is not positive semi-definite (|P_ij| <= sqrt(P_ii P_jj)). */
+    if (!(rel > 0)) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j <= i; ++j) {
-            const int32_t v = f.a[i][j];
-            if (!(((v < 0) ? -v : v) < ((int32_t)1 << 29))) {
-                return 0; /* |a_ij| >= 2^29 > sqrt(a_ii a_jj) */
-            }
-            f.a[i][j] = v * 2; /* below 2^30 */
+        if (!(P[i][i] > 0)) {
+            return 0;
         }
-        ad[i] = f.a[i][i];
+        t[i] = (30 - (32 - mtt_fx_clz((uint32_t)P[i][i]))) >> 1; /* arithmetic: -1 for 31 bits */
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j <= i; ++j) {
+            const int32_t v = P[i][j];
+            const int tt = t[i] + t[j];
+            const int32_t m = (tt > 0 && ((v < 0) ? -v : v) >> (30 - tt) != 0) ? MTT_FX_MAX : mtt_fx_shift(v, tt);
+            if (!(((m < 0) ? -m : m) < ((int32_t)1 << 30))) {
+                return 0;
+            }
+            a[i][j] = m;
+        }
+        ad[i] = a[i][i];
     }
     for (k = 0; k < MTT_STATE_N; ++k) {
-        const int32_t p = f.a[k][k];
+        const int32_t p = a[k][k];
         uint32_t u = 0u;
         if (!(p > 0)) {
             return 0;
@@ -449,15 +459,15 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
         }
         for (i = k + 1; i < MTT_STATE_N; ++i) {
             for (j = k + 1; j <= i; ++j) {
-                const int32_t v = MULQ(p, f.a[i][j]) - MULQ(f.a[i][k], f.a[j][k]);
-                f.a[i][j] = v;
+                const int32_t v = MULQ(p, a[i][j]) - MULQ(a[i][k], a[j][k]);
+                a[i][j] = v;
                 u |= (uint32_t)((v < 0) ? -v : v);
             }
         }
         sh = mtt_fx_top_exp(0, u, 30);
         for (i = k + 1; i < MTT_STATE_N; ++i) {
             for (j = k + 1; j <= i; ++j) {
-                f.a[i][j] = mtt_fx_shift(f.a[i][j], -sh);
+                a[i][j] = mtt_fx_shift(a[i][j], -sh);
             }
         }
         /* mu_k+1 = mu_k p 2^(-30 - sh), its mantissa back on 30 bits */
