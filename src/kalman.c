@@ -441,6 +441,29 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
         }
         ad[i] = a[i][i];
     }
+#if MTT_STATE_N == 4
+    {
+        /* A sufficient test first (the common case): with the states in
+         * the order (x, vx) (y, vy), D P D = blockdiag(Cx, Cy) plus the
+         * cross-axis part E, so lambda_min >= min(det Cx / tr Cx, det Cy /
+         * tr Cy) - sum |E_ij| (a 2 x 2 block's smaller eigenvalue is at
+         * least det / tr; Weyl's inequality with ||E|| <= sum |E_ij|), and
+         * every pivot d_k >= lambda_min.  So when both blocks' det exceeds
+         * (sum |E_ij| + 4 rel + 8 units) times their trace, every d_k >
+         * rel a_kk (a_kk < 1 in Q30): the 8 units cover the roundings of
+         * the scaling and of these products.  Otherwise the elimination
+         * below decides. */
+        const uint32_t e = (uint32_t)MTT_ABS(a[1][0]) + (uint32_t)MTT_ABS(a[3][0]) + (uint32_t)MTT_ABS(a[2][1]) +
+                           (uint32_t)MTT_ABS(a[3][2]);
+        if (e < ((uint32_t)1 << 29) && rel < ((int32_t)1 << 26)) {
+            const int32_t b = (int32_t)e + 4 * rel + 8;
+            if (MULQ(a[0][0], a[2][2]) - MULQ(a[2][0], a[2][0]) > MULQ(b, a[0][0] + a[2][2]) &&
+                MULQ(a[1][1], a[3][3]) - MULQ(a[3][1], a[3][1]) > MULQ(b, a[1][1] + a[3][3])) {
+                return 1;
+            }
+        }
+    }
+#endif
     for (k = 0; k < MTT_STATE_N; ++k) {
         const int32_t p = a[k][k];
         uint32_t u = 0u;
