@@ -140,11 +140,12 @@ static void test_tv3_area_width(void)
         const double tol = ref * (0.5 / sqrt_det_mant() + 4.0 * ldexp(1.0, -29)) + ldexp(1.0, -17);
         TV_ASSERT_RATIO(ref, vg, tol);
         TV_ASSERT_REAL(tv3_vg * lam, ref); /* TV3 V_G, as lambda V_G */
-        /* an upper bound from a 16-bit root (gate.c): (root + 1) / sqrt(T)
-         * <= 1 + 1.5 2^-15 with T >= 2^30, then rounded up and one unit
-         * more: at most that and 3 units of the position format above */
+        /* an upper bound from an 8-bit root of T's top 16 bits (gate.c):
+         * (root + 1) 2^8 / sqrt(T) <= 1 + 1.5 2^-7 with T >= 2^30, then
+         * rounded up and one unit more: at most that and 3 units of the
+         * position format above */
         TEST_ASSERT_TRUE(pos(w) >= wt);
-        TEST_ASSERT_TRUE(pos(w) <= wt * (1.0 + 1.5 * ldexp(1.0, -15)) + 3.0 * ldexp(1.0, -MTT_FX_POS_FRAC));
+        TEST_ASSERT_TRUE(pos(w) <= wt * (1.0 + 1.5 * ldexp(1.0, -7)) + 3.0 * ldexp(1.0, -MTT_FX_POS_FRAC));
         /* a gate wider than the format saturates instead of wrapping */
         MTT_SYM_E(S) = 10;
         TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, MTT_GATE_WIDTH(g, S, 0));
