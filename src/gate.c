@@ -132,8 +132,9 @@ mtt_ratio mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob
 
 mtt_ratio mtt_fx_gate_lik(mtt_ratio peak, mtt_d2 d2)
 {
-    /* exp(-d^2 / 2): d^2 / 2 in Q24 rounded (2^-25), exp in Q30 (fixed.h) */
-    return mtt_fx_mul(peak, mtt_fx_exp_neg_q30(((uint32_t)d2 + 1u) >> 1), MTT_FX_PROB_FRAC);
+    /* exp(-d^2 / 2): d^2 / 2 in Q24 rounded (2^-25), exp in Q30 (fixed.h),
+     * at most 1: the fast Q30 multiply cannot overflow */
+    return mtt_fx_mulq30(peak, mtt_fx_exp_neg_q30(((uint32_t)d2 + 1u) >> 1));
 }
 
 mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
