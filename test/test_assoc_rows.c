@@ -163,14 +163,18 @@ static const double tv8_lamt[4] = {0.002, 0.005113793921, 0.01197443534, 0.002};
 static const double tv8_ex[2] = {0.8, 0.5};
 
 /* Pt = PD PG P^ p / sum: the numerator to q (plus p's q), the sum of two
- * quantised p to 2q, the quotient to u.  w = p Pt / (1 - Pt): the product
+ * quantised p to 2q, the quotient to u.  (The fixed build forms p r with r
+ * = 1/sum on 30 bits, then times PD PG P^: no Q16 rounding of the
+ * numerator, which the q above covers, and 4 u for r's relative 2^-30, p
+ * r's and the last product's roundings; the formula keeps the larger
+ * count.)  w = p Pt / (1 - Pt): the product
  * to q (plus p's q times Pt and p times dPt), the quotient to q, grown by
  * 1/(1 - Pt) (and w dPt / (1 - Pt) from the denominator). */
 static double w_tol(int k)
 {
     const double p = tv8_p[k] / LAMBDA, ptl = tv8_ptilde[k];
     const double sum = (tv8_p[2 * (k / 2)] + tv8_p[2 * (k / 2) + 1]) / LAMBDA;
-    const double dpt = (QH + QH * 0.891 * tv8_ex[k / 2] + ptl * 2.0 * QH) / sum + UH;
+    const double dpt = (QH + QH * 0.891 * tv8_ex[k / 2] + ptl * 2.0 * QH) / sum + 4.0 * UH;
     const double dnum = QH + ptl * QH + p * dpt;
     const double w = p * ptl / (1.0 - ptl);
     return (dnum + w * dpt) / (1.0 - ptl) + QH;
