@@ -172,11 +172,8 @@ int32_t mtt_fx_at(int32_t m, int from, int to)
 
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
 {
-    int b = 0, k, e;
-    for (k = 0; k < 3; ++k) {
-        const int l = bitlen(R[k]);
-        b = (l > b) ? l : b;
-    }
+    const int b = 32 - mtt_fx_clz(mtt_fx_or_abs(R, 3)); /* the largest bit length */
+    int e;
     /* R's values at the exponent where its largest has MTT_FX_COV_TOP bits */
     e = (b > 0) ? -MTT_FX_VAR_FRAC + b - MTT_FX_COV_TOP : -127;
     e = (MTT_COV_E(Pp) > e) ? MTT_COV_E(Pp) : e;
@@ -185,11 +182,8 @@ int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
 
 int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
 {
-    int b = 0, k, sh;
-    for (k = 0; k < 3; ++k) {
-        const int l = bitlen(S[k]);
-        b = (l > b) ? l : b;
-    }
+    const int b = 32 - mtt_fx_clz(mtt_fx_or_abs(S, 3)); /* the largest bit length */
+    int sh;
     sh = 27 - b + bitlen(det); /* max |S| 2^sh / det < 2^28 */
     sh = (sh < 0) ? 0 : ((sh > 62) ? 62 : sh);
     return -MTT_SYM_E(S) - 28 - sh;
