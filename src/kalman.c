@@ -299,147 +299,91 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
     MTT_COV_NORM(P);
 }
 
-/* L D L' without L: E_ij = L_ij d_j, so d_i = A_ii - sum_j E_ij^2 / d_j and
- * E_ij = A_ij - sum_k E_ik E_jk / d_k.  For a positive definite A every
- * such quotient is at most sqrt(A_ii A_jj) (Cauchy-Schwarz on the pivots),
- * so with A normalised to 29 bits nothing leaves the format; one
- * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
- * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
- * bits, each row and column i then scaled by 2^t_i so that every diagonal
- * entry has 28 or 29 bits (D A D: the pivot ratios d_i / a_ii do not
- * change, and a block whose variances span many bits keeps the precision
- * of its small ones, as float's per-value exponent does); returns 0, or
- * -1 when a pivot is not positive.  The last pivot's reciprocal only when
- * `last` (the quadratic form needs it, the test not). */
-struct ldl_fx {
-    /* a's lower triangle is overwritten by E (each a_ij is read once, when
-     * E_ij is formed) */
-    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
-    int32_t r[MTT_MAX_STATE];
-    int rho[MTT_MAX_STATE];
-    int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
-    int ea;               /* a's exponent */
+/* Fraction-free elimination (no division, no L): the positive-definiteness
+ * test and the quadratic form b' A^-1 b.  A is first scaled D A D, D =
+ * diag(2^t_i), so that every diagonal entry has 29 or 30 bits: the pivot
+ * ratios d_i / a_ii do not change, and a block whose variances span many
+ * bits keeps the precision of its small ones, as float's per-value
+ * exponent does; then |a_ij| <= sqrt(a_ii a_jj) < 2^30 unless A is not
+ * positive semi-definite, which fails at once.  Step k turns the block B =
+ * mu_k S_k (S_k the Schur complement left after k pivots, mu_k > 0 a known
+ * factor, mm 2^em) into p B_ij - B_ik B_jk = mu_k p S_k+1,ij (p = B_kk =
+ * mu_k d_k), renormalised to 30 bits.  Each product has both factors below
+ * 2^30, each difference stays below 2^31; every rounding is 2^-30 of the
+ * block.  Row MTT_STATE_N (the quadratic form's) borders A with D b. */
+struct ff {
+    int32_t a[MTT_MAX_STATE + 1][MTT_MAX_STATE + 1]; /* lower triangle */
+    int32_t mm;                                      /* mu = mm 2^em */
+    int em;
+    int t[MTT_MAX_STATE];
 };
 
-/* a b / d_k, saturated */
-static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+static int ff_scale(mtt_cov A, struct ff *f)
 {
-    return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
-}
-
-/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
- * have left its pivot positive: then both are below a_ii, a_jj < 2^30
- * and so is their geometric mean, and the fast multiply cannot overflow
- * (its shift rho_k - 30 >= 19; below that, the exact one) */
-static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
-{
-    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
-}
-
-/* The D A D scaling of ldl_fx: f->a's lower triangle, f->t, f->ea;
- * -1 when A is 0 or a diagonal entry is not positive. */
-static int scale_fx(mtt_cov A, struct ldl_fx *f)
-{
-    uint32_t u = 0u;
-    int i, j, sh;
+    int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
-        u |= or_abs(A[i], MTT_STATE_N);
-    }
-    if (u == 0u) {
-        return -1;
-    }
-    sh = mtt_fx_top_exp(0, u, 29);
-    f->ea = MTT_COV_E(A) + sh;
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        const int32_t aii = mtt_fx_shift(A[i][i], -sh);
-        if (!(aii > 0)) {
+        if (!(A[i][i] > 0)) {
             return -1;
         }
-        f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
-    }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j <= i; ++j) { /* the lower triangle: A is symmetric */
-            const int32_t v = A[i][j];
-            const int tt = f->t[i] + f->t[j] - sh;
-            /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
-             * A; beyond 2^30 it is not, and saturates */
-            f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
-                                                                          : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
-        }
-    }
-    return 0;
-}
-
-static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
-{
-    int i, j, k;
-    if (scale_fx(A, f) != 0) {
-        return -1;
-    }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t di = f->a[i][i];
-        for (j = 0; j < i; ++j) {
-            int32_t v = f->a[i][j];
-            for (k = 0; k < j; ++k) {
-                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
-            }
-            f->a[i][j] = v;
-            di = MTT_SUBS(di, over_pivot(f, v, v, j));
-            if (!(di > 0)) {
-                return -1; /* the pivot only decreases from here */
-            }
-        }
-        if (!(di > 0) || !mtt_isfinite(di)) {
-            return -1;
-        }
-        f->d[i] = di;
-        if (i + 1 < MTT_STATE_N || last) {
-            f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
-            f->r[i] = mtt_fx_recip(di, f->rho[i]);
-        }
-    }
-    return 0;
-}
-
-/* The positive-definiteness test without a division: fraction-free
- * elimination on the D A D-scaled matrix.  Step k turns the block B = mu_k
- * S_k (S_k the Schur complement left after k pivots, mu_k > 0 a known
- * factor) into p B_ij - B_ik B_jk = mu_k p S_k+1,ij (p = B_kk = mu_k d_k),
- * renormalised to 30 bits; so d_k > rel a_kk is p > rel a_kk mu_k, two
- * products.  Each product has both factors below 2^30 (entries of a
- * positive semi-definite block are bounded by its diagonal: a larger one
- * fails at once), each difference stays below 2^31; every rounding is
- * 2^-30 of the block. */
-int mtt_cov_ok(mtt_cov P, mtt_real rel)
-{
-    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], ad[MTT_MAX_STATE], mm = (int32_t)1 << 29; /* mu = mm 2^em */
-    int t[MTT_MAX_STATE];
-    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30); /* rel on 30 bits */
-    const int32_t reln = mtt_fx_shift(rel, z);
-    int i, j, k, sh, em = -29;
-    /* d_i / P_ii is scale-free (see the float text); rel in Q30.  D P D:
-     * every diagonal entry on 29 or 30 bits, each a_ij then below 2^30
-     * unless P is not positive semi-definite (|P_ij| <= sqrt(P_ii P_jj)). */
-    if (!(rel > 0)) {
-        return 0;
-    }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        if (!(P[i][i] > 0)) {
-            return 0;
-        }
-        t[i] = (30 - (32 - mtt_fx_clz((uint32_t)P[i][i]))) >> 1; /* arithmetic: -1 for 31 bits */
+        f->t[i] = (30 - (32 - mtt_fx_clz((uint32_t)A[i][i]))) >> 1; /* arithmetic: -1 for 31 bits */
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
         for (j = 0; j <= i; ++j) {
-            const int32_t v = P[i][j];
-            const int tt = t[i] + t[j];
+            const int32_t v = A[i][j];
+            const int tt = f->t[i] + f->t[j];
             const int32_t m = (tt > 0 && ((v < 0) ? -v : v) >> (30 - tt) != 0) ? MTT_FX_MAX : mtt_fx_shift(v, tt);
             if (!(((m < 0) ? -m : m) < ((int32_t)1 << 30))) {
-                return 0;
+                return -1;
             }
-            a[i][j] = m;
+            f->a[i][j] = m;
         }
-        ad[i] = a[i][i];
+    }
+    f->mm = (int32_t)1 << 29;
+    f->em = -29;
+    return 0;
+}
+
+/* Step k on rows and columns k + 1 .. n - 1 (pivot f->a[k][k] > 0). */
+static void ff_step(struct ff *f, int k, int n)
+{
+    const int32_t p = f->a[k][k];
+    uint32_t u = 0u;
+    int i, j, sh;
+    for (i = k + 1; i < n; ++i) {
+        for (j = k + 1; j <= i; ++j) {
+            const int32_t v = MULQ(p, f->a[i][j]) - MULQ(f->a[i][k], f->a[j][k]);
+            f->a[i][j] = v;
+            u |= (uint32_t)((v < 0) ? -v : v);
+        }
+    }
+    sh = mtt_fx_top_exp(0, u, 30);
+    for (i = k + 1; i < n; ++i) {
+        for (j = k + 1; j <= i; ++j) {
+            f->a[i][j] = mtt_fx_shift(f->a[i][j], -sh);
+        }
+    }
+    /* mu_k+1 = mu_k p 2^(-30 - sh), its mantissa back on 30 bits */
+    f->mm = MULQ(f->mm, p);
+    f->em -= sh;
+    sh = mtt_fx_top_exp(0, (uint32_t)f->mm, 30);
+    f->mm = mtt_fx_shift(f->mm, -sh);
+    f->em += sh;
+}
+
+/* d_k > rel a_kk is p > rel a_kk mu_k: two products. */
+int mtt_cov_ok(mtt_cov P, mtt_real rel)
+{
+    struct ff f;
+    int32_t ad[MTT_MAX_STATE];
+    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30); /* rel on 30 bits */
+    const int32_t reln = mtt_fx_shift(rel, z);
+    int i, k;
+    /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
+    if (!(rel > 0) || ff_scale(P, &f) != 0) {
+        return 0;
+    }
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        ad[i] = f.a[i][i];
     }
 #if MTT_STATE_N == 4
     {
@@ -452,7 +396,8 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
          * (sum |E_ij| + 4 rel + 8 units) times their trace, every d_k >
          * rel a_kk (a_kk < 1 in Q30): the 8 units cover the roundings of
          * the scaling and of these products.  Otherwise the elimination
-         * below decides. */
+         * decides. */
+        int32_t(*a)[MTT_MAX_STATE + 1] = f.a;
         const uint32_t e = (uint32_t)MTT_ABS(a[1][0]) + (uint32_t)MTT_ABS(a[3][0]) + (uint32_t)MTT_ABS(a[2][1]) +
                            (uint32_t)MTT_ABS(a[3][2]);
         if (e < ((uint32_t)1 << 29) && rel < ((int32_t)1 << 26)) {
@@ -465,85 +410,58 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel)
     }
 #endif
     for (k = 0; k < MTT_STATE_N; ++k) {
-        const int32_t p = a[k][k];
-        uint32_t u = 0u;
+        const int32_t p = f.a[k][k];
         if (!(p > 0)) {
             return 0;
         }
         if (k > 0) {
             /* rel a_kk mu = X 2^(30 + em - z) */
-            const int32_t X = MULQ(MULQ(reln, ad[k]), mm);
-            if (!(p > mtt_fx_at(X, 30 + em - z, 0))) {
+            const int32_t X = MULQ(MULQ(reln, ad[k]), f.mm);
+            if (!(p > mtt_fx_at(X, 30 + f.em - z, 0))) {
                 return 0;
             }
         }
-        if (k + 1 == MTT_STATE_N) {
-            break;
+        if (k + 1 < MTT_STATE_N) {
+            ff_step(&f, k, MTT_STATE_N);
         }
-        for (i = k + 1; i < MTT_STATE_N; ++i) {
-            for (j = k + 1; j <= i; ++j) {
-                const int32_t v = MULQ(p, a[i][j]) - MULQ(a[i][k], a[j][k]);
-                a[i][j] = v;
-                u |= (uint32_t)((v < 0) ? -v : v);
-            }
-        }
-        sh = mtt_fx_top_exp(0, u, 30);
-        for (i = k + 1; i < MTT_STATE_N; ++i) {
-            for (j = k + 1; j <= i; ++j) {
-                a[i][j] = mtt_fx_shift(a[i][j], -sh);
-            }
-        }
-        /* mu_k+1 = mu_k p 2^(-30 - sh), its mantissa back on 30 bits */
-        mm = MULQ(mm, p);
-        em -= sh;
-        sh = mtt_fx_top_exp(0, (uint32_t)mm, 30);
-        mm = mtt_fx_shift(mm, -sh);
-        em += sh;
     }
     return 1;
 }
 
+/* b' A^-1 b: A bordered with D b 2^-eb (its largest entry on 29 bits);
+ * after the four steps the corner is mu (0 - (D b)' (D A D)^-1 (D b))
+ * 2^(-2 eb), so with A = its mantissas 2^e(A) and b in the position
+ * format, d2 = -corner / mu 2^(2 eb - e(A) - 2 F): one quotient. */
 int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
 {
-    struct ldl_fx f;
-    int32_t y[MTT_MAX_STATE], t[MTT_MAX_STATE];
-    int ex[MTT_MAX_STATE];
-    int32_t acc = 0;
-    int i, k, s, e = -127;
-    if (ldl_fx(A, &f, 1) != 0) {
+    struct ff f;
+    int32_t x;
+    int i, k, eb = -127;
+    if (ff_scale(A, &f) != 0) {
         return -1;
     }
-    /* D b at 2^-(F + s) on 24 bits, so that y = L^-1 D b (|y_i| <= sqrt(d2 d_i))
-     * stays in the format unless the form is far beyond every threshold
-     * (it saturates).  Each y_i^2 / d_i is formed on 29 bits with its own
-     * exponent (relative to 2^(-2 (F + s) - ea)), then the four are summed
-     * at the largest exponent plus two. */
     for (i = 0; i < MTT_STATE_N; ++i) {
-        /* D b: the largest |b_i| 2^t_i on 24 bits */
-        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 24);
-        e = (k > e) ? k : e;
+        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 29);
+        eb = (k > eb) ? k : eb;
     }
-    s = -e;
-    e = -127;
     for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
-        int sh;
-        for (k = 0; k < i; ++k) {
-            v = MTT_SUBS(v, over_pivot(&f, f.a[i][k], y[k], k));
+        f.a[MTT_STATE_N][i] = mtt_fx_shift(b[i], f.t[i] - eb);
+    }
+    f.a[MTT_STATE_N][MTT_STATE_N] = 0;
+    for (k = 0; k < MTT_STATE_N; ++k) {
+        if (!(f.a[k][k] > 0)) {
+            return -1;
         }
-        y[i] = v;
-        q = MULQ(v, f.r[i]);
-        sh = mtt_fx_top_exp(0, (uint32_t)((q < 0) ? -q : q), 0) + mtt_fx_top_exp(0, (uint32_t)((v < 0) ? -v : v), 29);
-        sh = (sh < 0) ? 0 : sh;
-        t[i] = mtt_fx_mul(q, v, sh);
-        ex[i] = sh + 30 - f.rho[i];
-        e = (ex[i] > e) ? ex[i] : e;
+        ff_step(&f, k, MTT_STATE_N + 1);
     }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        acc = MTT_ADDS(acc, mtt_fx_at(t[i], ex[i], e + 2));
+    x = -f.a[MTT_STATE_N][MTT_STATE_N];
+    if (!(x > 0)) {
+        *d2 = 0; /* b = 0, or rounding */
+        return 0;
     }
-    /* acc at 2^(e + 2 - 2 (F + s) - ea), returned in Q24 (saturated) */
-    *d2 = mtt_fx_at(acc, e + 2 - 2 * (MTT_FX_POS_FRAC + s) - f.ea, -MTT_FX_D2_FRAC);
+    /* x / mm on 29 or 30 bits (x < 2^31, mm in [2^29, 2^30)), then in Q24 (saturated) */
+    *d2 = mtt_fx_at(mtt_fx_div(x, f.mm, 28), 2 * eb - MTT_COV_E(A) - 2 * MTT_FX_POS_FRAC - f.em - 28,
+                    -MTT_FX_D2_FRAC);
     return 0;
 }
 #undef MULQ

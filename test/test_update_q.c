@@ -300,21 +300,24 @@ static void test_tv6_pda(void)
     check_pda(&f, 3, tv5_z, tv6_beta, tv6_beta0, tv6_x, tv6_P);
 }
 
-/* ---- L D L' (ALGORITHMS.md §3, §16): the positive-definiteness test
- * with its margin (d_i > rel P_ii), and b' A^-1 b.  Fixed point: A is
- * normalised to 29 bits, then scaled D A D (D >= I) so that every
- * diagonal has 28 or 29 bits, and every quotient E_ik E_jk / d_k is
- * bounded by the diagonal (Cauchy-Schwarz on the pivots), so each of the
- * 10 roundings of the 4 x 4 factorisation (the quotients, the reciprocal
- * of each pivot) is at most 2 units of the scaled matrix (mtt_fx_mulq at
- * shift 19: 0.5 + 3 2^-1 units; the exact ones half a unit), which is at
- * most 2 2^-28 max |A| on an entry of A since D >= I; b' A^-1 b moves by
- * |x' dA x| <= 10 2^-27 max|A| (sum |x_i|)^2 with x = A^-1 b (in double).
- * D b is rounded to 24 bits and each y_i = (D b)_i - sum L_ik y_k carries
- * one rounding per quotient (at most 3 at 2^-25 max |D b|): a perturbation
- * of D b of 4 units, 2 (sum |x_i|) 4 2^-25 max |b| where D = I (the test
- * matrices' variances lie within a factor 4 of each other); the four terms y_i^2 / d_i on
- * 29 bits, their sum's alignment and the Q24 result: 6 2^-29 d2 + 2^-25. ---- */
+/* ---- the positive-definiteness test with its margin (d_i > rel P_ii,
+ * ALGORITHMS.md §3, §16), and b' A^-1 b.  Fixed point: A is scaled D A D
+ * so that every diagonal has 29 or 30 bits, then eliminated without
+ * division (kalman.c, fraction-free: each step forms p B_ij - B_ik B_jk,
+ * two fast products of factors below 2^30, and renormalises the block to
+ * 30 bits).  Each of the 10 entries of the 4 x 4 elimination takes at
+ * most 2 units of 2^-30 of its block (two products at 0.5008 units, the
+ * renormalisation's half unit), and a block of a positive semi-definite
+ * matrix is bounded by its diagonal, at most 2^30 times the scaled
+ * matrix's largest: at most 2 2^-28 max |A| on an entry of A (D = I for
+ * the test matrices, whose variances lie within a factor 4 of each other,
+ * up to a factor 2); b' A^-1 b moves by |x' dA x| <= 10 2^-27 max|A|
+ * (sum |x_i|)^2 with x = A^-1 b (in double).  D b bordering A is rounded
+ * to 30 bits and its 10 entries of the elimination carry 2 units each: a
+ * perturbation of D b within 2 (sum |x_i|) 4 2^-25 max |b|; the final
+ * quotient by mu on 29 bits and the Q24 result: 6 2^-29 d2 + 2^-25.  The
+ * same bound as the L D L' with reciprocals had, which it now holds with
+ * more room. ---- */
 static double quad_tol(const double A[16], const double b[4], double *d2)
 {
     /* x = A^-1 b by Gauss-Jordan in double (the 4 x 4 test matrices are
