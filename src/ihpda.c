@@ -39,9 +39,12 @@ void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out)
 #ifdef MTT_REAL_FIXED
 /* The fixed-point build: the same row with lambda_j multiplied through,
  * D = lambda_j L_j = X + (1 - PD PG) lambda_j + PD PG (1 - P_r) m / V_G
- * with X = PD PG m p_j P_r, so beta_j = X / D and L_j = D / lambda_j: two
- * quotients per candidate and m / V_G once per row, instead of three
- * quotients per candidate (docs/FIXED_POINT.md, cost measures).  A ratio
+ * with X = PD PG m p_j P_r, so beta_j = X / D and L_j = D / lambda_j.  The
+ * MMR reads beta alone and the update only the assigned pair's L_j, so L
+ * holds D here and the quotient by lambda_j is taken where L is read
+ * (MTT_PAIR_L, update.c): one quotient per candidate and m / V_G once per
+ * row, instead of three quotients per candidate (docs/FIXED_POINT.md,
+ * cost measures).  A ratio
  * times a probability (at most 1) cannot overflow, so those products are
  * the fast Q30 multiply (0.5007 unit instead of 0.5); 1/m once per row. */
 #define MULQ_RP(a, b) mtt_fx_mulq30((a), (b))
@@ -71,7 +74,7 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
         pr = (prank != NULL) ? prank[rank - 1u] : pr1;
         X = MULQ_RP(MTT_MUL_CR(pdpg_m, c[i].p), pr);
         D = MTT_ADDS(MTT_ADDS(X, MULQ_RP(c[i].lam, MTT_SUB(MTT_P(1.0), pdpg))), MULQ_RP(z, MTT_SUB(MTT_P(1.0), pr)));
-        L[i] = MTT_DIV_R(D, c[i].lam);
+        L[i] = D; /* lambda_j L_j: divided where it is read (MTT_PAIR_L) */
         beta[i] = MTT_DIV_P(X, D);
     }
 }

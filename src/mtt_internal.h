@@ -150,9 +150,16 @@ void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out);
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
 /* beta_j and L_j (ALGORITHMS.md §7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
- * NULL) receives the 1-based rank of each candidate. */
+ * NULL) receives the 1-based rank of each candidate.  Fixed point: L gets
+ * lambda_j L_j (the quotient by lambda_j where it is read: MTT_PAIR_L). */
 void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
                      const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out);
+/* A pair's IHPDA L_j as the update reads it. */
+#ifdef MTT_REAL_FIXED
+#define MTT_PAIR_L(pp) MTT_DIV_R((pp)->L, (pp)->lam)
+#else
+#define MTT_PAIR_L(pp) ((pp)->L)
+#endif
 /* Compute the IHPDA row of track ti over its gated pairs: with excl_used,
  * pairs whose measurement is used (assigned) are left out, except the pair
  * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);

@@ -112,7 +112,8 @@ static const double tv5_prank[3] = {0.1111111111, 0.7111111111, 0.1777777778};
  * to q, times P_r to QM, P_r's own 4e-7.  D: X's, (1 - PD PG) lambda_j to
  * QM, m / V_G with lambda V_G quantised to q and the quotient to q + X
  * 2q / (lambda V_G), times PD PG to QM, times 1 - P_r to QM.  L = D / 1
- * to q; beta = X / D to u.  (Float and double: the float text, A = X /
+ * to q; beta = X / D to u.  (The fixed build returns D = lambda_j L as L,
+ * divided by lambda_j where the update reads it; lambda_j = 1 here.)  (Float and double: the float text, A = X /
  * lambda_j, C, L = A + C, beta = A / L, held by the rule of ALGORITHMS.md
  * §16 by TV_ASSERT_RATIO/PROB, which do not use these.) */
 #define QM (QH * 1.0015)

@@ -721,6 +721,7 @@ static void test_stage_one(void)
     TV_ASSIGNED(&trk, 0) = 1; /* z2 */
     TV_PAIR_BETA(&trk, 1) = PROB(b);
     TV_PAIR_L(&trk, 1) = MTT_RATIO(6.870114355);
+    TV_PAIR_LAM(&trk, 1) = MTT_RATIO(1.0); /* the fixed build reads L / lambda_j (MTT_PAIR_L): exact here */
     mtt_update_frame(&trk);
     check_result(&f, 1, &tv5_z[1], &b, PROB(1.0) - PROB(b), tv5_xupd, tv5_Pupd, TV_X(&trk, 0),
                  TV_P(&trk, 0));
