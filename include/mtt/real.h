@@ -156,8 +156,13 @@ typedef int32_t mtt_pos;
 #define MTT_MUL_PC(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_MUL_CR(a, b) mtt_fx_mul((a), (b), MTT_FX_CNT_FRAC)
 #define MTT_DIV_CR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC + MTT_FX_RATIO_FRAC - MTT_FX_CNT_FRAC)
-#define MTT_CVT_P_C(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_CNT_FRAC)
-#define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
+/* round(x / 2^s), 0 < s < 32, ties away from zero: mtt_fx_mul(x, 1, s)'s
+ * result by a shift (x is evaluated twice: a side-effect-free operand) */
+#define MTT_FX_RSHIFT(x, s)                                                                        \
+    (((x) < 0) ? -(int32_t)(((uint32_t) - (x) + ((uint32_t)1 << ((s) - 1))) >> (s))                \
+               : (int32_t)(((uint32_t)(x) + ((uint32_t)1 << ((s) - 1))) >> (s)))
+#define MTT_CVT_P_C(x) MTT_FX_RSHIFT((x), MTT_FX_PROB_FRAC - MTT_FX_CNT_FRAC)
+#define MTT_CVT_P_R(x) MTT_FX_RSHIFT((x), MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
 #define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
 
 /* Covariances in block floating point (docs/FIXED_POINT.md §2, Status
