@@ -36,6 +36,19 @@ void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out)
     }
 }
 
+/* Rank 1 is the strongest; equal intensities: lower index ranks stronger
+ * (ALGORITHMS.md §7.1). */
+static uint16_t cand_rank(const mtt_cand *c, uint16_t m, uint16_t i)
+{
+    uint16_t rank = 1, j;
+    for (j = 0; j < m; ++j) {
+        if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
+            ++rank;
+        }
+    }
+    return rank;
+}
+
 #ifdef MTT_REAL_FIXED
 /* The fixed-point build: the same row with lambda_j multiplied through,
  * D = lambda_j L_j = X + (1 - PD PG) lambda_j + PD PG (1 - P_r) m / V_G
@@ -56,18 +69,11 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
     const mtt_real pdpg_m = MTT_MUL_PC(pdpg, fm);                   /* count */
     const mtt_ratio z = MULQ_RP(MTT_DIV_CR(fm, vg), pdpg);           /* PD PG m / V_G */
     const mtt_prob pr1 = (prank != NULL) ? MTT_ZERO : MTT_DIV_P(MTT_CNT(1), fm); /* P_r without ranks */
-    uint16_t i, j;
+    uint16_t i;
     for (i = 0; i < m; ++i) {
         mtt_prob pr;
         mtt_ratio X, D;
-        uint16_t rank = 1;
-        /* Rank 1 is the strongest; equal intensities: lower index ranks
-         * stronger (ALGORITHMS.md §7.1). */
-        for (j = 0; j < m; ++j) {
-            if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
-                ++rank;
-            }
-        }
+        const uint16_t rank = cand_rank(c, m, i);
         if (rank_out != NULL) {
             rank_out[i] = (uint8_t)rank;
         }
@@ -85,18 +91,11 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
 {
     const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
     const mtt_real fm = MTT_CNT(m);
-    uint16_t i, j;
+    uint16_t i;
     for (i = 0; i < m; ++i) {
         mtt_prob pr;
         mtt_ratio A, C;
-        uint16_t rank = 1;
-        /* Rank 1 is the strongest; equal intensities: lower index ranks
-         * stronger (ALGORITHMS.md §7.1). */
-        for (j = 0; j < m; ++j) {
-            if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
-                ++rank;
-            }
-        }
+        const uint16_t rank = cand_rank(c, m, i);
         if (rank_out != NULL) {
             rank_out[i] = (uint8_t)rank;
         }
