@@ -172,11 +172,8 @@ int32_t mtt_fx_at(int32_t m, int from, int to)
 
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
 {
-    int b = 0, k, e;
-    for (k = 0; k < 3; ++k) {
-        const int l = bitlen(R[k]);
-        b = (l > b) ? l : b;
-    }
+    const int b = 32 - mtt_fx_clz(mtt_fx_or_abs(R, 3)); /* the largest bit length */
+    int e;
     /* R's values at the exponent where its largest has MTT_FX_COV_TOP bits */
     e = (b > 0) ? -MTT_FX_VAR_FRAC + b - MTT_FX_COV_TOP : -127;
     e = (MTT_COV_E(Pp) > e) ? MTT_COV_E(Pp) : e;
@@ -185,14 +182,28 @@ int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
 
 int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det)
 {
-    int b = 0, k, sh;
-    for (k = 0; k < 3; ++k) {
-        const int l = bitlen(S[k]);
-        b = (l > b) ? l : b;
-    }
+    const int b = 32 - mtt_fx_clz(mtt_fx_or_abs(S, 3)); /* the largest bit length */
+    int sh;
     sh = 27 - b + bitlen(det); /* max |S| 2^sh / det < 2^28 */
     sh = (sh < 0) ? 0 : ((sh > 62) ? 62 : sh);
     return -MTT_SYM_E(S) - 28 - sh;
+}
+
+void mtt_fx_si_set(int32_t Si[MTT_SYM_SLOTS], const int32_t S[MTT_SYM_SLOTS], int32_t det)
+{
+    /* S_k 2^sh / det (sh = -e(S) - 28 - e(S^-1), mtt_fx_si_exp) as S_k r
+     * 2^(sh - rho) with r = round(2^rho / det) on 30 bits: one quotient
+     * instead of three; r's relative error 2^-30 adds |S^-1| 2^-30 (a
+     * quarter unit at most) to each product's half unit. */
+    const int sh = -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si);
+    const int rho = 29 + bitlen(det);
+    const int32_t r = mtt_fx_recip(det, rho);
+    const int32_t v[3] = {S[2], -S[1], S[0]};
+    const int s = rho - sh;
+    int k;
+    for (k = 0; k < 3; ++k) {
+        Si[k] = (s >= 19 && s <= 31) ? mtt_fx_mulq(v[k], r, s) : mtt_fx_mul(v[k], r, (s < 0) ? 0 : s);
+    }
 }
 
 /* Normalises v (|v| <= MTT_FX_MAX) so that the larger of |a|, |b| has 30

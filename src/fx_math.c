@@ -165,6 +165,11 @@ int32_t mtt_fx_mulq30(int32_t a, int32_t b)
     FX_MULQ_RETURN(a, b, 30);
 }
 
+int32_t mtt_fx_mulq28(int32_t a, int32_t b)
+{
+    FX_MULQ_RETURN(a, b, 28);
+}
+
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
 {
     const uint32_t ua = mag(a), ub = mag(b);
@@ -295,9 +300,9 @@ uint32_t mtt_fx_sqrt(uint32_t x, int f)
     return sqrt_digits(x, 0u, 32);
 }
 
-uint32_t mtt_fx_sqrt16(uint32_t x)
+uint32_t mtt_fx_sqrt8(uint32_t x)
 {
-    return sqrt_digits(x, 0u, 16);
+    return sqrt_digits(x, 0u, 8);
 }
 
 /* 2^-(i/16) in Q30, i = 0..15, rounded. */

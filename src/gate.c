@@ -55,11 +55,34 @@ mtt_d2 mtt_gate_gamma(mtt_prob pg)
     return -mtt_fx_ln((uint32_t)(MTT_P(1.0) - pg), MTT_FX_PROB_FRAC);
 }
 
+/* The per-frame factors of lambda V_G and of p / lambda's peak, each a
+ * mantissa below 2^31 and its exponent: gc[0] 2^gc[1] = pi gamma lambda
+ * (0 when gamma or lambda is not positive), gc[2] 2^gc[3] = 2 pi PG
+ * lambda (0 when PG or lambda is not positive).  Formed once per frame,
+ * they leave one product per track for each (the same three products,
+ * associated the other way). */
+void mtt_fx_gate_consts(mtt_d2 gamma, mtt_prob pg, int32_t dens, int32_t gc[4])
+{
+    int e = 0;
+    gc[0] = 0;
+    gc[2] = 0;
+    if (gamma > 0 && dens > 0) {
+        gc[0] = mul_e(mul_e(gamma, FX_PI_Q29, &e), dens, &e);
+    }
+    gc[1] = e - MTT_FX_D2_FRAC - 29 - MTT_FX_DENS_FRAC;
+    e = 0;
+    if (pg > 0 && dens > 0) {
+        gc[2] = mul_e(mul_e(FX_2PI_Q28, pg, &e), dens, &e);
+    }
+    gc[3] = e - 28 - MTT_FX_PROB_FRAC - MTT_FX_DENS_FRAC;
+}
+
 /* lambda V_G and p / lambda's peak from one square root of det S per
- * track (the two differ only in the factors after it).  *peak (when not
- * NULL) is MTT_FX_MAX and the area 0 where an input is not positive. */
-mtt_ratio mtt_fx_gate_area_peak(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob pg,
-                                int32_t dens, mtt_ratio *peak)
+ * track (the two differ only in the factors after it) and the frame's
+ * factors gc.  *peak (when not NULL) is MTT_FX_MAX and the area 0 where an
+ * input is not positive. */
+mtt_ratio mtt_fx_gate_area_peak_c(const int32_t gc[4], int32_t det, const int32_t S[MTT_SYM_SLOTS],
+                                  mtt_ratio *peak)
 {
     int e = 0, e1 = 0, s;
     int32_t r = 0, m;
@@ -67,28 +90,32 @@ mtt_ratio mtt_fx_gate_area_peak(mtt_d2 gamma, int32_t det, const int32_t S[MTT_S
     if (peak != NULL) {
         *peak = MTT_FX_MAX;
     }
-    if (!(det > 0) || !(dens > 0)) {
+    if (!(det > 0)) {
         return 0;
     }
     r = sqrt_det(det, S, &e);
-    if (gamma > 0) {
-        m = mul_e(r, gamma, &e1);
-        m = mul_e(m, FX_PI_Q29, &e1);
-        m = mul_e(m, dens, &e1);
+    if (gc[0] > 0) {
+        m = mul_e(r, gc[0], &e1);
         /* lambda pi gamma sqrt(det S) */
-        area = ratio_at(m, e + e1 - MTT_FX_D2_FRAC - 29 - MTT_FX_DENS_FRAC);
+        area = ratio_at(m, e + e1 + gc[1]);
     }
-    if (peak != NULL && pg > 0) {
+    if (peak != NULL && gc[2] > 0) {
         e1 = 0;
-        m = mul_e(r, FX_2PI_Q28, &e1);
-        m = mul_e(m, pg, &e1);
-        m = mul_e(m, dens, &e1);
-        e += e1 - 28 - MTT_FX_PROB_FRAC - MTT_FX_DENS_FRAC;
+        m = mul_e(r, gc[2], &e1);
+        e += e1 + gc[3];
         /* 1 / (2 pi sqrt(det S) PG lambda) = 2^(16 - e) / m in Q16 */
         s = MTT_FX_RATIO_FRAC - e;
         *peak = (s < 0) ? 0 : ((s > 62) ? MTT_FX_MAX : mtt_fx_div(1, m, s));
     }
     return area;
+}
+
+mtt_ratio mtt_fx_gate_area_peak(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob pg,
+                                int32_t dens, mtt_ratio *peak)
+{
+    int32_t gc[4];
+    mtt_fx_gate_consts(gamma, pg, dens, gc);
+    return mtt_fx_gate_area_peak_c(gc, det, S, peak);
 }
 
 mtt_ratio mtt_fx_gate_area(mtt_d2 gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t dens)
@@ -105,18 +132,20 @@ mtt_ratio mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], mtt_prob
 
 mtt_ratio mtt_fx_gate_lik(mtt_ratio peak, mtt_d2 d2)
 {
-    /* exp(-d^2 / 2): d^2 / 2 in Q24 rounded (2^-25), exp in Q30 (fixed.h) */
-    return mtt_fx_mul(peak, mtt_fx_exp_neg_q30(((uint32_t)d2 + 1u) >> 1), MTT_FX_PROB_FRAC);
+    /* exp(-d^2 / 2): d^2 / 2 in Q24 rounded (2^-25), exp in Q30 (fixed.h),
+     * at most 1: the fast Q30 multiply cannot overflow */
+    return mtt_fx_mulq30(peak, mtt_fx_exp_neg_q30(((uint32_t)d2 + 1u) >> 1));
 }
 
 mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
 {
     /* An upper bound of sqrt(gamma s_kk) in the position format.  The slice
      * only narrows the search (d^2 decides the gate), so it is rounded up
-     * and 16 bits of root are enough: t = gamma s_kk 2^-a (exact, or 30
+     * and 8 bits of root are enough: t = gamma s_kk 2^-a (exact, or 30
      * bits), w^2 = t 2^f in units of the position format; T = t 2^z in
-     * [2^30, 2^32) with f - z even, w <= (sqrt16(T) + 1) 2^((f - z)/2)
-     * (at most 1.5 2^-15 relative above), one more unit for t's rounding. */
+     * [2^30, 2^32) with f - z even, w <= (sqrt8(T) + 1) 2^(8 + (f - z)/2)
+     * (at most 1.5 2^-7 relative above: a slice at most 1.2 % wider, the
+     * gated set the same), one more unit for t's rounding. */
     int a, f, z, g;
     int32_t t;
     uint32_t r;
@@ -132,7 +161,7 @@ mtt_pos mtt_fx_gate_width(mtt_d2 gamma, const int32_t S[MTT_SYM_SLOTS], int k)
     f = MTT_SYM_E(S) - MTT_FX_D2_FRAC + 2 * MTT_FX_POS_FRAC + a;
     z = mtt_fx_clz((uint32_t)t); /* >= 1: t < 2^31 */
     z -= (f - z) & 1;
-    r = mtt_fx_sqrt16((uint32_t)t << z) + 1u; /* > sqrt(T), <= 2^16 */
+    r = (mtt_fx_sqrt8((uint32_t)t << z) + 1u) << 8; /* > sqrt(T), <= 2^16 + 2^8 */
     g = (f - z) / 2;
     if (g >= 0) {
         r = (g >= 16 || r > ((uint32_t)MTT_FX_MAX >> g)) ? (uint32_t)MTT_FX_MAX : (r << g);
@@ -239,6 +268,9 @@ void mtt_gate_frame(mtt_tracker *trk)
     mtt_d2 cd[MTT_MAX_GATED];
     uint16_t i, k;
     int resort = 0;
+#ifdef MTT_REAL_FIXED
+    int32_t gc[4];
+#endif
 #if MTT_WITH_IMM
     const int imm = trk->par.motion == MTT_MOTION_IMM;
 #endif
@@ -248,6 +280,10 @@ void mtt_gate_frame(mtt_tracker *trk)
     }
     mtt_sort_by_x(trk->order, trk->init_cand, n, trk->meas);
     trk->n_pairs = 0;
+#ifdef MTT_REAL_FIXED
+    /* one gamma for every track: no adaptive JPDA in the fixed build */
+    mtt_fx_gate_consts(trk->gamma, trk->par.pg, trk->par.clutter_density, gc);
+#endif
 
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
@@ -264,7 +300,11 @@ void mtt_gate_frame(mtt_tracker *trk)
         /* N(0; 0, S) / PG once per track: the pairs differ only in
          * exp(-d2/2), so the square root and divisions are not repeated per
          * pair (the fixed build shares sqrt(det S) with the area). */
+#ifdef MTT_REAL_FIXED
+        tf->vg = mtt_fx_gate_area_peak_c(gc, tf->det_s, tf->S, &peak); /* gamma: trk->gamma */
+#else
         MTT_GATE_AREA_PEAK(tf->vg, peak, gamma, tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
+#endif
         wx = MTT_GATE_WIDTH(gamma, tf->S, 0);
         wy = MTT_GATE_WIDTH(gamma, tf->S, 2);
 #if MTT_WITH_IMM

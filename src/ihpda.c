@@ -36,23 +36,66 @@ void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out)
     }
 }
 
+/* Rank 1 is the strongest; equal intensities: lower index ranks stronger
+ * (ALGORITHMS.md §7.1). */
+static uint16_t cand_rank(const mtt_cand *c, uint16_t m, uint16_t i)
+{
+    uint16_t rank = 1, j;
+    for (j = 0; j < m; ++j) {
+        if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
+            ++rank;
+        }
+    }
+    return rank;
+}
+
+#ifdef MTT_REAL_FIXED
+/* The fixed-point build: the same row with lambda_j multiplied through,
+ * D = lambda_j L_j = X + (1 - PD PG) lambda_j + PD PG (1 - P_r) m / V_G
+ * with X = PD PG m p_j P_r, so beta_j = X / D and L_j = D / lambda_j.  The
+ * MMR reads beta alone and the update only the assigned pair's L_j, so L
+ * holds D here and the quotient by lambda_j is taken where L is read
+ * (MTT_PAIR_L, update.c): one quotient per candidate and m / V_G once per
+ * row, instead of three quotients per candidate (docs/FIXED_POINT.md,
+ * cost measures).  A ratio
+ * times a probability (at most 1) cannot overflow, so those products are
+ * the fast Q30 multiply (0.5007 unit instead of 0.5); 1/m once per row. */
+#define MULQ_RP(a, b) mtt_fx_mulq30((a), (b))
 void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
                      const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out)
 {
     const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
     const mtt_real fm = MTT_CNT(m);
-    uint16_t i, j;
+    const mtt_real pdpg_m = MTT_MUL_PC(pdpg, fm);                   /* count */
+    const mtt_ratio z = MULQ_RP(MTT_DIV_CR(fm, vg), pdpg);           /* PD PG m / V_G */
+    const mtt_prob pr1 = (prank != NULL) ? MTT_ZERO : MTT_DIV_P(MTT_CNT(1), fm); /* P_r without ranks */
+    uint16_t i;
+    for (i = 0; i < m; ++i) {
+        mtt_prob pr;
+        mtt_ratio X, D;
+        const uint16_t rank = cand_rank(c, m, i);
+        if (rank_out != NULL) {
+            rank_out[i] = (uint8_t)rank;
+        }
+        pr = (prank != NULL) ? prank[rank - 1u] : pr1;
+        X = MULQ_RP(MTT_MUL_CR(pdpg_m, c[i].p), pr);
+        D = MTT_ADDS(MTT_ADDS(X, MULQ_RP(c[i].lam, MTT_SUB(MTT_P(1.0), pdpg))), MULQ_RP(z, MTT_SUB(MTT_P(1.0), pr)));
+        L[i] = D; /* lambda_j L_j: divided where it is read (MTT_PAIR_L) */
+        beta[i] = MTT_DIV_P(X, D);
+    }
+}
+#undef MULQ_RP
+#else
+void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
+                     const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out)
+{
+    const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
+    const mtt_real fm = MTT_CNT(m);
+    uint16_t i;
     for (i = 0; i < m; ++i) {
         mtt_prob pr;
         mtt_ratio A, C;
-        uint16_t rank = 1;
-        /* Rank 1 is the strongest; equal intensities: lower index ranks
-         * stronger (ALGORITHMS.md §7.1). */
-        for (j = 0; j < m; ++j) {
-            if (c[j].amp > c[i].amp || (c[j].amp == c[i].amp && c[j].idx < c[i].idx)) {
-                ++rank;
-            }
-        }
+        const uint16_t rank = cand_rank(c, m, i);
         if (rank_out != NULL) {
             rank_out[i] = (uint8_t)rank;
         }
@@ -65,6 +108,7 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
         beta[i] = MTT_DIV_P(A, L[i]);
     }
 }
+#endif
 
 #if MTT_WITH_CONTEST
 mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a)

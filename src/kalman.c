@@ -70,9 +70,7 @@ static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SL
     }
     *det = d;
     MTT_SI_EXP(Si, S, d);
-    Si[0] = MTT_DIV_SI(S[2], d, S, Si);
-    Si[1] = MTT_DIV_SI(-S[1], d, S, Si);
-    Si[2] = MTT_DIV_SI(S[0], d, S, Si);
+    MTT_SI_SET(Si, S, d); /* adj(S) / det S */
     for (i = 0; i < n; ++i) {
         K[i][0] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[0]), MTT_MUL_K(Pp[i][1], Si[1]));
         K[i][1] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[1]), MTT_MUL_K(Pp[i][1], Si[2]));
@@ -100,15 +98,26 @@ mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny)
 }
 
 #ifdef MTT_REAL_FIXED
-/* The fixed-point build (docs/FIXED_POINT.md §2, §3): the same formulas as
- * the float text below, in block floating point.  Every intermediate block
- * (the normalised innovations, the spread, M, A, A Pp, P_c, K M K') is a set
- * of int32 mantissas with one exponent, chosen from the block's inputs so
- * that each product is one mtt_fx_mulq at shift 30 and each sum a plain
- * add (the bounds are noted at each step); the three PSD terms of P are
- * aligned to one exponent by their measured sizes, then P is renormalised.
- * Pp is as mtt_kalman_predict leaves it (largest mantissa below 2^28), K and
- * S^-1 as mtt_kalman_innov leaves them. */
+/* The fixed-point build (docs/FIXED_POINT.md §2, §3): the float text's
+ * update below in block floating point, arranged for fewer products.
+ * Every intermediate block is a set of int32 mantissas with one exponent,
+ * chosen from the block's inputs so that each product is one mtt_fx_mulq
+ * at shift 30 and each sum a plain add (the bounds are noted at each
+ * step).  With P_c = (I - K H) Pp (equal to the Joseph form for the gain
+ * K = Pp H' S^-1 that mtt_kalman_innov made),
+ *   beta0 Pp + (1 - beta0) P_c = G Pp on rows 0, 1 (all columns), with
+ *     G = beta0 I + (1 - beta0) R S^-1: I - K H's position block is
+ *     R S^-1 exactly (S = Pp_pos + R), so nothing cancels there;
+ *   Pp - (1 - beta0) K_v Pp_pos,v on the velocity block (rows and columns
+ *     2, 3): at least the Schur complement of Pp's position block, the
+ *     conditional velocity variance, so it cancels only as much as velocity
+ *     is predicted by position;
+ * plus the spread term K sp K' (sp = sum beta nu nu' - nu_c nu_c', no R:
+ * the K R K' of the Joseph form is in P_c), which with one measurement is
+ * beta (1 - beta) q q', q = K nu.  Each of the two terms is positive
+ * semi-definite; they are aligned by their measured sizes, then P is
+ * renormalised.  Pp is as mtt_kalman_predict leaves it (largest mantissa
+ * below 2^28), K and S^-1 as mtt_kalman_innov leaves them. */
 
 #define or_abs(v, n) mtt_fx_or_abs((v), (n))
 #define MULQ(a, b) mtt_fx_mulq30((a), (b))
@@ -117,16 +126,14 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
                   const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                   mtt_real beta0, mtt_state x, mtt_cov P)
 {
-    int32_t AP[MTT_MAX_STATE][MTT_MAX_STATE];
-    int32_t A[MTT_MAX_STATE][2], Kn[MTT_MAX_STATE][2];
-    /* the upper triangles of the three terms */
-    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t2[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
-    int32_t t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
-    int32_t Rn[3], M[3], sp[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
+    int32_t Kn[MTT_MAX_STATE][2], G[2][2], V[MTT_MAX_STATE][2];
+    /* the upper triangles of the two terms */
+    int32_t t1[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2], t3[MTT_MAX_STATE * (MTT_MAX_STATE + 1) / 2];
+    int32_t Rn[3], M[3] = {0, 0, 0}, cx = 0, cy = 0, bsum = 0;
     const int32_t w = MTT_P(1.0) - beta0;
     const int eP = MTT_COV_E(Pp);
     uint32_t u = 0u;
-    int s, eK, eR, eSp, eM, eAp, eA, iA, E1, E2, E3, E, i, k, c;
+    int s, eK, eR, eG, eV, eM, E1, E2, E3, E, i, k, c;
     uint16_t j;
     if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
         return; /* not a model of motion.h (folded away for a constant n) */
@@ -136,28 +143,11 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         u |= or_abs(nu[j], 2);
     }
     s = -mtt_fx_top_exp(0, u, 28);
-    for (j = 0; j < m; ++j) {
+    for (j = 0; j < m && m != 1u; ++j) { /* one measurement: x from q below */
         cx += MULQ(beta[j], mtt_fx_shift(nu[j][0], s));
         cy += MULQ(beta[j], mtt_fx_shift(nu[j][1], s));
         bsum += beta[j];
     }
-    /* The spread as a sum of PSD terms (see the float text): each term
-     * below 2^28, their beta-weighted sum too; exponent 30 - 2 (F + s). */
-    for (j = 0; j < m; ++j) {
-        const int32_t dx = mtt_fx_shift(nu[j][0], s) - cx, dy = mtt_fx_shift(nu[j][1], s) - cy;
-        const int32_t bx = MULQ(beta[j], dx);
-        sp[0] += MULQ(bx, dx);
-        sp[1] += MULQ(bx, dy);
-        sp[2] += MULQ(MULQ(beta[j], dy), dy);
-    }
-    bsum = MTT_P(1.0) - bsum;
-    if (bsum > 0) {
-        const int32_t bx = MULQ(bsum, cx);
-        sp[0] += MULQ(bx, cx);
-        sp[1] += MULQ(bx, cy);
-        sp[2] += MULQ(MULQ(bsum, cy), cy);
-    }
-    eSp = 30 - 2 * (MTT_FX_POS_FRAC + s);
     /* K to 29 bits (its exponent eK): the state moves by K nu_c. */
     u = 0u;
     for (i = 0; i < n; ++i) {
@@ -169,82 +159,137 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
         Kn[i][0] = mtt_fx_shift(K[i][0], -k);
         Kn[i][1] = mtt_fx_shift(K[i][1], -k);
         /* |K| < 2^29, |nu_c| < 2^28 + m: the sum below 2^28 */
-        x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
-                                         30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
+        if (m != 1u) {
+            x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(Kn[i][0], cx) + MULQ(Kn[i][1], cy),
+                                             30 + eK - MTT_FX_POS_FRAC - s, -MTT_FX_POS_FRAC));
+        }
     }
-    /* R to 29 bits (exponent eR); M = (1 - beta0) R + spread at the
-     * exponent where the larger of the two has 29 bits: |M| < 2^30. */
+    /* The spread term K sp K' at E3, each entry below 2^29. */
+    c = 0;
+    if (m == 1u) {
+        /* beta (1 - beta) q q' with q = K nu (below 2^28, then on 29 bits:
+         * exponent eM) and 4 beta (1 - beta) <= 1 in Q30 */
+        int32_t q[MTT_MAX_STATE];
+        const int32_t b4 = MULQ(beta[0], MTT_P(1.0) - beta[0]) * 4;
+        const int32_t nx = mtt_fx_shift(nu[0][0], s), ny = mtt_fx_shift(nu[0][1], s);
+        eM = eK - MTT_FX_POS_FRAC - s + 30;
+        for (i = 0; i < n; ++i) {
+            q[i] = MULQ(Kn[i][0], nx) + MULQ(Kn[i][1], ny);
+            /* the state moves by beta q */
+            x[i] = MTT_ADDS(xp[i], mtt_fx_at(MULQ(beta[0], q[i]), eM, -MTT_FX_POS_FRAC));
+        }
+        k = mtt_fx_top_exp(0, or_abs(q, n), 29);
+        eM += k;
+        for (i = 0; i < n; ++i) {
+            q[i] = mtt_fx_shift(q[i], -k);
+        }
+        for (i = 0; i < n; ++i) {
+            const int32_t bq = MULQ(b4, q[i]);
+            for (k = i; k < n; ++k) {
+                t3[c++] = MULQ(bq, q[k]);
+            }
+        }
+        E3 = 2 * eM + 28;
+    } else {
+        /* The spread as a sum of PSD terms (see the float text): each term
+         * below 2^28, their beta-weighted sum too; exponent 30 - 2 (F + s);
+         * then on 29 bits (exponent eM). */
+        for (j = 0; j < m; ++j) {
+            const int32_t dx = mtt_fx_shift(nu[j][0], s) - cx, dy = mtt_fx_shift(nu[j][1], s) - cy;
+            const int32_t bx = MULQ(beta[j], dx);
+            M[0] += MULQ(bx, dx);
+            M[1] += MULQ(bx, dy);
+            M[2] += MULQ(MULQ(beta[j], dy), dy);
+        }
+        bsum = MTT_P(1.0) - bsum;
+        if (bsum > 0) {
+            const int32_t bx = MULQ(bsum, cx);
+            M[0] += MULQ(bx, cx);
+            M[1] += MULQ(bx, cy);
+            M[2] += MULQ(MULQ(bsum, cy), cy);
+        }
+        k = mtt_fx_top_exp(0, or_abs(M, 3), 29);
+        eM = 30 - 2 * (MTT_FX_POS_FRAC + s) + k;
+        for (c = 0; c < 3; ++c) {
+            M[c] = mtt_fx_shift(M[c], -k);
+        }
+        c = 0;
+        for (i = 0; i < n; ++i) {
+            const int32_t a = MULQ(Kn[i][0], M[0]) + MULQ(Kn[i][1], M[1]);
+            const int32_t b = MULQ(Kn[i][0], M[1]) + MULQ(Kn[i][1], M[2]);
+            for (k = i; k < n; ++k) {
+                t3[c++] = MULQ(a, Kn[k][0]) + MULQ(b, Kn[k][1]);
+            }
+        }
+        E3 = eK + eM + 30 + eK + 30;
+    }
+    /* G = beta0 I + (1 - beta0) R S^-1: R on 29 bits (exponent eR), R S^-1
+     * below 2^28 at eR + e(S^-1) + 30, then G on 29 bits at eG (at least
+     * beta0's: its identity part a right shift). */
     k = mtt_fx_top_exp(0, or_abs(R, 3), 29);
     eR = -MTT_FX_VAR_FRAC + k;
     for (c = 0; c < 3; ++c) {
         Rn[c] = mtt_fx_shift(R[c], -k);
-        M[c] = MULQ(w, Rn[c]);
     }
-    eM = mtt_fx_top_exp(eR, or_abs(M, 3), 29);
-    k = mtt_fx_top_exp(eSp, or_abs(sp, 3), 29);
-    eM = (k > eM) ? k : eM;
-    for (c = 0; c < 3; ++c) {
-        M[c] = mtt_fx_shift(M[c], eR - eM) + mtt_fx_shift(sp[c], eSp - eM);
+    G[0][0] = MULQ(w, MULQ(Rn[0], Si[0]) + MULQ(Rn[1], Si[1]));
+    G[0][1] = MULQ(w, MULQ(Rn[0], Si[1]) + MULQ(Rn[1], Si[2]));
+    G[1][0] = MULQ(w, MULQ(Rn[1], Si[0]) + MULQ(Rn[2], Si[1]));
+    G[1][1] = MULQ(w, MULQ(Rn[1], Si[1]) + MULQ(Rn[2], Si[2]));
+    eR += MTT_SYM_E(Si) + 30;
+    eG = mtt_fx_top_exp(eR, or_abs(G[0], 2) | or_abs(G[1], 2), 29);
+    k = mtt_fx_top_exp(-MTT_FX_PROB_FRAC, (uint32_t)beta0, 29);
+    eG = (k > eG) ? k : eG;
+    for (i = 0; i < 2; ++i) {
+        for (k = 0; k < 2; ++k) {
+            G[i][k] = mtt_fx_shift(G[i][k], eR - eG) + ((i == k) ? mtt_fx_shift(beta0, -MTT_FX_PROB_FRAC - eG) : 0);
+        }
     }
-    /* A = I - K H: its position block R S^-1 (each entry below 2^28 at
-     * eAp), its other rows -K; one exponent eA (largest on 29 bits, at
-     * least -30 so that A's identity part, 2^-eA, is a right shift). */
-    eAp = eR + MTT_SYM_E(Si) + 30;
-    A[0][0] = MULQ(Rn[0], Si[0]) + MULQ(Rn[1], Si[1]);
-    A[0][1] = MULQ(Rn[0], Si[1]) + MULQ(Rn[1], Si[2]);
-    A[1][0] = MULQ(Rn[1], Si[0]) + MULQ(Rn[2], Si[1]);
-    A[1][1] = MULQ(Rn[1], Si[1]) + MULQ(Rn[2], Si[2]);
-    eA = mtt_fx_top_exp(eAp, or_abs(A[0], 2) | or_abs(A[1], 2), 29);
+    /* (1 - beta0) K_v on 29 bits at eV >= -30, so that Pp's part, 2^-eV
+     * times the product's unit, is a right shift. */
     u = 0u;
     for (i = MTT_MEAS_DIM; i < n; ++i) {
-        u |= or_abs(Kn[i], 2);
+        V[i][0] = MULQ(w, Kn[i][0]);
+        V[i][1] = MULQ(w, Kn[i][1]);
+        u |= or_abs(V[i], 2);
     }
-    k = mtt_fx_top_exp(eK, u, 29);
-    eA = (k > eA) ? k : eA;
-    eA = (eA < -30) ? -30 : eA;
-    for (i = 0; i < n; ++i) {
-        for (k = 0; k < 2; ++k) {
-            A[i][k] = (i < MTT_MEAS_DIM) ? mtt_fx_shift(A[i][k], eAp - eA) : -mtt_fx_shift(Kn[i][k], eK - eA);
-        }
+    eV = mtt_fx_top_exp(eK, u, 29);
+    eV = (eV < -30) ? -30 : eV;
+    for (i = MTT_MEAS_DIM; i < n; ++i) {
+        V[i][0] = mtt_fx_shift(V[i][0], eK - eV);
+        V[i][1] = mtt_fx_shift(V[i][1], eK - eV);
     }
-    iA = -(eA + 30); /* the identity at A's exponent is 2^30 2^iA, iA <= 0 */
-    /* A Pp at E1 = eA + eP + 30: products below 2^27, the identity part
-     * below 2^28: |AP| < 2^29. */
-    E1 = eA + eP + 30;
-    for (i = 0; i < n; ++i) {
-        for (k = 0; k < n; ++k) {
-            AP[i][k] = MULQ(A[i][0], Pp[0][k]) + MULQ(A[i][1], Pp[1][k]) +
-                       ((i >= MTT_MEAS_DIM) ? mtt_fx_shift(Pp[i][k], iA) : 0);
-        }
-    }
-    /* Upper triangles of the three terms: beta0 Pp (below 2^28 at eP),
-     * (1 - beta0) A Pp A' (below 2^30 at E2), K M K' (below 2^30 at E3). */
-    E2 = E1 + eA + 30;
-    E3 = eK + eM + 30 + eK + 30;
+    /* beta0 Pp + (1 - beta0) P_c: rows 0, 1 at E1 = eG + eP + 30 (|G| <
+     * 2^30, |Pp| < 2^28: below 2^29), the velocity block at E2 = eV + eP
+     * + 30 (Pp's part below 2^28, the products below 2^27 each). */
+    E1 = eG + eP + 30;
+    E2 = eV + eP + 30;
     c = 0;
-    for (i = 0; i < n; ++i) {
-        const int32_t a = MULQ(Kn[i][0], M[0]) + MULQ(Kn[i][1], M[1]);
-        const int32_t b = MULQ(Kn[i][0], M[1]) + MULQ(Kn[i][1], M[2]);
+    u = 0u; /* rows 0, 1 */
+    for (i = 0; i < MTT_MEAS_DIM; ++i) {
         for (k = i; k < n; ++k) {
-            const int32_t pc = MULQ(AP[i][0], A[k][0]) + MULQ(AP[i][1], A[k][1]) +
-                               ((k >= MTT_MEAS_DIM) ? mtt_fx_shift(AP[i][k], iA) : 0);
-            t1[c] = MULQ(beta0, Pp[i][k]);
-            t2[c] = MULQ(w, pc);
-            t3[c] = MULQ(a, Kn[k][0]) + MULQ(b, Kn[k][1]);
+            t1[c] = MULQ(G[i][0], Pp[0][k]) + MULQ(G[i][1], Pp[1][k]);
+            u |= (uint32_t)((t1[c] < 0) ? -t1[c] : t1[c]);
             ++c;
         }
     }
     /* One exponent for the sum: each term below 2^29 there. */
-    E = mtt_fx_top_exp(eP, or_abs(t1, c), 29);
-    k = mtt_fx_top_exp(E2, or_abs(t2, c), 29);
+    E = mtt_fx_top_exp(E1, u, 29);
+    u = 0u; /* the velocity block */
+    for (; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            t1[c] = mtt_fx_shift(Pp[i][k], -(eV + 30)) - MULQ(V[i][0], Pp[0][k]) - MULQ(V[i][1], Pp[1][k]);
+            u |= (uint32_t)((t1[c] < 0) ? -t1[c] : t1[c]);
+            ++c;
+        }
+    }
+    k = mtt_fx_top_exp(E2, u, 29);
     E = (k > E) ? k : E;
     k = mtt_fx_top_exp(E3, or_abs(t3, c), 29);
     E = (k > E) ? k : E;
     c = 0;
     for (i = 0; i < n; ++i) {
         for (k = i; k < n; ++k) {
-            const int32_t v = mtt_fx_shift(t1[c], eP - E) + mtt_fx_shift(t2[c], E2 - E) +
-                              mtt_fx_shift(t3[c], E3 - E);
+            const int32_t v = mtt_fx_shift(t1[c], ((i < MTT_MEAS_DIM) ? E1 : E2) - E) + mtt_fx_shift(t3[c], E3 - E);
             P[i][k] = v;
             P[k][i] = v;
             ++c;
@@ -254,154 +299,169 @@ static void pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const 
     MTT_COV_NORM(P);
 }
 
-/* L D L' without L: E_ij = L_ij d_j, so d_i = A_ii - sum_j E_ij^2 / d_j and
- * E_ij = A_ij - sum_k E_ik E_jk / d_k.  For a positive definite A every
- * such quotient is at most sqrt(A_ii A_jj) (Cauchy-Schwarz on the pivots),
- * so with A normalised to 29 bits nothing leaves the format; one
- * reciprocal per pivot (r_k = 2^rho_k / d_k on 30 bits).  An indefinite A
- * saturates somewhere and fails the pivot test.  a: A's mantissas at 29
- * bits, each row and column i then scaled by 2^t_i so that every diagonal
- * entry has 28 or 29 bits (D A D: the pivot ratios d_i / a_ii do not
- * change, and a block whose variances span many bits keeps the precision
- * of its small ones, as float's per-value exponent does); returns 0, or
- * -1 when a pivot is not positive.  The last pivot's reciprocal only when
- * `last` (the quadratic form needs it, the test not). */
-struct ldl_fx {
-    /* a's lower triangle is overwritten by E (each a_ij is read once, when
-     * E_ij is formed) */
-    int32_t a[MTT_MAX_STATE][MTT_MAX_STATE], d[MTT_MAX_STATE];
-    int32_t r[MTT_MAX_STATE];
-    int rho[MTT_MAX_STATE];
-    int t[MTT_MAX_STATE]; /* a = D A D 2^-ea, D = diag(2^t_i) */
-    int ea;               /* a's exponent */
+/* Fraction-free elimination (no division, no L): the positive-definiteness
+ * test and the quadratic form b' A^-1 b.  A is first scaled D A D, D =
+ * diag(2^t_i), so that every diagonal entry has 29 or 30 bits: the pivot
+ * ratios d_i / a_ii do not change, and a block whose variances span many
+ * bits keeps the precision of its small ones, as float's per-value
+ * exponent does; then |a_ij| <= sqrt(a_ii a_jj) < 2^30 unless A is not
+ * positive semi-definite, which fails at once.  Step k turns the block B =
+ * mu_k S_k (S_k the Schur complement left after k pivots, mu_k > 0 a known
+ * factor, mm 2^em) into p B_ij - B_ik B_jk = mu_k p S_k+1,ij (p = B_kk =
+ * mu_k d_k), renormalised to 30 bits.  Each product has both factors below
+ * 2^30, each difference stays below 2^31; every rounding is 2^-30 of the
+ * block.  Row MTT_STATE_N (the quadratic form's) borders A with D b. */
+struct ff {
+    int32_t a[MTT_MAX_STATE + 1][MTT_MAX_STATE + 1]; /* lower triangle */
+    int32_t mm;                                      /* mu = mm 2^em */
+    int em;
+    int t[MTT_MAX_STATE];
 };
 
-/* a b / d_k, saturated */
-static int32_t over_pivot(const struct ldl_fx *f, int32_t a, int32_t b, int k)
+static int ff_scale(mtt_cov A, struct ff *f)
 {
-    return mtt_fx_mul(MULQ(a, f->r[k]), b, f->rho[k] - 30);
-}
-
-/* E_ik E_jk / d_k (k < j < i) when row i's own quotients E_ik^2 / d_k
- * have left its pivot positive: then both are below a_ii, a_jj < 2^30
- * and so is their geometric mean, and the fast multiply cannot overflow
- * (its shift rho_k - 30 >= 19; below that, the exact one) */
-static int32_t cross(const struct ldl_fx *f, int32_t a, int32_t b, int k)
-{
-    return (f->rho[k] >= 49) ? mtt_fx_mulq(MULQ(a, f->r[k]), b, f->rho[k] - 30) : over_pivot(f, a, b, k);
-}
-
-static int ldl_fx(mtt_cov A, struct ldl_fx *f, int last)
-{
-    uint32_t u = 0u;
-    int i, j, k, sh;
+    int i, j;
     for (i = 0; i < MTT_STATE_N; ++i) {
-        u |= or_abs(A[i], MTT_STATE_N);
-    }
-    if (u == 0u) {
-        return -1;
-    }
-    sh = mtt_fx_top_exp(0, u, 29);
-    f->ea = MTT_COV_E(A) + sh;
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        const int32_t aii = mtt_fx_shift(A[i][i], -sh);
-        if (!(aii > 0)) {
+        if (!(A[i][i] > 0)) {
             return -1;
         }
-        f->t[i] = -mtt_fx_top_exp(0, (uint32_t)aii, 29) / 2;
+        f->t[i] = (30 - (32 - mtt_fx_clz((uint32_t)A[i][i]))) >> 1; /* arithmetic: -1 for 31 bits */
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j <= i; ++j) { /* the lower triangle: A is symmetric */
+        for (j = 0; j <= i; ++j) {
             const int32_t v = A[i][j];
-            const int tt = f->t[i] + f->t[j] - sh;
-            /* |a_ij| <= sqrt(a_ii a_jj) < 2^29 for a positive semi-definite
-             * A; beyond 2^30 it is not, and saturates */
-            f->a[i][j] = (tt <= 0 || ((v < 0) ? -v : v) >> (30 - tt) == 0) ? mtt_fx_shift(v, tt)
-                                                                          : ((v < 0) ? MTT_FX_MIN : MTT_FX_MAX);
+            const int tt = f->t[i] + f->t[j];
+            const int32_t m = (tt > 0 && ((v < 0) ? -v : v) >> (30 - tt) != 0) ? MTT_FX_MAX : mtt_fx_shift(v, tt);
+            if (!(((m < 0) ? -m : m) < ((int32_t)1 << 30))) {
+                return -1;
+            }
+            f->a[i][j] = m;
         }
     }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t di = f->a[i][i];
-        for (j = 0; j < i; ++j) {
-            int32_t v = f->a[i][j];
-            for (k = 0; k < j; ++k) {
-                v = MTT_SUBS(v, cross(f, f->a[i][k], f->a[j][k], k));
-            }
-            f->a[i][j] = v;
-            di = MTT_SUBS(di, over_pivot(f, v, v, j));
-            if (!(di > 0)) {
-                return -1; /* the pivot only decreases from here */
-            }
-        }
-        if (!(di > 0) || !mtt_isfinite(di)) {
-            return -1;
-        }
-        f->d[i] = di;
-        if (i + 1 < MTT_STATE_N || last) {
-            f->rho[i] = 29 + (32 - mtt_fx_clz((uint32_t)di));
-            f->r[i] = mtt_fx_recip(di, f->rho[i]);
-        }
-    }
+    f->mm = (int32_t)1 << 29;
+    f->em = -29;
     return 0;
 }
 
+/* Step k on rows and columns k + 1 .. n - 1 (pivot f->a[k][k] > 0). */
+static void ff_step(struct ff *f, int k, int n)
+{
+    const int32_t p = f->a[k][k];
+    uint32_t u = 0u;
+    int i, j, sh;
+    for (i = k + 1; i < n; ++i) {
+        for (j = k + 1; j <= i; ++j) {
+            const int32_t v = MULQ(p, f->a[i][j]) - MULQ(f->a[i][k], f->a[j][k]);
+            f->a[i][j] = v;
+            u |= (uint32_t)((v < 0) ? -v : v);
+        }
+    }
+    sh = mtt_fx_top_exp(0, u, 30);
+    for (i = k + 1; i < n; ++i) {
+        for (j = k + 1; j <= i; ++j) {
+            f->a[i][j] = mtt_fx_shift(f->a[i][j], -sh);
+        }
+    }
+    /* mu_k+1 = mu_k p 2^(-30 - sh), its mantissa back on 30 bits */
+    f->mm = MULQ(f->mm, p);
+    f->em -= sh;
+    sh = mtt_fx_top_exp(0, (uint32_t)f->mm, 30);
+    f->mm = mtt_fx_shift(f->mm, -sh);
+    f->em += sh;
+}
+
+/* d_k > rel a_kk is p > rel a_kk mu_k: two products. */
 int mtt_cov_ok(mtt_cov P, mtt_real rel)
 {
-    struct ldl_fx f;
-    int i;
+    struct ff f;
+    int32_t ad[MTT_MAX_STATE];
+    const int z = -mtt_fx_top_exp(0, (uint32_t)rel, 30); /* rel on 30 bits */
+    const int32_t reln = mtt_fx_shift(rel, z);
+    int i, k;
     /* d_i / P_ii is scale-free (see the float text); rel in Q30. */
-    if (ldl_fx(P, &f, 0) != 0) {
+    if (!(rel > 0) || ff_scale(P, &f) != 0) {
         return 0;
     }
     for (i = 0; i < MTT_STATE_N; ++i) {
-        if (!(f.d[i] > MULQ(rel, f.a[i][i]))) {
+        ad[i] = f.a[i][i];
+    }
+#if MTT_STATE_N == 4
+    {
+        /* A sufficient test first (the common case): with the states in
+         * the order (x, vx) (y, vy), D P D = blockdiag(Cx, Cy) plus the
+         * cross-axis part E, so lambda_min >= min(det Cx / tr Cx, det Cy /
+         * tr Cy) - sum |E_ij| (a 2 x 2 block's smaller eigenvalue is at
+         * least det / tr; Weyl's inequality with ||E|| <= sum |E_ij|), and
+         * every pivot d_k >= lambda_min.  So when both blocks' det exceeds
+         * (sum |E_ij| + 4 rel + 8 units) times their trace, every d_k >
+         * rel a_kk (a_kk < 1 in Q30): the 8 units cover the roundings of
+         * the scaling and of these products.  Otherwise the elimination
+         * decides. */
+        int32_t(*a)[MTT_MAX_STATE + 1] = f.a;
+        const uint32_t e = (uint32_t)MTT_ABS(a[1][0]) + (uint32_t)MTT_ABS(a[3][0]) + (uint32_t)MTT_ABS(a[2][1]) +
+                           (uint32_t)MTT_ABS(a[3][2]);
+        if (e < ((uint32_t)1 << 29) && rel < ((int32_t)1 << 26)) {
+            const int32_t b = (int32_t)e + 4 * rel + 8;
+            if (MULQ(a[0][0], a[2][2]) - MULQ(a[2][0], a[2][0]) > MULQ(b, a[0][0] + a[2][2]) &&
+                MULQ(a[1][1], a[3][3]) - MULQ(a[3][1], a[3][1]) > MULQ(b, a[1][1] + a[3][3])) {
+                return 1;
+            }
+        }
+    }
+#endif
+    for (k = 0; k < MTT_STATE_N; ++k) {
+        const int32_t p = f.a[k][k];
+        if (!(p > 0)) {
             return 0;
+        }
+        if (k > 0) {
+            /* rel a_kk mu = X 2^(30 + em - z) */
+            const int32_t X = MULQ(MULQ(reln, ad[k]), f.mm);
+            if (!(p > mtt_fx_at(X, 30 + f.em - z, 0))) {
+                return 0;
+            }
+        }
+        if (k + 1 < MTT_STATE_N) {
+            ff_step(&f, k, MTT_STATE_N);
         }
     }
     return 1;
 }
 
+/* b' A^-1 b: A bordered with D b 2^-eb (its largest entry on 29 bits);
+ * after the four steps the corner is mu (0 - (D b)' (D A D)^-1 (D b))
+ * 2^(-2 eb), so with A = its mantissas 2^e(A) and b in the position
+ * format, d2 = -corner / mu 2^(2 eb - e(A) - 2 F): one quotient. */
 int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2)
 {
-    struct ldl_fx f;
-    int32_t y[MTT_MAX_STATE], t[MTT_MAX_STATE];
-    int ex[MTT_MAX_STATE];
-    int32_t acc = 0;
-    int i, k, s, e = -127;
-    if (ldl_fx(A, &f, 1) != 0) {
+    struct ff f;
+    int32_t x;
+    int i, k, eb = -127;
+    if (ff_scale(A, &f) != 0) {
         return -1;
     }
-    /* D b at 2^-(F + s) on 24 bits, so that y = L^-1 D b (|y_i| <= sqrt(d2 d_i))
-     * stays in the format unless the form is far beyond every threshold
-     * (it saturates).  Each y_i^2 / d_i is formed on 29 bits with its own
-     * exponent (relative to 2^(-2 (F + s) - ea)), then the four are summed
-     * at the largest exponent plus two. */
     for (i = 0; i < MTT_STATE_N; ++i) {
-        /* D b: the largest |b_i| 2^t_i on 24 bits */
-        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 24);
-        e = (k > e) ? k : e;
+        k = mtt_fx_top_exp(f.t[i], (uint32_t)((b[i] < 0) ? -b[i] : b[i]), 29);
+        eb = (k > eb) ? k : eb;
     }
-    s = -e;
-    e = -127;
     for (i = 0; i < MTT_STATE_N; ++i) {
-        int32_t v = mtt_fx_shift(b[i], s + f.t[i]), q;
-        int sh;
-        for (k = 0; k < i; ++k) {
-            v = MTT_SUBS(v, over_pivot(&f, f.a[i][k], y[k], k));
+        f.a[MTT_STATE_N][i] = mtt_fx_shift(b[i], f.t[i] - eb);
+    }
+    f.a[MTT_STATE_N][MTT_STATE_N] = 0;
+    for (k = 0; k < MTT_STATE_N; ++k) {
+        if (!(f.a[k][k] > 0)) {
+            return -1;
         }
-        y[i] = v;
-        q = MULQ(v, f.r[i]);
-        sh = mtt_fx_top_exp(0, (uint32_t)((q < 0) ? -q : q), 0) + mtt_fx_top_exp(0, (uint32_t)((v < 0) ? -v : v), 29);
-        sh = (sh < 0) ? 0 : sh;
-        t[i] = mtt_fx_mul(q, v, sh);
-        ex[i] = sh + 30 - f.rho[i];
-        e = (ex[i] > e) ? ex[i] : e;
+        ff_step(&f, k, MTT_STATE_N + 1);
     }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        acc = MTT_ADDS(acc, mtt_fx_at(t[i], ex[i], e + 2));
+    x = -f.a[MTT_STATE_N][MTT_STATE_N];
+    if (!(x > 0)) {
+        *d2 = 0; /* b = 0, or rounding */
+        return 0;
     }
-    /* acc at 2^(e + 2 - 2 (F + s) - ea), returned in Q24 (saturated) */
-    *d2 = mtt_fx_at(acc, e + 2 - 2 * (MTT_FX_POS_FRAC + s) - f.ea, -MTT_FX_D2_FRAC);
+    /* x / mm on 29 or 30 bits (x < 2^31, mm in [2^29, 2^30)), then in Q24 (saturated) */
+    *d2 = mtt_fx_at(mtt_fx_div(x, f.mm, 28), 2 * eb - MTT_COV_E(A) - 2 * MTT_FX_POS_FRAC - f.em - 28,
+                    -MTT_FX_D2_FRAC);
     return 0;
 }
 #undef MULQ

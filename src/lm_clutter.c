@@ -61,13 +61,29 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
             continue;
         }
         /* Pass 1: w_j^s.  The uniform lambda cancels inside Pt (ALGORITHMS.md §8.1). */
-        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-            mtt_pair *pp = &trk->pairs[k];
-            mtt_prob pt = MTT_DIV_P(MTT_MUL_RP(MTT_MUL_PP(pdpg, tf->ex_pred), pp->p), sum);
-            if (pt > pt_max) {
-                pt = pt_max;
+        {
+#ifdef MTT_REAL_FIXED
+            /* Fixed point: PD PG P^ once per track and one reciprocal of
+             * the sum, r = 2^rho / sum on 30 bits (rho = 29 + its bit
+             * length), so Pt = PD PG P^ (p r 2^(30 - rho)) with p r
+             * 2^(30 - rho) <= 2^30 (p <= sum): a product per pair instead
+             * of a quotient. */
+            const mtt_prob c = MTT_MUL_PP(pdpg, tf->ex_pred);
+            const int rho = 29 + (32 - mtt_fx_clz((uint32_t)sum));
+            const int32_t r = (sum > 0) ? mtt_fx_recip(sum, rho) : 0;
+#define LM_PT(p) mtt_fx_mulq30(c, mtt_fx_mul((p), r, rho - 30))
+#else
+#define LM_PT(p) MTT_DIV_P(MTT_MUL_RP(MTT_MUL_PP(pdpg, tf->ex_pred), (p)), sum)
+#endif
+            for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+                mtt_pair *pp = &trk->pairs[k];
+                mtt_prob pt = LM_PT(pp->p);
+                if (pt > pt_max) {
+                    pt = pt_max;
+                }
+                pp->w = MTT_DIV_RP(MTT_MUL_RP(pp->p, pt), MTT_SUB(MTT_P(1.0), pt));
             }
-            pp->w = MTT_DIV_RP(MTT_MUL_RP(pp->p, pt), MTT_SUB(MTT_P(1.0), pt));
+#undef LM_PT
         }
     }
     if (!lm) {

@@ -74,6 +74,8 @@ int32_t mtt_fx_at(int32_t m, int from, int to);
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3]);
 /* Exponent of S^-1 = adj(S) / det with every entry below 2^28 (det > 0). */
 int mtt_fx_si_exp(const int32_t S[MTT_SYM_SLOTS], int32_t det);
+/* S^-1 = adj(S) / det at e(S^-1) (MTT_SYM_E(Si) set): one reciprocal of det. */
+void mtt_fx_si_set(int32_t Si[MTT_SYM_SLOTS], const int32_t S[MTT_SYM_SLOTS], int32_t det);
 /* nu' S^-1 nu in Q24 (saturated) for nu in the position format and S^-1 as
  * mantissas with their exponent (MTT_SYM_E). */
 int32_t mtt_fx_mahal2(const int32_t Si[MTT_SYM_SLOTS], int32_t nx, int32_t ny);
@@ -85,6 +87,9 @@ int32_t mtt_fx_gate_area(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLO
 int32_t mtt_fx_gate_area_peak(int32_t gamma, int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg,
                               int32_t dens, int32_t *peak);
 int32_t mtt_fx_gate_peak(int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t pg, int32_t dens);
+/* The gate's per-frame factors and the per-track area and peak from them. */
+void mtt_fx_gate_consts(int32_t gamma, int32_t pg, int32_t dens, int32_t gc[4]);
+int32_t mtt_fx_gate_area_peak_c(const int32_t gc[4], int32_t det, const int32_t S[MTT_SYM_SLOTS], int32_t *peak);
 int32_t mtt_fx_gate_lik(int32_t peak, int32_t d2);
 int32_t mtt_fx_gate_width(int32_t gamma, const int32_t S[MTT_SYM_SLOTS], int k);
 /* v 2^s: exact for s >= 0 (the caller keeps it below 2^31), rounded to
@@ -145,9 +150,16 @@ void mtt_ihpda_prank(uint16_t m, mtt_ratio rho, mtt_prob *out);
 #define MTT_PRANK_ROW(m) (((size_t)(m) * ((size_t)(m) - 1u)) / 2u)
 /* beta_j and L_j (ALGORITHMS.md §7.3) of the m candidates; prank = P_r(1..m) for
  * this m, or NULL when intensity is not used (P_r = 1/m).  rank_out (may be
- * NULL) receives the 1-based rank of each candidate. */
+ * NULL) receives the 1-based rank of each candidate.  Fixed point: L gets
+ * lambda_j L_j (the quotient by lambda_j where it is read: MTT_PAIR_L). */
 void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *prank,
                      const mtt_cand *c, uint16_t m, mtt_prob *beta, mtt_ratio *L, uint8_t *rank_out);
+/* A pair's IHPDA L_j as the update reads it. */
+#ifdef MTT_REAL_FIXED
+#define MTT_PAIR_L(pp) MTT_DIV_R((pp)->L, (pp)->lam)
+#else
+#define MTT_PAIR_L(pp) ((pp)->L)
+#endif
 /* Compute the IHPDA row of track ti over its gated pairs: with excl_used,
  * pairs whose measurement is used (assigned) are left out, except the pair
  * index `keep`.  Writes pair.beta and pair.L (beta 0 for pairs left out);

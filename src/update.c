@@ -49,7 +49,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     beta[0] = pp->beta;
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, beta,
                    MTT_SUB(MTT_P(1.0), pp->beta), t->x, t->P);
-    t->existence = mtt_existence_update(tf->ex_pred, pp->L);
+    t->existence = mtt_existence_update(tf->ex_pred, MTT_PAIR_L(pp));
     t->meas = (int32_t)ms->src;
 }
 

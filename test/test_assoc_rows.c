@@ -105,19 +105,27 @@ static const double tv5_L[3] = {6.439226139, 6.870114355, 4.68409488};
 static const double tv5_beta[3] = {0.3499423017, 0.7912724307, 0.1716428718};
 static const double tv5_prank[3] = {0.1111111111, 0.7111111111, 0.1777777778};
 
-/* A = PD PG m p P_r / lambda_j: PD PG m to c, times p (quantised to q) to
- * q, times P_r to q, over lambda_j = 1 to q.  C = 1 - PD PG + PD PG (m /
- * (lambda_j lambda V_G)) (1 - P_r): lambda V_G quantised to q and the
- * product to q, the quotient X to q + X 2q / (lambda V_G), two products
- * and the conversion of 1 - PD PG to q each.  beta = A / L to u. */
+/* The fixed build forms D = lambda_j L = X + (1 - PD PG) lambda_j + PD PG
+ * (m / V_G) (1 - P_r) with X = PD PG m p P_r (ihpda.c), and beta = X / D,
+ * L = D / lambda_j; a product by a probability is the fast Q30 multiply,
+ * 0.5007 unit (QM).  X: PD PG m to c (times p), times p (quantised to q)
+ * to q, times P_r to QM, P_r's own 4e-7.  D: X's, (1 - PD PG) lambda_j to
+ * QM, m / V_G with lambda V_G quantised to q and the quotient to q + X
+ * 2q / (lambda V_G), times PD PG to QM, times 1 - P_r to QM.  L = D / 1
+ * to q; beta = X / D to u.  (The fixed build returns D = lambda_j L as L,
+ * divided by lambda_j where the update reads it; lambda_j = 1 here.)  (Float and double: the float text, A = X /
+ * lambda_j, C, L = A + C, beta = A / L, held by the rule of ALGORITHMS.md
+ * §16 by TV_ASSERT_RATIO/PROB, which do not use these.) */
+#define QM (QH * 1.0015)
 static void row_tol(int j, double *tl, double *tb)
 {
     const double pdpg = 0.9 * 0.99, p = tv5_p[j] / LAMBDA, vgr = tv5_vg * LAMBDA;
-    const double A = tv5_beta[j] * tv5_L[j], X = 3.0 / vgr;
-    const double dA = 3.0 * QH + pdpg * 3.0 * tv5_prank[j] * QH + A * 4e-7 / tv5_prank[j] + 3.0 * p * CH;
-    const double dC = 3.0 * QH + pdpg * (1.0 - tv5_prank[j]) * (QH + X * 2.0 * QH / vgr);
-    *tl = dA + dC;
-    *tb = (dA + tv5_beta[j] * (*tl)) / tv5_L[j] + UH;
+    const double X = tv5_beta[j] * tv5_L[j], Xv = 3.0 / vgr;
+    const double dX = QH + QM + pdpg * 3.0 * tv5_prank[j] * QH + X * 4e-7 / tv5_prank[j] + 3.0 * p * CH;
+    const double dY = (1.0 - tv5_prank[j]) * (pdpg * (QH + Xv * 2.0 * QH / vgr) + QM) + QM;
+    const double dD = dX + QM + dY;
+    *tl = dD + QH;
+    *tb = (dX + tv5_beta[j] * dD) / tv5_L[j] + UH;
 }
 
 static void test_tv5_rows(void)
@@ -156,14 +164,18 @@ static const double tv8_lamt[4] = {0.002, 0.005113793921, 0.01197443534, 0.002};
 static const double tv8_ex[2] = {0.8, 0.5};
 
 /* Pt = PD PG P^ p / sum: the numerator to q (plus p's q), the sum of two
- * quantised p to 2q, the quotient to u.  w = p Pt / (1 - Pt): the product
+ * quantised p to 2q, the quotient to u.  (The fixed build forms p r with r
+ * = 1/sum on 30 bits, then times PD PG P^: no Q16 rounding of the
+ * numerator, which the q above covers, and 4 u for r's relative 2^-30, p
+ * r's and the last product's roundings; the formula keeps the larger
+ * count.)  w = p Pt / (1 - Pt): the product
  * to q (plus p's q times Pt and p times dPt), the quotient to q, grown by
  * 1/(1 - Pt) (and w dPt / (1 - Pt) from the denominator). */
 static double w_tol(int k)
 {
     const double p = tv8_p[k] / LAMBDA, ptl = tv8_ptilde[k];
     const double sum = (tv8_p[2 * (k / 2)] + tv8_p[2 * (k / 2) + 1]) / LAMBDA;
-    const double dpt = (QH + QH * 0.891 * tv8_ex[k / 2] + ptl * 2.0 * QH) / sum + UH;
+    const double dpt = (QH + QH * 0.891 * tv8_ex[k / 2] + ptl * 2.0 * QH) / sum + 4.0 * UH;
     const double dnum = QH + ptl * QH + p * dpt;
     const double w = p * ptl / (1.0 - ptl);
     return (dnum + w * dpt) / (1.0 - ptl) + QH;

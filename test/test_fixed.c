@@ -182,6 +182,9 @@ static void test_mulq_fast(void)
             if (s == 30) { /* the Q30 entry: the same result */
                 TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 30), mtt_fx_mulq30(a, b));
             }
+            if (s == 28) { /* the shift-28 entry (S, K): the same result */
+                TEST_ASSERT_EQUAL_INT32(mtt_fx_mulq(a, b, 28), mtt_fx_mulq28(a, b));
+            }
         }
     }
     report("mulq: worst error at s = 30: %.4f ulp (bound 0.5007)", worst[30]);
@@ -305,28 +308,32 @@ static void test_sqrt(void)
     TEST_ASSERT_EQUAL_UINT32(0u, mtt_fx_sqrt(0u, 32));
 }
 
-/* the 16-step root of a 32-bit x: r^2 - r < x <= r^2 + r, every x < 2^20
- * and 10^6 random x up to 2^32 - 1 */
-static void check_sqrt16(uint32_t x)
+/* the 8-step root of x's top 16 bits X = floor(x / 2^16): r^2 - r < X <=
+ * r^2 + r, every X (x = X 2^16 and X 2^16 + 2^16 - 1) and 10^6 random x;
+ * and the gate's bound (r + 1) 2^8 > sqrt(x) for every x >= 2^30 tried */
+static void check_sqrt8(uint32_t x)
 {
-    const uint64_t r = mtt_fx_sqrt16(x);
-    TEST_ASSERT_TRUE((uint64_t)x <= r * r + r);
+    const uint64_t r = mtt_fx_sqrt8(x), X = x >> 16;
+    TEST_ASSERT_TRUE(X <= r * r + r);
     if (r > 0u) {
-        TEST_ASSERT_TRUE((uint64_t)x > r * r - r);
+        TEST_ASSERT_TRUE(X > r * r - r);
+    }
+    if (x >= (1u << 30)) {
+        TEST_ASSERT_TRUE((double)((r + 1u) << 8) > sqrt((double)x));
     }
 }
 
-static void test_sqrt16(void)
+static void test_sqrt8(void)
 {
     long i;
-    for (i = 0; i < (1L << 20); ++i) {
-        check_sqrt16((uint32_t)i);
+    for (i = 0; i < (1L << 16); ++i) {
+        check_sqrt8((uint32_t)i << 16);
+        check_sqrt8(((uint32_t)i << 16) | 0xFFFFu);
     }
     for (i = 0; i < 1000000L; ++i) {
-        check_sqrt16(rnd() >> (rnd() % 32u));
+        check_sqrt8(rnd() >> (rnd() % 32u));
     }
-    check_sqrt16(0xFFFFFFFFu);
-    TEST_ASSERT_EQUAL_UINT32(65536u, mtt_fx_sqrt16(0xFFFFFFFFu));
+    TEST_ASSERT_EQUAL_UINT32(256u, mtt_fx_sqrt8(0xFFFFFFFFu));
 }
 
 /* |m 2^-k - 2^30 exp(-y)| in units of the mantissa (2^-30 2^-k). */
@@ -426,7 +433,7 @@ int main(void)
     RUN_TEST(test_mulq_fast);
     RUN_TEST(test_div);
     RUN_TEST(test_sqrt);
-    RUN_TEST(test_sqrt16);
+    RUN_TEST(test_sqrt8);
     RUN_TEST(test_exp);
     RUN_TEST(test_log);
     return UNITY_END();

@@ -16,7 +16,7 @@
  * the fixed build 2^-28 relative to a covariance block (BFP mantissas on
  * 28 bits) and 2^-F (F = MTT_FX_POS_FRAC) absolute on a position; in
  * float and double the type's epsilon relative.  Per frame the update adds
- * at most e_P = (84 + 8) u T to each entry of P (test_update_q.c counts 84
+ * at most e_P = (88 + 8) u T to each entry of P (test_update_q.c counts 88
  * for the PDA update in units of T, the largest of its three terms; the
  * prediction's alignment, Q, symmetrisation and renormalisation 8 more, in
  * units of the largest entry of P^, taken as T too), and to the state
@@ -30,7 +30,9 @@
  * Phi_h+1, the product of the signed matrices (the filter contracts it,
  * the product of their magnitudes would not), so |dx_k| <= sum_h |M| e_h
  * and |dP_k| <= sum_h |M| E_h |M|' (the Joseph form is first order
- * insensitive to the gain; beta0 P^'s share, carried by F instead, is
+ * insensitive to the gain, and so is the fixed build's P^ - K H P^ form
+ * as a function of P^ when K is made from that P^, as the tracker does;
+ * the gain's own roundings are in the 88; beta0 P^'s share, carried by F instead, is
  * injected again each frame).  The existence: the L of the tracker is
  * a Q16 ratio (three roundings of 2^-17) plus L's change with d^2 (from
  * dx) and d^2's own error (2e-6, docs/FIXED_POINT.md §7), through dP/dL;
@@ -505,7 +507,7 @@ static void ref_step(ref *r, const mtt_params *p, const double z[2])
         T = (t2 > T) ? t2 : T;
         T = (t3 > T) ? t3 : T;
     }
-    eP = (84.0 + 8.0) * UNIT_REL * T;
+    eP = (88.0 + 8.0) * UNIT_REL * T;
     {
         const double siinf = fmax(fabs(Si[0]) + fabs(Si[1]), fabs(Si[1]) + fabs(Si[2]));
         double dS, ex[4], eM[4][4];

@@ -52,6 +52,8 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s);
 int32_t mtt_fx_mulq(int32_t a, int32_t b, int s);
 /* mtt_fx_mulq(a, b, 30) with the shift folded (the same result) */
 int32_t mtt_fx_mulq30(int32_t a, int32_t b);
+/* mtt_fx_mulq(a, b, 28) with the shift folded (S, det S and K) */
+int32_t mtt_fx_mulq28(int32_t a, int32_t b);
 
 /* round(a * 2^s / b), saturated; 0 <= s <= 62.  b = 0 saturates with
  * the sign of a (0 / 0 = 0).  Restoring division of the normalised
@@ -67,9 +69,10 @@ int32_t mtt_fx_recip(int32_t x, int s);
  * 32 steps, no multiply): correctly rounded, error <= 0.5 ulp. */
 uint32_t mtt_fx_sqrt(uint32_t x, int f);
 
-/* round(sqrt(x)) of a 32-bit x: the same digits, 16 steps (a 16-bit root,
- * error <= 0.5; the gate's slice bounds, gate.c). */
-uint32_t mtt_fx_sqrt16(uint32_t x);
+/* round(sqrt(floor(x / 2^16))) of a 32-bit x: the same digits, 8 steps on
+ * x's top 16 bits (an 8-bit root, error <= 0.5; the gate's slice bounds,
+ * gate.c, where (root + 1) 2^8 > sqrt(x) for x >= 2^30). */
+uint32_t mtt_fx_sqrt8(uint32_t x);
 
 /* exp(-y) for y >= 0 given in Q24 (0 <= y < 256), as a mantissa m in
  * [2^29, 2^30] (Q30, (0.5, 1]) and a shift *k >= 0:

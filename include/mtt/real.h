@@ -146,7 +146,7 @@ typedef int32_t mtt_pos;
 #define MTT_SUB(a, b) ((a) - (b))
 #define MTT_ADDS(a, b) mtt_fx_add((a), (b))
 #define MTT_SUBS(a, b) mtt_fx_sub((a), (b))
-#define MTT_MUL_PP(a, b) mtt_fx_mulq((a), (b), MTT_FX_PROB_FRAC)
+#define MTT_MUL_PP(a, b) mtt_fx_mulq30((a), (b)) /* MTT_FX_PROB_FRAC 30 */
 #define MTT_MUL_RP(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_MUL_RR(a, b) mtt_fx_mul((a), (b), MTT_FX_RATIO_FRAC)
 #define MTT_DIV_P(a, b) mtt_fx_div((a), (b), MTT_FX_PROB_FRAC)
@@ -156,8 +156,13 @@ typedef int32_t mtt_pos;
 #define MTT_MUL_PC(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_MUL_CR(a, b) mtt_fx_mul((a), (b), MTT_FX_CNT_FRAC)
 #define MTT_DIV_CR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC + MTT_FX_RATIO_FRAC - MTT_FX_CNT_FRAC)
-#define MTT_CVT_P_C(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_CNT_FRAC)
-#define MTT_CVT_P_R(x) mtt_fx_mul((x), 1, MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
+/* round(x / 2^s), 0 < s < 32, ties away from zero: mtt_fx_mul(x, 1, s)'s
+ * result by a shift (x is evaluated twice: a side-effect-free operand) */
+#define MTT_FX_RSHIFT(x, s)                                                                        \
+    (((x) < 0) ? -(int32_t)(((uint32_t) - (x) + ((uint32_t)1 << ((s) - 1))) >> (s))                \
+               : (int32_t)(((uint32_t)(x) + ((uint32_t)1 << ((s) - 1))) >> (s)))
+#define MTT_CVT_P_C(x) MTT_FX_RSHIFT((x), MTT_FX_PROB_FRAC - MTT_FX_CNT_FRAC)
+#define MTT_CVT_P_R(x) MTT_FX_RSHIFT((x), MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC)
 #define MTT_CVT_R_P(x) mtt_fx_mul((x), (int32_t)1 << (MTT_FX_PROB_FRAC - MTT_FX_RATIO_FRAC), 0)
 
 /* Covariances in block floating point (docs/FIXED_POINT.md §2, Status
@@ -188,9 +193,10 @@ typedef int32_t mtt_pos;
 #define MTT_AT(m, from, to) mtt_fx_at((m), (from), (to))
 #define MTT_S_EXP(Pp, R, S) (MTT_SYM_E(S) = mtt_fx_s_exp((Pp), (R)))
 #define MTT_SI_EXP(Si, S, d) (MTT_SYM_E(Si) = mtt_fx_si_exp((S), (d)))
-#define MTT_MUL_SS(a, b) mtt_fx_mulq((a), (b), 28)
-#define MTT_DIV_SI(a, d, S, Si) mtt_fx_div((a), (d), -MTT_SYM_E(S) - 28 - MTT_SYM_E(Si))
-#define MTT_MUL_K(a, b) mtt_fx_mulq((a), (b), 28)
+#define MTT_MUL_SS(a, b) mtt_fx_mulq28((a), (b))
+/* S^-1 = adj(S) / det S at e(S^-1): one reciprocal of det S, three products */
+#define MTT_SI_SET(Si, S, d) mtt_fx_si_set((Si), (S), (d))
+#define MTT_MUL_K(a, b) mtt_fx_mulq28((a), (b))
 /* d^2 = nu' S^-1 nu (Q24, saturated: a distance beyond 128 is outside
  * every gate): fx_cov.c. */
 #define MTT_MAHAL2(Si, nx, ny) mtt_fx_mahal2((Si), (nx), (ny))
@@ -284,7 +290,7 @@ typedef mtt_real mtt_pos;
 #define MTT_S_EXP(Pp, R, S) ((void)0)
 #define MTT_SI_EXP(Si, S, d) ((void)0)
 #define MTT_MUL_SS(a, b) ((a) * (b))
-#define MTT_DIV_SI(a, d, S, Si) ((a) / (d))
+#define MTT_SI_SET(Si, S, d) ((Si)[0] = (S)[2] / (d), (Si)[1] = (-(S)[1]) / (d), (Si)[2] = (S)[0] / (d))
 #define MTT_MUL_K(a, b) ((a) * (b))
 #define MTT_MAHAL2(Si, nx, ny) ((Si)[0] * (nx) * (nx) + MTT_R(2.0) * (Si)[1] * (nx) * (ny) + (Si)[2] * (ny) * (ny))
 #define MTT_ABS(x) mtt_fabs(x)

@@ -161,7 +161,8 @@ typedef struct mtt_pair {
     mtt_real w;          /* LM weight p * Pt / (1 - Pt) (ALGORITHMS.md §8.2) */
     mtt_real lam;        /* clutter density this track sees for this measurement */
     mtt_real beta;       /* association probability of the current row */
-    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (ALGORITHMS.md §7.3) */
+    mtt_real L;          /* IHPDA likelihood ratio L_j of the current row (ALGORITHMS.md §7.3;
+                          * fixed point: lambda_j L_j, read through MTT_PAIR_L) */
     mtt_real g;          /* amplitude likelihood ratio g_eta (ALGORITHMS.md §7.6); 1 without */
 } mtt_pair;
 
