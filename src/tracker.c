@@ -28,27 +28,23 @@ static void charge(mtt_tracker *trk, mtt_stage s, uint32_t *mark)
     *mark = now;
 }
 
+/* tot += c, counter by counter: mtt_counts holds uint32_t counters only
+ * (mtt.h), so one loop over its words instead of a line per member (a
+ * firmware's .text; docs/FIRMWARE.md).  memcpy reads and writes each word
+ * through its bytes, which C defines for any object. */
+typedef char mtt_counts_words[(sizeof(mtt_counts) % sizeof(uint32_t) == 0u) ? 1 : -1];
 static void add_counts(mtt_counts *tot, const mtt_counts *c)
 {
-    tot->frames += c->frames;
-    tot->meas_in += c->meas_in;
-    tot->meas_bad += c->meas_bad;
-    tot->meas_dropped += c->meas_dropped;
-    tot->pairs += c->pairs;
-    tot->pairs_dropped += c->pairs_dropped;
-    tot->gated_dropped += c->gated_dropped;
-    tot->clusters += c->clusters;
-    tot->births += c->births;
-    tot->births_dropped += c->births_dropped;
-    tot->merges += c->merges;
-    tot->merge_dropped += c->merge_dropped;
-    tot->deletions += c->deletions;
-    tot->numeric_deletions += c->numeric_deletions;
-    tot->confirmations += c->confirmations;
-    tot->assign_fallbacks += c->assign_fallbacks;
-    tot->jpda_fallbacks += c->jpda_fallbacks;
-    tot->splits += c->splits;
-    tot->split_dropped += c->split_dropped;
+    unsigned char *t = (unsigned char *)tot;
+    const unsigned char *s = (const unsigned char *)c;
+    size_t k;
+    for (k = 0; k < sizeof *tot; k += sizeof(uint32_t)) {
+        uint32_t a, b;
+        memcpy(&a, t + k, sizeof a);
+        memcpy(&b, s + k, sizeof b);
+        a += b;
+        memcpy(t + k, &a, sizeof a);
+    }
 }
 
 /* ---- public ---- */
