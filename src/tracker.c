@@ -6,9 +6,10 @@
  * frames modulo 2^32 and R is formed in the variance format; the modes,
  * IMM, split and the estimated clutter density that the build does not
  * hold are refused by mtt_params_check with MTT_ERR_UNSUPPORTED.
- * mtt_tracker_init is mtt_params_prepare (the checks, the gate threshold)
- * and mtt_tracker_load (the state), so a firmware can load a set prepared
- * on the host (docs/FIRMWARE.md). */
+ * mtt_tracker_init does what mtt_params_prepare (the checks, the gate
+ * threshold) and mtt_tracker_load (the state) do together, through one
+ * setup, so a firmware can load a set prepared on the host
+ * (docs/FIRMWARE.md). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -49,9 +50,51 @@ static void add_counts(mtt_counts *tot, const mtt_counts *c)
 
 /* ---- public ---- */
 
-/* The parameter-time work of an initialisation (docs/FIRMWARE.md,
- * "Parameters prepared on the host"): the checks and the gate threshold,
- * whose logarithm a firmware that loads a prepared set does not link. */
+/* The tracker state from checked parameters p, their gate threshold and
+ * the cycle counter: the one setup of mtt_tracker_init and
+ * mtt_tracker_load. */
+static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cycle_fn fn, void *ctx)
+{
+    uint16_t m;
+    memset(trk, 0, sizeof *trk);
+    trk->par = *p;
+    trk->par.cycle_counter = fn;
+    trk->par.cycle_ctx = ctx;
+    trk->gamma = gamma;
+    trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
+    trk->R[1] = MTT_ZERO;
+    trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
+    /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
+    for (m = 1; m <= MTT_MAX_GATED; ++m) {
+        mtt_ihpda_prank(m, p->snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
+    }
+    trk->magic = MTT_MAGIC;
+}
+
+mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_t tracker_size,
+                                    uint32_t config_id)
+{
+    mtt_status st;
+    if (trk == NULL || p == NULL) {
+        return MTT_ERR_NULL;
+    }
+    /* Before anything is read or written: the caller's mtt_tracker and
+     * mtt_params may have another layout than ours. */
+    if (tracker_size != sizeof(mtt_tracker) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
+    }
+    st = mtt_params_check(p, NULL);
+    if (st != MTT_OK) {
+        return st;
+    }
+    setup(trk, p, mtt_gate_gamma(p->pg), p->cycle_counter, p->cycle_ctx);
+    return MTT_OK;
+}
+
+/* The parameter-time work of mtt_tracker_init, for a host to do once
+ * (docs/FIRMWARE.md, "Parameters prepared on the host"): the checks and
+ * the gate threshold, whose logarithm a firmware that loads the result
+ * does not link. */
 mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out)
 {
     mtt_status st;
@@ -75,7 +118,6 @@ mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out)
 mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_prepared *pp, mtt_cycle_fn fn, void *ctx,
                                     size_t tracker_size, uint32_t config_id)
 {
-    uint16_t m;
     if (trk == NULL || pp == NULL) {
         return MTT_ERR_NULL;
     }
@@ -88,41 +130,10 @@ mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_prepared *pp, mt
         return MTT_ERR_CONFIG; /* prepared by a build of another configuration */
     }
     if (pp->mark != MTT_PREPARED_MARK) {
-        return MTT_ERR_PARAM;
+        return MTT_ERR_PARAM; /* not written by mtt_params_prepare */
     }
-    memset(trk, 0, sizeof *trk);
-    trk->par = pp->par;
-    trk->par.cycle_counter = fn;
-    trk->par.cycle_ctx = ctx;
-    trk->gamma = pp->gamma;
-    trk->R[0] = MTT_VAR_OF(pp->par.meas_sigma[0]);
-    trk->R[1] = MTT_ZERO;
-    trk->R[2] = MTT_VAR_OF(pp->par.meas_sigma[1]);
-    /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
-    for (m = 1; m <= MTT_MAX_GATED; ++m) {
-        mtt_ihpda_prank(m, pp->par.snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
-    }
-    trk->magic = MTT_MAGIC;
+    setup(trk, &pp->par, pp->gamma, fn, ctx);
     return MTT_OK;
-}
-
-mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_t tracker_size,
-                                    uint32_t config_id)
-{
-    mtt_prepared pp;
-    mtt_status st;
-    if (trk == NULL || p == NULL) {
-        return MTT_ERR_NULL;
-    }
-    /* Before p is read: as mtt_tracker_load (MTT_ERR_CONFIG first). */
-    if (tracker_size != sizeof(mtt_tracker) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
-        return MTT_ERR_CONFIG;
-    }
-    st = mtt_params_prepare(p, &pp);
-    if (st != MTT_OK) {
-        return st;
-    }
-    return mtt_tracker_load_checked(trk, &pp, p->cycle_counter, p->cycle_ctx, tracker_size, config_id);
 }
 
 mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, size_t n)

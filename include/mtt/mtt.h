@@ -381,8 +381,8 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_p
 
 /** Check p (as mtt_params_check) and prepare it for mtt_tracker_load:
  *  out receives p (its cycle_counter and cycle_ctx NULL), the gate
- *  threshold, the mark and this build's MTT_CONFIG_ID.  mtt_tracker_init is
- *  mtt_params_prepare followed by mtt_tracker_load.
+ *  threshold, the mark and this build's MTT_CONFIG_ID.  mtt_tracker_init
+ *  gives the tracker that mtt_params_prepare and mtt_tracker_load give.
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
  *          mtt_params_check.  On error out is unchanged. */
 MTT_MUST_CHECK mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out);
