@@ -90,6 +90,13 @@ figures() {
   "${FWCHECK[@]}" size --label "$preset" --size arm-none-eabi-size --nm arm-none-eabi-nm \
     --lib "$b/firmware/mtt-fw-size-lib.elf" --base "$b/firmware/mtt-fw-size-base.elf" \
     --archive "$b/libmtt.a" --text-limit 16384 || return 1
+  # the fixed-point build loads parameters prepared on the host; the same
+  # figure with the on-target parameter path (mtt_params_check, ... in the image)
+  if [[ -f "$b/firmware/mtt-fw-size-params.elf" ]]; then
+    "${FWCHECK[@]}" size --label "$preset (on-target parameter path)" --size arm-none-eabi-size \
+      --nm arm-none-eabi-nm --lib "$b/firmware/mtt-fw-size-params.elf" \
+      --base "$b/firmware/mtt-fw-size-base.elf" || return 1
+  fi
   # -flto: the call graph of the size image's link (size_main.c stays out
   # of it, so mtt_tracker_step is a function of its own there)
   local lto=()
