@@ -1,6 +1,7 @@
 /* cli/mtt_track.c - mtt-track: run the mtt tracker over a detections file.
  *
  *   mtt-track --config S.json --detections D.det.csv --tracks T.tracks.csv
+ *   mtt-track --config S.json --prepared-c P.h
  *
  * Formats and settings keys: docs/FORMATS.md.  Both inputs are read and validated
  * whole before anything is written; the tracks go to T.tracks.csv.tmp.<pid>
@@ -33,6 +34,7 @@
 static const char usage_text[] =
     "Usage: " PROG " --config SETTINGS.json --detections RUN.det.csv --tracks RUN.tracks.csv\n"
     "                 [--tentative | --confirmed-only] [--stats]\n"
+    "       " PROG " --config SETTINGS.json --prepared-c PARAMS.h\n"
     "       " PROG " --help | --version | --list-settings\n"
     "\n"
     "Run the mtt multi-target tracker over every scan of a detections file and\n"
@@ -54,6 +56,9 @@ static const char usage_text[] =
     "  --version           print the version and exit\n"
     "  --list-settings     print the settings keys (key, type, range, default,\n"
     "                      meaning) as a Markdown table and exit\n"
+    "  --prepared-c FILE   instead of running: write the settings, checked and\n"
+    "                      prepared (mtt_params_prepare), as C for a firmware's\n"
+    "                      mtt_tracker_load (a constant named mtt_fw_prepared)\n"
     "\n"
     "A value may also be given as --option=VALUE.  Each scan runs at its time\n"
     "counted from the first scan's (the tracker uses only time differences), so\n"
@@ -69,7 +74,7 @@ static const char usage_text[] =
     "existing FILE is left unchanged.\n";
 
 typedef struct options {
-    const char *config, *detections, *tracks;
+    const char *config, *detections, *tracks, *prepared;
     int tentative, confirmed_only, stats;
 } options;
 
@@ -112,7 +117,7 @@ static int usage_error(const char *fmt, ...)
 /* Returns 0 to run, -1 after --help / --version, or EXIT_INPUT. */
 static int parse_args(int argc, char **argv, options *o)
 {
-    static const char *const valued[] = {"--config", "--detections", "--tracks"};
+    static const char *const valued[] = {"--config", "--detections", "--tracks", "--prepared-c"};
     int i;
     size_t k;
 
@@ -134,16 +139,17 @@ static int parse_args(int argc, char **argv, options *o)
     }
     for (i = 1; i < argc; ++i) {
         const char *a = argv[i], *value = NULL;
-        const char **dest[3];
+        const char **dest[4];
         dest[0] = &o->config;
         dest[1] = &o->detections;
         dest[2] = &o->tracks;
-        for (k = 0; k < 3; ++k) {
+        dest[3] = &o->prepared;
+        for (k = 0; k < 4; ++k) {
             size_t len = strlen(valued[k]);
             if (strncmp(a, valued[k], len) == 0 && (a[len] == '\0' || a[len] == '='))
                 break;
         }
-        if (k < 3) {
+        if (k < 4) {
             size_t len = strlen(valued[k]);
             if (a[len] == '=')
                 value = a + len + 1;
@@ -172,6 +178,11 @@ static int parse_args(int argc, char **argv, options *o)
         return usage_error("--tentative and --confirmed-only exclude each other");
     if (o->config == NULL)
         return usage_error("missing option '%s'", "--config");
+    if (o->prepared != NULL) {
+        if (o->detections != NULL || o->tracks != NULL || o->tentative || o->confirmed_only || o->stats)
+            return usage_error("--prepared-c takes --config only");
+        return 0;
+    }
     if (o->detections == NULL)
         return usage_error("missing option '%s'", "--detections");
     if (o->tracks == NULL)
@@ -201,6 +212,36 @@ static int check_distinct(const options *o)
 }
 
 /* ---- running ------------------------------------------------------------ */
+
+/* --prepared-c: the settings, checked and prepared, as C (docs/FIRMWARE.md). */
+static int write_prepared(const options *o)
+{
+    mtt_io_settings settings;
+    mtt_prepared pp;
+    mtt_status st;
+    FILE *f;
+    int rc;
+
+    if ((rc = mtt_io_read_settings(o->config, &settings)) != MTT_IO_OK)
+        return rc;
+    if ((st = mtt_params_prepare(&settings.params, &pp)) != MTT_OK) {
+        /* mtt_params_check passed in the reader: this is not the input's fault */
+        mtt_io_error("%s: mtt_params_prepare failed", o->config);
+        return EXIT_FAIL;
+    }
+    if (settings.n_seeds > 0)
+        fprintf(stderr, "%s: note: %s: initial_tracks are not part of a prepared set\n", PROG,
+                o->config);
+    f = mtt_io_open(o->prepared, "w");
+    if (f == NULL)
+        return EXIT_FAIL;
+    rc = mtt_io_write_prepared(f, &pp, "mtt_fw_prepared") != 0;
+    if (fclose(f) != 0 || rc) {
+        mtt_io_error("%s: write failed", o->prepared);
+        return EXIT_FAIL;
+    }
+    return 0;
+}
 
 static const char *status_text(mtt_status s)
 {
@@ -409,5 +450,5 @@ int main(int argc, char **argv)
 #ifdef SIGHUP
     signal(SIGHUP, on_signal);
 #endif
-    return run(&o);
+    return o.prepared != NULL ? write_prepared(&o) : run(&o);
 }

@@ -19,13 +19,25 @@
  *
  *   IT <id> conf <0|1> x .. ex <existence> mu <mu_0> .. <mu_r-1> hex <8 hex digits x (5 + r)>
  *
- * With FW_IMM 0 the program is the CV example, unchanged.  In the
+ * With FW_IMM 0 the program is the CV example, unchanged.  With
+ * FW_PREPARED 1 it loads parameters prepared on the host (below).  In the
  * fixed-point build (MTT_REAL_FIXED) the T lines end "qhex <position
  * frac> <probability frac>" and the five 32-bit words instead. */
 #include "fw.h"
 
 #ifndef FW_IMM
 #define FW_IMM 0
+#endif
+/* FW_PREPARED 1 (the fixed-point target image): the tracker loads the
+ * parameters that the build prepared on the host (fw_prepared.h, written by
+ * mtt-fw-prepare from fw_params.c) instead of checking them itself; the
+ * host reference initialises from the same fw_params.c, so the comparison
+ * of the two runs also compares the two paths. */
+#ifndef FW_PREPARED
+#define FW_PREPARED 0
+#endif
+#if FW_PREPARED
+#include "fw_prepared.h"
 #endif
 #if FW_IMM
 #if !MTT_WITH_IMM
@@ -162,7 +174,9 @@ static void print_track(const mtt_track_view *v)
 
 int fw_app_run(void)
 {
+#if !FW_PREPARED
     mtt_params par;
+#endif
     mtt_stats st;
     mtt_track_view v;
     scn_state scn;
@@ -170,17 +184,16 @@ int fw_app_run(void)
     int k;
     char *p;
 
-    if (mtt_params_default(&par) != MTT_OK) {
+#if FW_PREPARED
+    /* the parameters prepared on the host (fw_prepared.h): no
+     * mtt_params_check and no logarithm in the image */
+    if (mtt_tracker_load(&trk, &mtt_fw_prepared, fw_cycle_counter, NULL) != MTT_OK) {
+        return fail("load");
+    }
+#else
+    if (fw_params(&par) != 0) {
         return fail("params");
     }
-    par.clutter_density = SCN_CLUTTER_DENSITY;
-#ifdef MTT_REAL_FIXED
-    par.process_psd = MTT_FX_CONST(0.5, MTT_FX_VAR_FRAC);
-    par.vmax = MTT_POS(10.0);
-#else
-    par.process_psd = 0.5f;
-    par.vmax = 10.0f;
-#endif
     par.cycle_counter = fw_cycle_counter; /* NULL on the host */
 #if FW_IMM
     par.motion = MTT_MOTION_IMM;
@@ -192,6 +205,7 @@ int fw_app_run(void)
     if (mtt_tracker_init(&trk, &par) != MTT_OK) {
         return fail("init");
     }
+#endif
     scn_init(&scn, 20240601u);
 
     p = fmt_str(line, FW_TITLE);

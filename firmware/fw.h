@@ -36,6 +36,9 @@ void fw_puts(const char *s);       /* write a NUL-terminated string */
  * 25 MHz SysTick clock; under qemu -icount shift=0 that is 40 instructions. */
 extern const mtt_cycle_fn fw_cycle_counter;
 
+/* ---- fw_params.c: the example's parameters (0, or 1 if the defaults fail) ---- */
+int fw_params(mtt_params *par);
+
 /* ---- scenario.c: the built-in scene ---- */
 #define SCN_FRAMES 80
 #define SCN_TARGETS 5

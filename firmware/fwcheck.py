@@ -10,8 +10,9 @@
                                              run: CV lines F/T, IMM lines IF/IT)
   fwcheck.py size --size SIZE --nm NM --lib E --base E [--archive A]
                                              library .text/.data/.bss in a firmware
-  fwcheck.py stack --build DIR --elf E --objdump OD --src DIR [--root F]
+  fwcheck.py stack --build DIR --elf E --objdump OD --src DIR [--root F] [--lto]
                                              worst-case stack depth of F's call graph
+                                             (--lto: from E's link, -flto builds)
   fwcheck.py insns --out F [--out F2 --imm]  instructions per frame from the icount runs
                                              (--imm: the IMM run's IC lines required)
 
@@ -235,8 +236,13 @@ def cmd_size(a):
         out = subprocess.run([a.size, "-t", a.archive], check=True, capture_output=True,
                              text=True).stdout.splitlines()
         tot = out[-1].split()
-        print(f"{label}: per-object sum of libmtt.a (before --gc-sections, no libm): "
-              f".text {tot[0]} .data {tot[1]} .bss {tot[2]} bytes")
+        if int(tot[0]) == 0 and len(out) > 2:
+            # -flto -fno-fat-lto-objects: the objects hold GCC's IR only
+            print(f"{label}: libmtt.a holds link-time-optimisation IR (no per-object "
+                  f".text): the image difference above is the figure")
+        else:
+            print(f"{label}: per-object sum of libmtt.a (before --gc-sections, no libm): "
+                  f".text {tot[0]} .data {tot[1]} .bss {tot[2]} bytes")
     if a.text_limit and d["text"] > a.text_limit:
         print(f"{label}: note: .text {d['text']} > target {a.text_limit}")
     return 0
@@ -252,17 +258,36 @@ def strip_clone(name):
     return re.sub(r"\.(constprop|isra|part|cold|lto_priv)\.\d+", "", name)
 
 
-def read_ci(build):
-    """Frames and edges from every .ci file of the library's objects."""
-    frames, edges, files = {}, {}, []
-    for root, _, names in os.walk(os.path.join(build, "CMakeFiles", "mtt.dir")):
-        files += [os.path.join(root, n) for n in names if n.endswith(".ci")]
+def read_ci(build, lto_elf=None):
+    """Frames and edges from the .ci files of the library's objects, or with
+    link-time optimisation (lto_elf) from the link's own call graph, the
+    <elf>.ltrans*.ltrans.ci files GCC writes beside the image (the code
+    that is linked: the library's objects hold only GCC's IR then).  Also
+    each node's source file (the label's second line)."""
+    frames, edges, files, src = {}, {}, [], {}
+    if lto_elf:
+        d, base = os.path.split(os.path.abspath(lto_elf))
+        files = [os.path.join(d, n) for n in os.listdir(d)
+                 if n.startswith(base + ".ltrans") and n.endswith(".ltrans.ci")]
+    else:
+        for root, _, names in os.walk(os.path.join(build, "CMakeFiles", "mtt.dir")):
+            files += [os.path.join(root, n) for n in names if n.endswith(".ci")]
+
+    def node_id(title):
+        # ltrans titles are "<tmp>.ltransN.o:<symbol>": the symbol (unique
+        # in the link: GCC suffixes local clashes .lto_priv.N) is the id
+        return title.split(":")[-1] if lto_elf else title
+
     for path in sorted(files):
         with open(path) as f:
             for line in f:
                 m = CI_NODE.match(line)
                 if m:
                     title, label = m.groups()
+                    title = node_id(title)
+                    where = label.split("\\n")
+                    if len(where) > 1:
+                        src[title] = where[1].split(":")[0]
                     s = re.search(r"\\n(\d+) bytes \(([^)]*)\)", label)
                     if s:
                         if "dynamic" in s.group(2) and "bounded" not in s.group(2):
@@ -271,11 +296,15 @@ def read_ci(build):
                     continue
                 m = CI_EDGE.match(line)
                 if m:
-                    edges.setdefault(m.group(1), set()).add(m.group(2))
-    return frames, edges, files
+                    edges.setdefault(node_id(m.group(1)), set()).add(node_id(m.group(2)))
+    if lto_elf:
+        # the library's functions: those compiled from a .c file (not the
+        # <built-in> helper nodes)
+        frames = {t: v for t, v in frames.items() if src.get(t, "").endswith(".c")}
+    return frames, edges, files, src
 
 
-def address_taken(src_dir, names):
+def address_taken(src_dir, names, src=None):
     """Library functions whose address is taken (the candidates of every
     indirect call inside the library): named in the source other than as
     a call or a declaration, i.e. not followed by '('."""
@@ -292,7 +321,8 @@ def address_taken(src_dir, names):
         text = re.sub(r"//[^\n]*", " ", text)
         for m in re.finditer(r"\b([A-Za-z_]\w*)\b(?!\s*\()", text):
             for t in plain.get(m.group(1), []):
-                if t == m.group(1) or t.split(":")[0].endswith("/" + fn):
+                where = (src or {}).get(t) or t.split(":")[0]
+                if t == m.group(1) or where.endswith("/" + fn):
                     taken.add(t)
     return taken
 
@@ -345,12 +375,13 @@ def objdump_functions(objdump, elf):
 
 
 def cmd_stack(a):
-    frames, edges, files = read_ci(a.build)
+    frames, edges, files, src = read_ci(a.build, a.elf if a.lto else None)
     if not files:
-        print("no .ci files (build with -fcallgraph-info=su)")
+        print("no .ci files (build with -fcallgraph-info=su"
+              + ("; with -flto on the link too" if a.lto else "") + ")")
         return 1
     lib_funcs = set(frames)
-    taken = address_taken(a.src, lib_funcs)
+    taken = address_taken(a.src, lib_funcs, src)
     image = objdump_functions(a.objdump, a.elf) if a.elf else {}
     by_plain = {}
     for t in lib_funcs:
@@ -503,6 +534,8 @@ def main():
     p.add_argument("--elf")
     p.add_argument("--objdump", default="arm-none-eabi-objdump")
     p.add_argument("--root", default="mtt_tracker_step")
+    p.add_argument("--lto", action="store_true",
+                   help="link-time optimisation: the call graph of --elf's link (its .ltrans .ci files)")
     p.add_argument("--label")
     p.add_argument("--limit", type=int, default=0)
     p = sub.add_parser("insns")

@@ -114,6 +114,13 @@ mtt_io_num mtt_io_parse_count(const char *s, unsigned long *out);
  *  detection).  Returns 1 when v fits. */
 int mtt_io_to_real(double v, int fmt, mtt_real *out);
 
+/* Write the prepared parameter set pp (mtt_params_prepare) as C: a
+ * definition `static const mtt_prepared <name> = {...};` that a firmware of
+ * the same configuration compiles and hands to mtt_tracker_load
+ * (docs/FIRMWARE.md).  Returns 0, or -1 on a write error or if pp is not a
+ * prepared set. */
+int mtt_io_write_prepared(FILE *f, const mtt_prepared *pp, const char *name);
+
 /** mtt_real of format fmt (MTT_IO_POS, ...) as a double in the user's
  *  units: exact. */
 double mtt_io_from_real(mtt_real r, int fmt);

@@ -11,11 +11,13 @@
 #      too), then prints (instructions: of the CV run and the IMM run)
 #      the figures: library .text/.data/.bss in a firmware, sizeof(mtt_tracker),
 #      worst-case stack of mtt_tracker_step, instructions per frame
-#   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the library of the stages
-#      converted to fixed point; checks: build, no float or double helper,
-#      cppcheck of those stages; prints their .text; once every stage is
-#      converted also the firmware example as in 2 (ctest with the no-float
-#      and no-double-helper checks, the same figures)
+#   3. cortex-m0plus-fixed (docs/FIXED_POINT.md): the fixed-point library,
+#      built with link-time optimisation (-flto), and the firmware example;
+#      checks: build, no float or double helper in the linked images (with
+#      -flto libmtt.a holds GCC's IR, not code: every check and figure is
+#      taken on the images), cppcheck of the fixed-point sources; then as in
+#      2 (ctest with the no-float and no-double-helper checks, the same
+#      figures; the stack from the link's call graph)
 #   4. cppcheck and clang-tidy on src/, float and double (one check each)
 #
 # Ends with "ci-firmware: N passed, M failed" (scripts/dev.sh adds it to its
@@ -88,7 +90,18 @@ figures() {
   "${FWCHECK[@]}" size --label "$preset" --size arm-none-eabi-size --nm arm-none-eabi-nm \
     --lib "$b/firmware/mtt-fw-size-lib.elf" --base "$b/firmware/mtt-fw-size-base.elf" \
     --archive "$b/libmtt.a" --text-limit 16384 || return 1
-  "${FWCHECK[@]}" stack --label "$preset" --build "$b" --src "$ROOT/src" \
+  # the fixed-point build loads parameters prepared on the host; the same
+  # figure with the on-target parameter path (mtt_params_check, ... in the image)
+  if [[ -f "$b/firmware/mtt-fw-size-params.elf" ]]; then
+    "${FWCHECK[@]}" size --label "$preset (on-target parameter path)" --size arm-none-eabi-size \
+      --nm arm-none-eabi-nm --lib "$b/firmware/mtt-fw-size-params.elf" \
+      --base "$b/firmware/mtt-fw-size-base.elf" || return 1
+  fi
+  # -flto: the call graph of the size image's link (size_main.c stays out
+  # of it, so mtt_tracker_step is a function of its own there)
+  local lto=()
+  grep -q '^CMAKE_INTERPROCEDURAL_OPTIMIZATION:BOOL=ON' "$b/CMakeCache.txt" && lto=(--lto)
+  "${FWCHECK[@]}" stack --label "$preset" --build "$b" --src "$ROOT/src" "${lto[@]}" \
     --elf "$b/firmware/mtt-fw-size-lib.elf" --objdump arm-none-eabi-objdump --limit 1024 || return 1
   local fl=()
   [[ "$preset" == "$FIXED_PRESET" ]] && fl=(--float) # no float helper either
@@ -120,19 +133,24 @@ cross() {
 }
 
 # ---------------------------------------------------------------- fixed point
-# The fixed-point build (docs/FIXED_POINT.md).  While the conversion is under
-# way, cortex-m0plus-fixed builds the library of the converted stages only:
-# one check that it builds, one that no float or double helper
-# (__aeabi_f*, __aeabi_d*, libgcc's __*sf*/__*df*) is referenced, one
-# cppcheck of the converted stages in the fixed configuration; its .text is
-# printed (a figure).
+# The fixed-point build (docs/FIXED_POINT.md): cortex-m0plus-fixed, with
+# link-time optimisation.  One check that it builds, one that no float or
+# double helper (__aeabi_f*, __aeabi_d*, libgcc's __*sf*/__*df*) is linked
+# into the images, one cppcheck of the fixed-point sources; then the
+# firmware example's ctest and figures.  The helper check reads the linked
+# images' symbols (defined or not): with -flto -fno-fat-lto-objects the
+# objects of libmtt.a hold GCC's IR, in which a float operation is not yet a
+# call, so `nm -u libmtt.a` would find nothing whatever the code does.
 FIXED_PRESET=cortex-m0plus-fixed
 fixed_helpers() {
-  local lib="$1" found
-  found="$(arm-none-eabi-nm -u "$lib" | awk '{print $NF}' \
-    | grep -E '^__aeabi_[fd]|^__[a-z]+[sd]f[0-9]?$|^__[a-z]+[sd]f[a-z]+[0-9]?$' | sort -u || true)"
+  local elf found=""
+  for elf in "$@"; do
+    [[ -f "$elf" ]] || { say "no image $elf"; return 1; }
+    found+="$(arm-none-eabi-nm "$elf" | awk '{print $NF}' \
+      | grep -E '^__aeabi_[fd]|^__[a-z]+[sd]f[0-9]?$|^__[a-z]+[sd]f[a-z]+[0-9]?$' | sort -u | tr '\n' ' ' || true)"
+  done
   if [[ -n "$found" ]]; then
-    say "float/double helpers referenced: $found"
+    say "float/double helpers linked: $found"
     return 1
   fi
 }
@@ -148,19 +166,19 @@ fixed_cppcheck() {
 }
 fixed() {
   local b="$ROOT/build/$FIXED_PRESET"
-  say "=== $FIXED_PRESET (the converted stages)"
+  say "=== $FIXED_PRESET (fixed point, -flto)"
   if ! { cmake --preset "$FIXED_PRESET" >/dev/null && cmake --build --preset "$FIXED_PRESET"; }; then
     fail "$FIXED_PRESET: configure + build"
     return
   fi
   pass "$FIXED_PRESET: configure + build"
-  check "$FIXED_PRESET: no float or double helper" fixed_helpers "$b/libmtt.a"
+  # the size image references every public function; mtt-fw.elf is the example
+  check "$FIXED_PRESET: no float or double helper in the images" fixed_helpers \
+    "$b/firmware/mtt-fw-size-lib.elf" "$b/firmware/mtt-fw.elf"
   check "$FIXED_PRESET: cppcheck of the converted stages" fixed_cppcheck
-  say "$FIXED_PRESET: libmtt.a .text $(arm-none-eabi-size -t "$b/libmtt.a" | awk 'END {print $1}') bytes"
-  # Once the pipeline is converted (MTT_FIXED_COMPLETE) the firmware example
-  # builds: its ctest (no double and no float helper in the images, the qemu
-  # run, the comparison with the fixed-point host build) and the same figures
-  # as the other presets (.text, stack, busiest frame).
+  # The firmware example: its ctest (no double and no float helper in the
+  # images, the qemu run, the comparison with the fixed-point host build) and
+  # the same figures as the other presets (.text, stack, busiest frame).
   if [[ -f "$b/firmware/mtt-fw.elf" ]]; then
     ctest_checks "$FIXED_PRESET"
     say "--- $FIXED_PRESET figures"

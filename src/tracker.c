@@ -5,7 +5,11 @@
  * In the fixed-point build (docs/FIXED_POINT.md) time is a Q16 count of
  * frames modulo 2^32 and R is formed in the variance format; the modes,
  * IMM, split and the estimated clutter density that the build does not
- * hold are refused by mtt_params_check with MTT_ERR_UNSUPPORTED. */
+ * hold are refused by mtt_params_check with MTT_ERR_UNSUPPORTED.
+ * mtt_tracker_init does what mtt_params_prepare (the checks, the gate
+ * threshold) and mtt_tracker_load (the state) do together, through one
+ * setup, so a firmware can load a set prepared on the host
+ * (docs/FIRMWARE.md). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -25,36 +29,52 @@ static void charge(mtt_tracker *trk, mtt_stage s, uint32_t *mark)
     *mark = now;
 }
 
+/* tot += c, counter by counter: mtt_counts holds uint32_t counters only
+ * (mtt.h), so one loop over its words instead of a line per member (a
+ * firmware's .text; docs/FIRMWARE.md).  memcpy reads and writes each word
+ * through its bytes, which C defines for any object. */
+typedef char mtt_counts_words[(sizeof(mtt_counts) % sizeof(uint32_t) == 0u) ? 1 : -1];
 static void add_counts(mtt_counts *tot, const mtt_counts *c)
 {
-    tot->frames += c->frames;
-    tot->meas_in += c->meas_in;
-    tot->meas_bad += c->meas_bad;
-    tot->meas_dropped += c->meas_dropped;
-    tot->pairs += c->pairs;
-    tot->pairs_dropped += c->pairs_dropped;
-    tot->gated_dropped += c->gated_dropped;
-    tot->clusters += c->clusters;
-    tot->births += c->births;
-    tot->births_dropped += c->births_dropped;
-    tot->merges += c->merges;
-    tot->merge_dropped += c->merge_dropped;
-    tot->deletions += c->deletions;
-    tot->numeric_deletions += c->numeric_deletions;
-    tot->confirmations += c->confirmations;
-    tot->assign_fallbacks += c->assign_fallbacks;
-    tot->jpda_fallbacks += c->jpda_fallbacks;
-    tot->splits += c->splits;
-    tot->split_dropped += c->split_dropped;
+    unsigned char *t = (unsigned char *)tot;
+    const unsigned char *s = (const unsigned char *)c;
+    size_t k;
+    for (k = 0; k < sizeof *tot; k += sizeof(uint32_t)) {
+        uint32_t a, b;
+        memcpy(&a, t + k, sizeof a);
+        memcpy(&b, s + k, sizeof b);
+        a += b;
+        memcpy(t + k, &a, sizeof a);
+    }
 }
 
 /* ---- public ---- */
+
+/* The tracker state from checked parameters p, their gate threshold and
+ * the cycle counter: the one setup of mtt_tracker_init and
+ * mtt_tracker_load. */
+static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cycle_fn fn, void *ctx)
+{
+    uint16_t m;
+    memset(trk, 0, sizeof *trk);
+    trk->par = *p;
+    trk->par.cycle_counter = fn;
+    trk->par.cycle_ctx = ctx;
+    trk->gamma = gamma;
+    trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
+    trk->R[1] = MTT_ZERO;
+    trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
+    /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
+    for (m = 1; m <= MTT_MAX_GATED; ++m) {
+        mtt_ihpda_prank(m, p->snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
+    }
+    trk->magic = MTT_MAGIC;
+}
 
 mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_t tracker_size,
                                     uint32_t config_id)
 {
     mtt_status st;
-    uint16_t m;
     if (trk == NULL || p == NULL) {
         return MTT_ERR_NULL;
     }
@@ -67,17 +87,52 @@ mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_
     if (st != MTT_OK) {
         return st;
     }
-    memset(trk, 0, sizeof *trk);
-    trk->par = *p;
-    trk->gamma = mtt_gate_gamma(p->pg);
-    trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
-    trk->R[1] = MTT_ZERO;
-    trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
-    /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
-    for (m = 1; m <= MTT_MAX_GATED; ++m) {
-        mtt_ihpda_prank(m, p->snr_rho, &trk->prank[MTT_PRANK_ROW(m)]);
+    setup(trk, p, mtt_gate_gamma(p->pg), p->cycle_counter, p->cycle_ctx);
+    return MTT_OK;
+}
+
+/* The parameter-time work of mtt_tracker_init, for a host to do once
+ * (docs/FIRMWARE.md, "Parameters prepared on the host"): the checks and
+ * the gate threshold, whose logarithm a firmware that loads the result
+ * does not link. */
+mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out)
+{
+    mtt_status st;
+    if (p == NULL || out == NULL) {
+        return MTT_ERR_NULL;
     }
-    trk->magic = MTT_MAGIC;
+    st = mtt_params_check(p, NULL);
+    if (st != MTT_OK) {
+        return st;
+    }
+    memset(out, 0, sizeof *out);
+    out->mark = MTT_PREPARED_MARK;
+    out->config_id = (uint32_t)(MTT_CONFIG_ID);
+    out->par = *p;
+    out->par.cycle_counter = NULL;
+    out->par.cycle_ctx = NULL;
+    out->gamma = mtt_gate_gamma(p->pg);
+    return MTT_OK;
+}
+
+mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_prepared *pp, mtt_cycle_fn fn, void *ctx,
+                                    size_t tracker_size, uint32_t config_id)
+{
+    if (trk == NULL || pp == NULL) {
+        return MTT_ERR_NULL;
+    }
+    /* Before anything is read or written: the caller's mtt_tracker and
+     * mtt_prepared may have another layout than ours. */
+    if (tracker_size != sizeof(mtt_tracker) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
+    }
+    if (pp->config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG; /* prepared by a build of another configuration */
+    }
+    if (pp->mark != MTT_PREPARED_MARK) {
+        return MTT_ERR_PARAM; /* not written by mtt_params_prepare */
+    }
+    setup(trk, &pp->par, pp->gamma, fn, ctx);
     return MTT_OK;
 }
 

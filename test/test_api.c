@@ -182,39 +182,46 @@ void test_full_table(void)
     TEST_ASSERT_EQUAL_UINT32(1u, st.last.births_dropped);
 }
 
-/* Same input, same output: two trackers fed identically end bit-identical. */
-void test_deterministic(void)
+/* Feed a and b the same `frames` frames of 20 detections each and require
+ * the same live tracks, view for view (every byte of a view is defined). */
+static void step_both_and_compare(mtt_tracker *a, mtt_tracker *b, int frames)
 {
-    static mtt_tracker a, b;
-    mtt_params p;
     mtt_meas m[20];
     mtt_track_view va, vb;
-    mtt_stats sa, sb;
     size_t na, nb, i;
     int k, j;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.clutter_density = MTT_DENS(1e-3);
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&a, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&b, &p));
-    for (k = 0; k < 30; ++k) {
+    for (k = 0; k < frames; ++k) {
         for (j = 0; j < 20; ++j) {
             unsigned h = (unsigned)(k * 131 + j * 71) % 997u;
             m[j] = sim_meas((mtt_real)h * MTT_POS(0.3) + (mtt_real)k * MTT_POS(1.0),
                             (mtt_real)(j * 11) * MTT_POS(1.0), (mtt_real)(h % 13u) * MTT_AMP(1.0),
                             (int)(h % 3u != 0u));
         }
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&a, (mtt_real)k * MTT_TIME(1.0), m, 20));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&b, (mtt_real)k * MTT_TIME(1.0), m, 20));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(a, (mtt_real)k * MTT_TIME(1.0), m, 20));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(b, (mtt_real)k * MTT_TIME(1.0), m, 20));
     }
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&a, &na));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&b, &nb));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(a, &na));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(b, &nb));
     TEST_ASSERT_TRUE(na > 0u);
     TEST_ASSERT_EQUAL_UINT((unsigned)na, (unsigned)nb);
     for (i = 0; i < na; ++i) {
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&a, i, &va));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&b, i, &vb));
-        TEST_ASSERT_EQUAL_MEMORY(&va, &vb, sizeof va); /* every byte of a view is defined */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(a, i, &va));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(b, i, &vb));
+        TEST_ASSERT_EQUAL_MEMORY(&va, &vb, sizeof va);
     }
+}
+
+/* Same input, same output: two trackers fed identically end bit-identical. */
+void test_deterministic(void)
+{
+    static mtt_tracker a, b;
+    mtt_params p;
+    mtt_stats sa, sb;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_DENS(1e-3);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&a, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&b, &p));
+    step_both_and_compare(&a, &b, 30);
     memset(&sa, 0, sizeof sa);
     memset(&sb, 0, sizeof sb);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&a, &sa));
@@ -272,6 +279,58 @@ static void test_init_refuses_other_configuration(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&t, &p));
 }
 
+/* mtt_params_prepare + mtt_tracker_load (a firmware's path, docs/FIRMWARE.md)
+ * give the tracker mtt_tracker_init gives, byte for byte, and the same
+ * frames; a set that is not prepared, or prepared by another configuration,
+ * is refused before anything is written, and a bad parameter set leaves
+ * the prepared set unchanged. */
+void test_prepare_and_load(void)
+{
+    static mtt_tracker a, b;
+    mtt_params p;
+    mtt_prepared pp, keep;
+    size_t i;
+    const unsigned char *bb = (const unsigned char *)&b;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.clutter_density = MTT_DENS(1e-3);
+    p.snr_rho = MTT_RATIO(2.0); /* a rank table that is not uniform */
+    p.cycle_counter = tick;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&a, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_prepare(&p, &pp));
+    TEST_ASSERT_EQUAL_HEX32(MTT_PREPARED_MARK, pp.mark);
+    TEST_ASSERT_EQUAL_HEX32((uint32_t)(MTT_CONFIG_ID), pp.config_id);
+    TEST_ASSERT_NULL(pp.par.cycle_counter);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_load(&b, &pp, tick, NULL));
+    TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
+    step_both_and_compare(&a, &b, 20);
+    /* refusals: nothing written */
+    memset(&b, 0xa5, sizeof b);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_load(&b, NULL, NULL, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_load(NULL, &pp, NULL, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_load_checked(&b, &pp, NULL, NULL, sizeof b - 4u, (uint32_t)(MTT_CONFIG_ID)));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG,
+                          mtt_tracker_load_checked(&b, &pp, NULL, NULL, sizeof b, (uint32_t)(MTT_CONFIG_ID) ^ 1u));
+    keep = pp;
+    pp.config_id ^= 1u; /* prepared by a build of another configuration */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_CONFIG, mtt_tracker_load(&b, &pp, NULL, NULL));
+    pp = keep;
+    pp.mark = 0u; /* not a prepared set */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_load(&b, &pp, NULL, NULL));
+    for (i = 0; i < sizeof b; ++i) {
+        TEST_ASSERT_EQUAL_HEX8(0xa5, bb[i]);
+    }
+    /* a bad parameter set: the status of mtt_params_check, out unchanged */
+    pp = keep;
+    p.pd = MTT_P(0.0) - 1;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_prepare(&p, &pp));
+    TEST_ASSERT_EQUAL_MEMORY(&keep, &pp, sizeof pp);
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_params_prepare(NULL, &pp));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_params_prepare(&p, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -283,5 +342,6 @@ int main(void)
     RUN_TEST(test_deterministic);
     RUN_TEST(test_cycle_counter);
     RUN_TEST(test_init_refuses_other_configuration);
+    RUN_TEST(test_prepare_and_load);
     return UNITY_END();
 }

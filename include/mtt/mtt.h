@@ -291,6 +291,26 @@ typedef struct mtt_stats {
     uint32_t max_cluster_tracks;  /**< largest cluster of the last frame (tracks) */
 } mtt_stats;
 
+/** A parameter set prepared for mtt_tracker_load (docs/FIRMWARE.md,
+ *  "Parameters prepared on the host"): mtt_params_prepare checks it and
+ *  computes what depends only on it, so that a firmware loads it without
+ *  linking the checks, their range table or the logarithm (about 1.6 KiB of
+ *  the fixed-point M0+ image).  A firmware holds it as a constant, written
+ *  as C by the host (mtt_io_write_prepared, mtt-track --prepared-c) from a
+ *  build of the same configuration.  Fill it only with mtt_params_prepare or
+ *  that C text: mtt_tracker_load checks its mark and configuration, not the
+ *  values again. */
+typedef struct mtt_prepared {
+    uint32_t mark;      /**< MTT_PREPARED_MARK: written by mtt_params_prepare */
+    uint32_t config_id; /**< MTT_CONFIG_ID of the build that prepared it */
+    mtt_params par;     /**< the checked parameters (cycle_counter and cycle_ctx NULL:
+                             mtt_tracker_load takes them) */
+    mtt_real gamma;     /**< the gate threshold -2 ln(1 - pg) (ALGORITHMS.md §4) */
+} mtt_prepared;
+
+/** mtt_prepared.mark of a prepared set ("MTTP"). */
+#define MTT_PREPARED_MARK 0x5054544du
+
 /* The tracker state (mtt_tracker), so that callers can allocate it.  Its
  * layout is not API: use the functions. */
 #include "mtt/state.h"
@@ -357,6 +377,33 @@ MTT_MUST_CHECK mtt_status mtt_params_get(const mtt_params *p, const char *key, d
 /** mtt_tracker_init with the caller's size of mtt_tracker and configuration
  *  identity given explicitly; call it through the macro. */
 MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p,
+                                                   size_t tracker_size, uint32_t config_id);
+
+/** Check p (as mtt_params_check) and prepare it for mtt_tracker_load:
+ *  out receives p (its cycle_counter and cycle_ctx NULL), the gate
+ *  threshold, the mark and this build's MTT_CONFIG_ID.  mtt_tracker_init
+ *  gives the tracker that mtt_params_prepare and mtt_tracker_load give.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
+ *          mtt_params_check.  On error out is unchanged. */
+MTT_MUST_CHECK mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out);
+
+/** Initialise (or reset) a tracker from a prepared parameter set, with the
+ *  cycle counter fn (may be NULL) and its ctx.  Cost: O(MTT_MAX_GATED^2)
+ *  for the rank table; links neither mtt_params_check nor the logarithm.
+ *  A macro, as mtt_tracker_init: it passes the caller's sizeof(mtt_tracker)
+ *  and MTT_CONFIG_ID.
+ *  @return MTT_OK; MTT_ERR_NULL (trk or pp); MTT_ERR_CONFIG on a
+ *          configuration mismatch of the caller, or a set prepared by a
+ *          build of another configuration; MTT_ERR_PARAM if pp's mark is
+ *          not MTT_PREPARED_MARK (not a prepared set).  On error nothing is
+ *          written. */
+#define mtt_tracker_load(trk, pp, fn, ctx) \
+    mtt_tracker_load_checked((trk), (pp), (fn), (ctx), sizeof(mtt_tracker), (uint32_t)(MTT_CONFIG_ID))
+
+/** mtt_tracker_load with the caller's size of mtt_tracker and configuration
+ *  identity given explicitly; call it through the macro. */
+MTT_MUST_CHECK mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_prepared *pp,
+                                                   mtt_cycle_fn fn, void *ctx,
                                                    size_t tracker_size, uint32_t config_id);
 
 /** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).

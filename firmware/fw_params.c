@@ -1,0 +1,23 @@
+/* fw_params.c - the firmware example's tracker parameters, in one place
+ * for the three programs that use them: the scenario program (app.c) on
+ * the host, on the target (float builds), and the host step of the
+ * fixed-point build (prepare_main.c), which prepares them once
+ * (mtt_params_prepare) and writes fw_prepared.h for the target's
+ * mtt_tracker_load (docs/FIRMWARE.md, "Parameters prepared on the host"). */
+#include "fw.h"
+
+int fw_params(mtt_params *par)
+{
+    if (mtt_params_default(par) != MTT_OK) {
+        return 1;
+    }
+    par->clutter_density = SCN_CLUTTER_DENSITY;
+#ifdef MTT_REAL_FIXED
+    par->process_psd = MTT_FX_CONST(0.5, MTT_FX_VAR_FRAC);
+    par->vmax = MTT_POS(10.0);
+#else
+    par->process_psd = 0.5f;
+    par->vmax = 10.0f;
+#endif
+    return 0;
+}
