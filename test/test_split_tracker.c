@@ -127,6 +127,7 @@ static void test_a_target_that_does_not_split_never_spawns(void)
  * d² = dx² / (2 S).  PD 0.5 and p62 = 0.001 keep μ_6 about 0.998 (>= 0.9).
  * Returns the tracks that split off. */
 static mtt_real child_confirm = MTT_R(0.97); /* split_confirm of spawn_at */
+static int known_speed = 0;                  /* split_known_speed of spawn_at */
 
 static uint32_t spawn_at(double factor, int with_r)
 {
@@ -143,6 +144,7 @@ static uint32_t spawn_at(double factor, int with_r)
     p.split_p62 = MTT_R(0.001);
     p.split_decouple_r = with_r;
     p.split_confirm = child_confirm;
+    p.split_known_speed = known_speed;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
@@ -202,6 +204,41 @@ static void test_child_confirmed_by_split_confirm(void)
     child_confirm = MTT_R(0.97);
 }
 
+/* split_known_speed's provisional child: a split-off track whose existence
+ * is below 0.6 after the update of one of its first 3 scans is deleted.
+ * The child of spawn_at (age 0) is given existence 0.62; the next frame is
+ * empty (PD 0.5), which takes it to about 0.45 (> terminate_threshold):
+ * deleted with the rule at age 1, kept without it and at age 4. */
+static void test_provisional_child_deleted(void)
+{
+    mtt_track_view v;
+    size_t n;
+    int rule, old;
+    for (rule = 0; rule <= 1; ++rule) {
+        for (old = 0; old <= 1; ++old) {
+            known_speed = rule;
+            TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.5, 0));
+            TEST_ASSERT_EQUAL_UINT32(0, TV_TRACK(&trk, 1)->parent);
+            TEST_ASSERT_EQUAL_UINT32(0, TV_TRACK(&trk, 1)->age);
+            TV_TRACK(&trk, 1)->existence = MTT_R(0.62);
+            if (old) {
+                TV_TRACK(&trk, 1)->age = 3u; /* 4 after the next prediction: past the first 3 scans */
+            }
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(2.0), NULL, 0));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+            if (rule && !old) {
+                TEST_ASSERT_EQUAL_UINT((unsigned)1, (unsigned)n); /* the parent only */
+            } else {
+                TEST_ASSERT_EQUAL_UINT((unsigned)2, (unsigned)n);
+                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
+                TEST_ASSERT_EQUAL_UINT32(0, v.parent);
+                TEST_ASSERT_TRUE(v.existence < MTT_R(0.6) && v.existence > MTT_R(0.3));
+            }
+        }
+    }
+    known_speed = 0;
+}
+
 static void test_split_needs_imm_with_a_cv_model(void)
 {
     mtt_params p;
@@ -242,6 +279,7 @@ int main(void)
     RUN_TEST(test_a_target_that_does_not_split_never_spawns);
     RUN_TEST(test_decoupling_threshold_edge);
     RUN_TEST(test_child_confirmed_by_split_confirm);
+    RUN_TEST(test_provisional_child_deleted);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);
