@@ -239,6 +239,50 @@ static void test_provisional_child_deleted(void)
     known_speed = 0;
 }
 
+/* split_known_speed's late look: the seeded target of split_params
+ * (split_dv 4) for 10 frames, then one frame with a second detection 15
+ * across its course.  Model 5's own gate is about sqrt(9.21 S_y) with S_y =
+ * P̄_yy + 1 + split_dv² / 2, under 12 here (the test asserts it from the
+ * track's P̄), so the detection is outside it: without the rule model 5
+ * has one measurement and P(split) is 0; with it the gate widened by
+ * 3.5 split_dv reaches it and P(split) is positive. */
+static double late_look(int rule, double *gate)
+{
+    mtt_params p;
+    mtt_track_view v;
+    const mtt_real x0[4] = {0, 0, 10, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    sim_rng r = {4242u};
+    int k;
+    split_params(&p);
+    p.split_known_speed = rule;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
+    for (k = 0; k <= 10; ++k) {
+        mtt_meas z[2];
+        int m = 0;
+        z[m++] = sim_meas((mtt_real)(10.0 * k + 0.5 * sim_gauss(&r)), (mtt_real)(0.5 * sim_gauss(&r)), MTT_R(0.0), 0);
+        if (k == 10) {
+            z[m++] = sim_meas(MTT_R(100.0), MTT_R(15.0), MTT_R(0.0), 0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, z, (size_t)m));
+    }
+    *gate = sqrt(9.2103403719761836 * ((double)TV_PP(&trk, 0)[1][1] + 1.0 + 16.0 / 2.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_EQUAL_UINT32(0, v.id);
+    return (double)v.p_split;
+}
+
+static void test_late_look_reaches_a_far_child(void)
+{
+    double gate, p0, p1;
+    p0 = late_look(0, &gate);
+    TEST_ASSERT_TRUE(gate < 12.0); /* 15 is outside model 5's own gate */
+    p1 = late_look(1, &gate);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, p0);
+    TEST_ASSERT_TRUE(p1 > 1e-3);
+}
+
 static void test_split_needs_imm_with_a_cv_model(void)
 {
     mtt_params p;
@@ -280,6 +324,7 @@ int main(void)
     RUN_TEST(test_decoupling_threshold_edge);
     RUN_TEST(test_child_confirmed_by_split_confirm);
     RUN_TEST(test_provisional_child_deleted);
+    RUN_TEST(test_late_look_reaches_a_far_child);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);
