@@ -4,7 +4,8 @@
  * (stacked two-target state, non-parametric joint events of [S3] eq. 14,
  * coupled update with the corrected bracket of eq. 25, model likelihood),
  * the decoupling test of eq. 27 and the conversion of a decoupled split
- * state into two independent track states.
+ * state into two independent track states; model 5's child half for a
+ * split of known speed (ALGORITHMS.md §14.3, split_known_speed).
  *
  * Plain functions over arrays: a single-target model has n state
  * components (4 <= n <= MTT_MAX_STATE), position first (H = [I 0],

@@ -54,7 +54,15 @@
  * a confident split is reported at once, a doubtful one starts tentative
  * and is confirmed or deleted by the ordinary rule (ALGORITHMS.md §12.4).
  * Only confirmed tracks carry the split modes (a tentative track is not
- * yet a target that can split).  The reported estimate of a track stays
+ * yet a target that can split).
+ *
+ * split_known_speed (ALGORITHMS.md §14.3, "A split of known speed"):
+ * model 5's child half from the prior moved by split_dv across the course
+ * (mtt_split_known); when model 5's own gate holds fewer than 2
+ * measurements, the late look (a gate widened across the course, the
+ * child at the offsets a and a + 1, late_centres); and a split-off track
+ * whose existence is below 0.6 in its first 3 scans is deleted (the
+ * provisional child, mtt_split_frame).  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
 
