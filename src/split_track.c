@@ -82,8 +82,10 @@
                                        (a third, a + 2, scored no better and took clutter) */
 #define PROVISIONAL_AGE 3u          /* a split-off track's first scans ... */
 #define PROVISIONAL_EXIST MTT_R(0.6) /* ... in which an existence below this deletes it: a true
-                                        child survives one missed detection (0.9 x 0.95 -> about
-                                        0.7), a clutter-driven one falls below in 1 or 2 scans */
+                                        child once detected again stays above it through a missed
+                                        detection (about 0.8 at PD 0.9), a clutter-driven one falls
+                                        below in 1 or 2 scans; a child missed at once (0.95 -> about
+                                        0.6 at PD 0.9) is the price */
 #define NS (2 * MTT_STATE_N)
 
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
