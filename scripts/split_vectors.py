@@ -154,6 +154,48 @@ def decouple_d2(xps, Pps, R):
     return d @ np.linalg.solve(S1 + S2, d)
 
 
+KNOWN_A, KNOWN_S = 1.25, 0.15  # ALGORITHMS.md §14.3, split_known_speed
+
+
+def known_split(xp, Pp, R, z, cluster, bn, dv, dt, n_off, V):
+    """Model 5's child half for a split of known speed (§14.3, split_known_speed),
+    literally: the prior moved across the course, the textbook PDA update
+    (beta_0 = 0), the likelihood over (2 n_off) equally likely sides and offsets."""
+    n = len(xp)
+    H = H_of(n)
+    v = np.array(xp[2:4])
+    nrm = np.array([-v[1], v[0]]) / np.linalg.norm(v) if np.linalg.norm(v) > 0 else np.array([0.0, 1.0])
+    I2 = [j for j in range(len(z)) if cluster[j] == 1]
+    I1 = [j for j in range(len(z)) if cluster[j] == 0]
+    w = np.array([bn[j] for j in I2]) / sum(bn[j] for j in I2)
+    zbar = sum(wj * z[j] for wj, j in zip(w, I2))
+    side = 1.0 if (zbar - H @ xp) @ nrm >= 0 else -1.0
+    offs = [(KNOWN_A + h) * dv * dt for h in range(n_off)]
+    off = min(offs, key=lambda o: np.sum((zbar - H @ xp - side * o * nrm) ** 2))
+    xk = np.array(xp, dtype=float)
+    xk[0:2] += side * off * nrm
+    xk[2:4] += side * dv * nrm
+    # across the course: velocity (s dv)^2, position (dv dt)^2/12 + (s dv dt)^2/4, covariance (s dv)^2 dt/2
+    sv = (KNOWN_S * dv) ** 2
+    Q = np.zeros((n, n))
+    N = np.outer(nrm, nrm)
+    Q[0:2, 0:2] = ((dv * dt) ** 2 / 12.0 + sv * dt * dt / 4.0) * N
+    Q[0:2, 2:4] = Q[2:4, 0:2] = sv * dt / 2.0 * N
+    Q[2:4, 2:4] = sv * N
+    Pk = Pp + Q
+    Sk = H @ Pk @ H.T + R
+    Scv = H @ Pp @ H.T + R
+    K = Pk @ H.T @ np.linalg.inv(Sk)
+    nus = [z[j] - H @ xk for j in I2]
+    nub = sum(wj * nu for wj, nu in zip(w, nus))
+    spread = sum(wj * np.outer(nu, nu) for wj, nu in zip(w, nus)) - np.outer(nub, nub)
+    x2 = xk + K @ nub
+    P2 = (np.eye(n) - K @ H) @ Pk + K @ spread @ K.T
+    lik = (V / len(I1)) * sum(gauss(z[j] - H @ xp, Scv) for j in I1) * \
+          (V / len(I2)) * sum(gauss(nu, Sk) for nu in nus) / (2.0 * n_off)
+    return x2, P2, lik
+
+
 def kalman(xp, Pp, R, z):
     H = H_of(len(xp))
     S = H @ Pp @ H.T + R
@@ -200,6 +242,14 @@ def main():
           " the halves differ only by W times their innovations)" % (ev5[0], ev5[-1]))
     print("lik literal prod (1/m_i) sum N V^-(m_i-1) = %.10g" % r5["lik_literal"])
     print("lik ratio (literal * V^m) = %.10g" % r5["lik_ratio"])
+
+    print("\n## model 5, a split of known speed (split_known_speed), on model 5's clusters above")
+    for dv, n_off in ((5.0, 1), (2.0, 1), (2.0, 2)):
+        x2, P2, lk = known_split(XP, PP, R, Z5, r5["cluster"], r5["beta_n"], dv, 1.0, n_off, V5)
+        print("dv %g, dt 1, n_off %d:" % (dv, n_off))
+        print("  x2 = {%s}" % fmt(x2))
+        print("  P2 (4x4) = {%s}" % fmt(P2))
+        print("  lik = %.10g" % lk)
 
     V6 = math.pi * GAMMA * (math.sqrt(np.linalg.det(H @ PP @ H.T + R)) +
                             math.sqrt(np.linalg.det(H @ P22 @ H.T + R)))

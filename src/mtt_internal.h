@@ -398,6 +398,25 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
  * course (per axis when the speed is 0).  Q's 4 x 4 cv part (position
  * first, then velocity), 0 beyond. */
 void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q);
+/* Model 5's child half for a split of known speed (ALGORITHMS.md §14.3,
+ * split_known_speed): after mtt_split_just (its cluster and beta_n), the
+ * child's half is updated again from the cv prediction (xp, Pp) moved
+ * across the course, to the side of the child's cluster, by dv in velocity
+ * and by (MTT_SPLIT_KNOWN_OFFSET + h) dv dt in position, h < n_off the
+ * offset nearest the cluster's mean (h >= 1: a split caught h scans late),
+ * with across the course the velocity variance (MTT_SPLIT_KNOWN_SD dv)^2,
+ * the position variance (dv dt)^2 / 12 + that times dt^2 / 4 and their
+ * covariance that times dt / 2.  Writes the child's half of (xs, Ps)
+ * (cross covariance 0; the parent's half untouched) and *lik = (V/m_1)
+ * sum_{I_1} N(z; H xp, S_cv) (V/m_2) sum_{I_2} N(z; H x_k, S_k) / (2 n_off)
+ * (the side and the offset each one of 2 and n_off equally likely). */
+#define MTT_SPLIT_KNOWN_OFFSET MTT_R(1.25)
+#define MTT_SPLIT_KNOWN_SD MTT_R(0.15)
+#define MTT_SPLIT_KNOWN_MAX_OFFSETS 4u
+int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
+                    const mtt_real R[3], uint16_t m, mtt_real z[][2], const uint8_t cluster[],
+                    const mtt_real beta_n[], mtt_real dv, mtt_real dt, uint8_t n_off, mtt_real vg,
+                    mtt_split_state xs, mtt_split_cov Ps, mtt_real *lik);
 /* Decoupling test [S3] eq. 27 on a stacked prediction: *d2 = (z1 - z2)'
  * (S1 + S2)^-1 (z1 - z2); returns 1 when d2 >= c (decoupled), 0 when not,
  * -1 on invalid input. */

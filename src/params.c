@@ -164,6 +164,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->split_confirm = PDEF(split_confirm, 0.97);
     p->split_across = 1;
     p->split_decouple_r = 0;
+    p->split_known_speed = 0;
 #endif
     p->cycle_counter = NULL;
     p->cycle_ctx = NULL;

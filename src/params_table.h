@@ -82,6 +82,8 @@ extern const char *const mtt_model_names[3];
          "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
     FLAG("split_across", split_across,                                                            \
          "with `split`: true: the split's velocity change (split_dv) is across the course only, the \"just split\" model's gate is widened across it; false: in every direction (§14.3)") \
+    FLAG("split_known_speed", split_known_speed,                                                  \
+         "with `split`: true: a split of known speed, the child leaving at split_dv across the course: the \"just split\" model's child half from the prior moved by split_dv, also a scan late, and a split-off track deleted when its existence falls below 0.6 in its first 3 scans; false: split_dv as the impulse's standard deviation only (§14.3)") \
     FLAG("split_decouple_r", split_decouple_r,                                                    \
          "with `split`: true: the decoupling test of [S3] eq. 27 on S_1 + S_2 (the halves' predicted measurements, R included); false: on P_11 + P_22 (the halves' position estimates), which decouples a scan or two earlier (§14.3)")
 #else

@@ -4,7 +4,8 @@
  * (stacked two-target state, non-parametric joint events of [S3] eq. 14,
  * coupled update with the corrected bracket of eq. 25, model likelihood),
  * the decoupling test of eq. 27 and the conversion of a decoupled split
- * state into two independent track states.
+ * state into two independent track states; model 5's child half for a
+ * split of known speed (ALGORITHMS.md §14.3, split_known_speed).
  *
  * Plain functions over arrays: a single-target model has n state
  * components (4 <= n <= MTT_MAX_STATE), position first (H = [I 0],
@@ -668,6 +669,136 @@ void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_
             Q[a][b] = (a < 4 && b < 4) ? qb[a / 2][b / 2] * D[a % 2][b % 2] : MTT_R(0.0);
         }
     }
+}
+
+/* ---- model 5's child half for a split of known speed ---- */
+
+int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
+                    const mtt_real R[3], uint16_t m, mtt_real z[][2], const uint8_t cluster[],
+                    const mtt_real beta_n[], mtt_real dv, mtt_real dt, uint8_t n_off, mtt_real vg,
+                    mtt_split_state xs, mtt_split_cov Ps, mtt_real *lik)
+{
+    mtt_real(*Pk)[NS] = wk->Pq; /* the child's prior */
+    mtt_real *xk = wk->xh[1];
+    const mtt_real v = mtt_sqrt(xp[2] * xp[2] + xp[3] * xp[3]);
+    const mtt_real vv = (MTT_SPLIT_KNOWN_SD * dv) * (MTT_SPLIT_KNOWN_SD * dv);
+    mtt_real nx = MTT_R(0.0), ny = MTT_R(1.0), zx = MTT_R(0.0), zy = MTT_R(0.0), bs = MTT_R(0.0);
+    mtt_real side, off, best = MTT_R(0.0), qb[2][2], D[2][2], Sa[3], Sai[3], Sb[3], Sbi[3], deta, detb;
+    mtt_real nub[QMAX] = {MTT_R(0.0)}, sp[QMAX][QMAX] = {{MTT_R(0.0)}}, g[2] = {MTT_R(0.0), MTT_R(0.0)};
+    mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
+    static const int sel[2] = {0, 1};
+    uint16_t j, mi[2] = {0u, 0u};
+    uint8_t h;
+    int a, b;
+    if (!n_ok(n) || m < 2u || m > MTT_MAX_SPLIT_MEAS || !(vg > MTT_R(0.0)) || !(dv > MTT_R(0.0)) ||
+        !(dt > MTT_R(0.0)) || n_off < 1u || n_off > MTT_SPLIT_KNOWN_MAX_OFFSETS) {
+        return -1;
+    }
+    if (v > MTT_R(0.0)) { /* the unit normal of the course; per axis y at speed 0 */
+        nx = -xp[3] / v;
+        ny = xp[2] / v;
+    }
+    for (j = 0u; j < m; ++j) {
+        if (cluster[j] > 1u) {
+            return -1;
+        }
+        ++mi[cluster[j]];
+        if (cluster[j] == 1u) {
+            zx += beta_n[j] * z[j][0];
+            zy += beta_n[j] * z[j][1];
+            bs += beta_n[j];
+        }
+    }
+    if (mi[0] == 0u || mi[1] == 0u || !(bs > MTT_R(0.0))) {
+        return -1;
+    }
+    zx /= bs;
+    zy /= bs;
+    /* the side of the course the child's cluster is on; the offset
+     * (a + h) dv dt, h < n_off, nearest to the cluster's mean */
+    side = ((zx - xp[0]) * nx + (zy - xp[1]) * ny >= MTT_R(0.0)) ? MTT_R(1.0) : MTT_R(-1.0);
+    off = MTT_SPLIT_KNOWN_OFFSET;
+    for (h = 0u; h < n_off; ++h) {
+        const mtt_real o = (MTT_SPLIT_KNOWN_OFFSET + (mtt_real)h) * dv * dt;
+        const mtt_real ex = zx - xp[0] - side * o * nx, ey = zy - xp[1] - side * o * ny;
+        const mtt_real d = ex * ex + ey * ey;
+        if (h == 0u || d < best) {
+            best = d;
+            off = MTT_SPLIT_KNOWN_OFFSET + (mtt_real)h;
+        }
+    }
+    /* the prior: moved by side dv n in velocity and side off dv dt n in
+     * position; across the course the velocity variance vv, the position
+     * variance (dv dt)^2 / 12 + vv dt^2 / 4, their covariance vv dt / 2 */
+    qb[0][0] = dv * dv * dt * dt / MTT_R(12.0) + MTT_R(0.25) * vv * dt * dt;
+    qb[0][1] = MTT_R(0.5) * vv * dt;
+    qb[1][0] = qb[0][1];
+    qb[1][1] = vv;
+    D[0][0] = nx * nx;
+    D[0][1] = nx * ny;
+    D[1][0] = nx * ny;
+    D[1][1] = ny * ny;
+    for (a = 0; a < (int)n; ++a) {
+        xk[a] = xp[a];
+        for (b = 0; b < (int)n; ++b) {
+            Pk[a][b] = Pp[a][b] + ((a < 4 && b < 4) ? qb[a / 2][b / 2] * D[a % 2][b % 2] : MTT_R(0.0));
+        }
+    }
+    xk[0] += side * off * dv * dt * nx;
+    xk[1] += side * off * dv * dt * ny;
+    xk[2] += side * dv * nx;
+    xk[3] += side * dv * ny;
+    /* the parent's cluster on the cv prediction's S, the child's on the prior's */
+    Sa[0] = Pp[0][0] + R[0];
+    Sa[1] = MTT_R(0.5) * (Pp[0][1] + Pp[1][0]) + R[1];
+    Sa[2] = Pp[1][1] + R[2];
+    deta = Sa[0] * Sa[2] - Sa[1] * Sa[1];
+    if (!(deta > MTT_R(0.0)) || !mtt_isfinite(deta) || innov2(Pk, 0, R, Sb, Sbi, &detb) != 0) {
+        return -1;
+    }
+    Sai[0] = Sa[2] / deta;
+    Sai[1] = -Sa[1] / deta;
+    Sai[2] = Sa[0] / deta;
+    for (j = 0u; j < m; ++j) {
+        if (cluster[j] == 0u) {
+            g[0] += gauss2(quad2(Sai, z[j][0] - xp[0], z[j][1] - xp[1]), deta);
+        } else {
+            const mtt_real w = beta_n[j] / bs;
+            g[1] += gauss2(quad2(Sbi, z[j][0] - xk[0], z[j][1] - xk[1]), detb);
+            nub[0] += w * (z[j][0] - xk[0]);
+            nub[1] += w * (z[j][1] - xk[1]);
+        }
+    }
+    for (j = 0u; j < m; ++j) {
+        if (cluster[j] == 1u) {
+            const mtt_real w = beta_n[j] / bs;
+            const mtt_real dx = z[j][0] - xk[0] - nub[0], dy = z[j][1] - xk[1] - nub[1];
+            sp[0][0] += w * dx * dx;
+            sp[0][1] += w * dx * dy;
+            sp[1][1] += w * dy * dy;
+        }
+    }
+    sp[1][0] = sp[0][1];
+    Rq[0][0] = R[0];
+    Rq[0][1] = R[1];
+    Rq[1][0] = R[1];
+    Rq[1][1] = R[2];
+    /* the child half's PDA update (beta0 = 0) from the prior */
+    if (mixed_update(wk, n, 2, sel, xk, Pk, Rq, MTT_R(0.0), nub, sp, wk->xh[0], wk->Ph[0], NULL) != 0) {
+        return -1;
+    }
+    for (a = 0; a < (int)n; ++a) {
+        xs[n + a] = wk->xh[0][a];
+        for (b = 0; b < (int)n; ++b) {
+            Ps[n + a][n + b] = wk->Ph[0][a][b];
+            Ps[a][n + b] = MTT_R(0.0);
+            Ps[n + a][b] = MTT_R(0.0);
+        }
+    }
+    /* (V/m_1) sum N_1 (V/m_2) sum N_2, over the 2 sides and the n_off offsets */
+    *lik = (vg / (mtt_real)mi[0]) * g[0] * (vg / (mtt_real)mi[1]) * g[1] /
+           (MTT_R(2.0) * (mtt_real)n_off);
+    return 0;
 }
 
 /* ---- decoupling and conversion ---- */

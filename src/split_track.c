@@ -54,7 +54,15 @@
  * a confident split is reported at once, a doubtful one starts tentative
  * and is confirmed or deleted by the ordinary rule (ALGORITHMS.md §12.4).
  * Only confirmed tracks carry the split modes (a tentative track is not
- * yet a target that can split).  The reported estimate of a track stays
+ * yet a target that can split).
+ *
+ * split_known_speed (ALGORITHMS.md §14.3, "A split of known speed"):
+ * model 5's child half from the prior moved by split_dv across the course
+ * (mtt_split_known); when model 5's own gate holds fewer than 2
+ * measurements, the late look (a gate widened across the course, the
+ * child at the offsets a and a + 1, late_centres); and a split-off track
+ * whose existence is below 0.6 in its first 3 scans is deleted (the
+ * provisional child, mtt_split_frame).  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
 
@@ -65,6 +73,19 @@
 #define SPLIT_KEEP MTT_R(1e-4)  /* μ_5 + μ_6 below: the split modes are dropped */
 #define SPLIT_DECIDE MTT_R(0.9) /* μ_5 + μ_6 at or above: a decoupled split is two tracks */
 #define N1 MTT_STATE_N          /* the split modes are built on the cv model */
+/* split_known_speed (ALGORITHMS.md §14.3 [CHOICE], tuned on the seeds 1000+
+ * of split_fast.json, crossing3.json and formations.json, docs/RESULTS.md
+ * "Split targets"): */
+#define KNOWN_LATE_REACH MTT_R(3.5) /* the late look's gate widened across the course by this
+                                       x split_dv dt: the farther offset (2.25) and 1.25 beyond */
+#define KNOWN_LATE_OFFSETS 2u       /* offsets a and a + 1: a split caught one scan late
+                                       (a third, a + 2, scored no better and took clutter) */
+#define PROVISIONAL_AGE 3u          /* a split-off track's first scans ... */
+#define PROVISIONAL_EXIST MTT_R(0.6) /* ... in which an existence below this deletes it: a true
+                                        child once detected again stays above it through a missed
+                                        detection (about 0.8 at PD 0.9), a clutter-driven one falls
+                                        below in 1 or 2 scans; a child missed at once (0.95 -> about
+                                        0.6 at PD 0.9) is the price */
 #define NS (2 * MTT_STATE_N)
 
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
@@ -245,6 +266,63 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     }
 }
 
+/* The unit normal of the course of the state x (velocity at 2, 3); (0, 1)
+ * at speed 0. */
+static void normal(const mtt_real x[], mtt_real *nx, mtt_real *ny)
+{
+    const mtt_real v = mtt_sqrt(x[2] * x[2] + x[3] * x[3]);
+    *nx = MTT_R(0.0);
+    *ny = MTT_R(1.0);
+    if (v > MTT_R(0.0)) {
+        *nx = -x[3] / v;
+        *ny = x[2] / v;
+    }
+}
+
+/* The late look's clusters (split_known_speed): the parent's centre is the
+ * measurement nearest the cv prediction (on its S; beta 2, above every
+ * other), the others rank by their nearest offset (a + h) split_dv dt,
+ * h < KNOWN_LATE_OFFSETS, on either side of the course (on model 5's S^-1
+ * Si): the child's centre is the one nearest an offset. */
+static void late_centres(mtt_tracker *trk, uint16_t ti, uint16_t m, const mtt_real Si[3], mtt_real dt)
+{
+    mtt_split_scratch *sc = &trk->split_scr;
+    const mtt_params *p = &trk->par;
+    mtt_track_frame *tf = &trk->tf[ti];
+    const uint8_t cm = mtt_params_cv_model(p);
+    const mtt_real *xq = tf->xpm[cm];
+    mtt_real K[MTT_MAX_STATE][2];
+    mtt_real Sc[3], Sci[3], detc, nx, ny, best = MTT_R(-1.0);
+    uint16_t j, jb = 0;
+    uint8_t h;
+    int sd;
+    if (mtt_kalman_innov_n(N1, tf->Ppm[cm], trk->R, Sc, Sci, &detc, K) != 0) {
+        return;
+    }
+    normal(xq, &nx, &ny);
+    for (j = 0; j < m; ++j) {
+        const mtt_real g = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Sci, sc->z[j][0] - xq[0], sc->z[j][1] - xq[1]));
+        if (g > best) {
+            best = g;
+            jb = j;
+        }
+    }
+    for (j = 0; j < m; ++j) {
+        mtt_real g = MTT_R(0.0);
+        for (h = 0u; h < KNOWN_LATE_OFFSETS; ++h) {
+            for (sd = -1; sd <= 1; sd += 2) {
+                const mtt_real off = (mtt_real)sd * (MTT_SPLIT_KNOWN_OFFSET + (mtt_real)h) * p->split_dv * dt;
+                const mtt_real gg =
+                    mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - xq[0] - off * nx, sc->z[j][1] - xq[1] - off * ny));
+                if (gg > g) {
+                    g = gg;
+                }
+            }
+        }
+        sc->beta[j] = (j == jb) ? MTT_R(2.0) : g;
+    }
+}
+
 /* Model 5 of track ti into sc->x5, sc->P5; returns Λ_5 (0 with fewer than
  * 2 measurements in its gate).  Its prediction is the cv model's plus the
  * split's velocity impulse: P̄_5 = P̄_cv + Q_s, per axis split_dv² [dt²/2,
@@ -262,6 +340,8 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real(*P5)[MTT_MAX_STATE] = sc->P5p; /* Q_s, then P̄_cv + Q_s (scratch: not the stack) */
     mtt_real K[MTT_MAX_STATE][2];
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
+    const int known = p->split_known_speed && p->split_dv > MTT_R(0.0);
+    int late = 0; /* the late look of split_known_speed */
     uint16_t j, m;
     int a, b;
     mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], P5);
@@ -278,11 +358,25 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     w[0][0] = mtt_sqrt(trk->gamma * S[0]);
     w[0][1] = mtt_sqrt(trk->gamma * S[2]);
     m = gather(trk, ti, 1, c, w);
+    if (known && m < 2u) {
+        /* the late look: a gate widened across the course */
+        mtt_real nx, ny;
+        normal(tf->xpm[cm], &nx, &ny);
+        c[1][0] = c[0][0];
+        c[1][1] = c[0][1];
+        w[1][0] = w[0][0] + KNOWN_LATE_REACH * p->split_dv * dt * mtt_fabs(nx);
+        w[1][1] = w[0][1] + KNOWN_LATE_REACH * p->split_dv * dt * mtt_fabs(ny);
+        m = gather(trk, ti, 2, c, w);
+        late = 1;
+    }
     if (m > MTT_MAX_GATED) {
         m = MTT_MAX_GATED; /* the first ones, in measurement order */
     }
     for (j = 0; j < m; ++j) {
         sc->beta[j] = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1]));
+    }
+    if (late && m >= 2u) {
+        late_centres(trk, ti, m, Si, dt);
     }
     if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta,
                                  MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
@@ -291,6 +385,15 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     }
     if (p->split_dv > MTT_R(0.0)) {
         impulse_to_child(trk, ti, m);
+    }
+    if (known) {
+        /* the child's half at the known speed; on failure the impulse's stays */
+        mtt_real lk;
+        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->cluster,
+                            sc->beta_n, p->split_dv, dt, late ? KNOWN_LATE_OFFSETS : 1u,
+                            MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, &lk) == 0) {
+            lik = lk;
+        }
     }
     return lik;
 }
@@ -442,6 +545,10 @@ void mtt_split_frame(mtt_tracker *trk, mtt_real dt)
     }
     for (i = 0; i < n; ++i) {
         mtt_track *t = &trk->tracks[i];
+        if (trk->par.split_known_speed && t->parent != MTT_NO_PARENT && t->age <= PROVISIONAL_AGE &&
+            t->existence < PROVISIONAL_EXIST) {
+            t->existence = MTT_R(0.0); /* a provisional child that lost its evidence: deleted (§12.4) */
+        }
         if (!trk->tf[i].valid || t->born || !t->confirmed || !(dt > MTT_R(0.0))) {
             t->p_split = MTT_R(0.0);
             continue;

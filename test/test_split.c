@@ -314,6 +314,64 @@ static void test_just_split_two(void)
     assert_psd(Ps, 8);
 }
 
+/* ---- model 5, a split of known speed (split_known_speed) ---- */
+
+/* python3 scripts/split_vectors.py, "a split of known speed": on model 5's
+ * clusters of test_just_split_reference, dt 1 */
+static const struct {
+    double dv;
+    int n_off;
+    double x2[4], P2[16], lik;
+} ref_known[3] = {
+    {5, 1, {96.28487662, 57.08255102, 10.01863882, 0.102090865}, {9.088331934, 1.961490023, 2.967068343, 0.3741499153, 1.961490023, 8.713150505, 0.3770316708, 2.649904598, 2.967068343, 0.3770316708, 6.74108813, 0.9893145163, 0.3741499153, 2.649904598, 0.9893145163, 5.715453552}, 1.726447858},
+    {2, 1, {95.84749966, 56.006724, 9.025495378, -1.888778884}, {9.038774858, 1.864417832, 2.974745748, 0.395596931, 1.864417832, 8.535441264, 0.3881735637, 2.687433645, 2.974745748, 0.3881735637, 6.652595132, 0.8103469469, 0.395596931, 2.687433645, 0.8103469469, 5.353688378}, 1.518264686},
+    {2, 2, {96.08404294, 56.5885554, 8.838608529, -2.260074067}, {9.038774858, 1.864417832, 2.974745748, 0.395596931, 1.864417832, 8.535441264, 0.3881735637, 2.687433645, 2.974745748, 0.3881735637, 6.652595132, 0.8103469469, 0.395596931, 2.687433645, 0.8103469469, 5.353688378}, 0.8562730135},
+};
+
+static void test_known_split_reference(void)
+{
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_split_state xs, xs0;
+    mtt_split_cov Ps, Ps0;
+    uint8_t cl[5];
+    mtt_real bn[5], lik = MTT_R(0.0), lk = MTT_R(0.0);
+    int c, i, k;
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl,
+                                            bn, &lik));
+    for (c = 0; c < 3; ++c) {
+        memcpy(xs, xs0, sizeof xs);
+        memcpy(Ps, Ps0, sizeof Ps);
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, (mtt_real)ref_known[c].dv,
+                                                 MTT_R(1.0), (uint8_t)ref_known[c].n_off, (mtt_real)ref5_V,
+                                                 xs, Ps, &lk));
+        TV_ASSERT_REAL(ref_known[c].lik, lk);
+        for (i = 0; i < 4; ++i) {
+            TV_ASSERT_REAL(ref_known[c].x2[i], xs[4 + i]);
+            TV_ASSERT_REAL(ref5_xs[i], xs[i]); /* the parent's half untouched */
+            for (k = 0; k < 4; ++k) {
+                TV_ASSERT_REAL(ref_known[c].P2[4 * i + k], Ps[4 + i][4 + k]);
+                TV_ASSERT_REAL(ref5_Ps[8 * i + k], Ps[i][k]);
+                TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)Ps[i][4 + k]); /* no cross covariance */
+                TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)Ps[4 + i][k]);
+            }
+        }
+    }
+    /* refused: no speed, no offset, more offsets than the bound, one cluster */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(0.0), MTT_R(1.0), 1u,
+                                              (mtt_real)ref5_V, xs, Ps, &lk));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 0u,
+                                              (mtt_real)ref5_V, xs, Ps, &lk));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0),
+                                              (uint8_t)(MTT_SPLIT_KNOWN_MAX_OFFSETS + 1u), (mtt_real)ref5_V,
+                                              xs, Ps, &lk));
+    {
+        const uint8_t one[5] = {0, 0, 0, 0, 0};
+        TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, one, bn, MTT_R(5.0), MTT_R(1.0),
+                                                  1u, (mtt_real)ref5_V, xs, Ps, &lk));
+    }
+}
+
 /* ---- model 6 ---- */
 
 static void test_split_events_reference(void)
@@ -698,6 +756,7 @@ int main(void)
     RUN_TEST(test_just_split_reference);
     RUN_TEST(test_just_split_refuses);
     RUN_TEST(test_just_split_two);
+    RUN_TEST(test_known_split_reference);
     RUN_TEST(test_split_events_reference);
     RUN_TEST(test_split_events_parametric);
     RUN_TEST(test_split_events_coupled);

@@ -127,6 +127,7 @@ static void test_a_target_that_does_not_split_never_spawns(void)
  * d² = dx² / (2 S).  PD 0.5 and p62 = 0.001 keep μ_6 about 0.998 (>= 0.9).
  * Returns the tracks that split off. */
 static mtt_real child_confirm = MTT_R(0.97); /* split_confirm of spawn_at */
+static int known_speed = 0;                  /* split_known_speed of spawn_at */
 
 static uint32_t spawn_at(double factor, int with_r)
 {
@@ -143,6 +144,7 @@ static uint32_t spawn_at(double factor, int with_r)
     p.split_p62 = MTT_R(0.001);
     p.split_decouple_r = with_r;
     p.split_confirm = child_confirm;
+    p.split_known_speed = known_speed;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), NULL, 0));
@@ -202,6 +204,85 @@ static void test_child_confirmed_by_split_confirm(void)
     child_confirm = MTT_R(0.97);
 }
 
+/* split_known_speed's provisional child: a split-off track whose existence
+ * is below 0.6 after the update of one of its first 3 scans is deleted.
+ * The child of spawn_at (age 0) is given existence 0.62; the next frame is
+ * empty (PD 0.5), which takes it to about 0.45 (> terminate_threshold):
+ * deleted with the rule at age 1, kept without it and at age 4. */
+static void test_provisional_child_deleted(void)
+{
+    mtt_track_view v;
+    size_t n;
+    int rule, old;
+    for (rule = 0; rule <= 1; ++rule) {
+        for (old = 0; old <= 1; ++old) {
+            known_speed = rule;
+            TEST_ASSERT_EQUAL_UINT32(1, spawn_at(1.5, 0));
+            TEST_ASSERT_EQUAL_UINT32(0, TV_TRACK(&trk, 1)->parent);
+            TEST_ASSERT_EQUAL_UINT32(0, TV_TRACK(&trk, 1)->age);
+            TV_TRACK(&trk, 1)->existence = MTT_R(0.62);
+            if (old) {
+                TV_TRACK(&trk, 1)->age = 3u; /* 4 after the next prediction: past the first 3 scans */
+            }
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(2.0), NULL, 0));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+            if (rule && !old) {
+                TEST_ASSERT_EQUAL_UINT((unsigned)1, (unsigned)n); /* the parent only */
+            } else {
+                TEST_ASSERT_EQUAL_UINT((unsigned)2, (unsigned)n);
+                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 1, &v));
+                TEST_ASSERT_EQUAL_UINT32(0, v.parent);
+                TEST_ASSERT_TRUE(v.existence < MTT_R(0.6) && v.existence > MTT_R(0.3));
+            }
+        }
+    }
+    known_speed = 0;
+}
+
+/* split_known_speed's late look: the seeded target of split_params
+ * (split_dv 4) for 10 frames, then one frame with a second detection 15
+ * across its course.  Model 5's own gate is about sqrt(9.21 S_y) with S_y =
+ * P̄_yy + 1 + split_dv² / 2, under 12 here (the test asserts it from the
+ * track's P̄), so the detection is outside it: without the rule model 5
+ * has one measurement and P(split) is 0; with it the gate widened by
+ * 3.5 split_dv reaches it and P(split) is positive. */
+static double late_look(int rule, double *gate)
+{
+    mtt_params p;
+    mtt_track_view v;
+    const mtt_real x0[4] = {0, 0, 10, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    sim_rng r = {4242u};
+    int k;
+    split_params(&p);
+    p.split_known_speed = rule;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
+    for (k = 0; k <= 10; ++k) {
+        mtt_meas z[2];
+        int m = 0;
+        z[m++] = sim_meas((mtt_real)(10.0 * k + 0.5 * sim_gauss(&r)), (mtt_real)(0.5 * sim_gauss(&r)), MTT_R(0.0), 0);
+        if (k == 10) {
+            z[m++] = sim_meas(MTT_R(100.0), MTT_R(15.0), MTT_R(0.0), 0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, z, (size_t)m));
+    }
+    *gate = sqrt(9.2103403719761836 * ((double)TV_PP(&trk, 0)[1][1] + 1.0 + 16.0 / 2.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_EQUAL_UINT32(0, v.id);
+    return (double)v.p_split;
+}
+
+static void test_late_look_reaches_a_far_child(void)
+{
+    double gate, p0, p1;
+    p0 = late_look(0, &gate);
+    TEST_ASSERT_TRUE(gate < 12.0); /* 15 is outside model 5's own gate */
+    p1 = late_look(1, &gate);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, p0);
+    TEST_ASSERT_TRUE(p1 > 1e-3);
+}
+
 static void test_split_needs_imm_with_a_cv_model(void)
 {
     mtt_params p;
@@ -242,6 +323,8 @@ int main(void)
     RUN_TEST(test_a_target_that_does_not_split_never_spawns);
     RUN_TEST(test_decoupling_threshold_edge);
     RUN_TEST(test_child_confirmed_by_split_confirm);
+    RUN_TEST(test_provisional_child_deleted);
+    RUN_TEST(test_late_look_reaches_a_far_child);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);

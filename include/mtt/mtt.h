@@ -185,6 +185,9 @@ typedef struct mtt_params {
 #if MTT_WITH_SPLIT
     mtt_real split_confirm;         /**< a split-off track's existence at or above: confirmed at once */
     int split_across;               /**< nonzero: split_dv across the course only (ALGORITHMS.md §14.3) */
+    int split_known_speed;          /**< nonzero: the child leaves at split_dv across the course
+                                         (model 5's child half, the late split, the provisional
+                                         child; ALGORITHMS.md §14.3) */
     int split_decouple_r;           /**< nonzero: the decoupling test on S_1 + S_2 ([S3] eq. 27);
                                          0: on P_11 + P_22 (ALGORITHMS.md §14.3 [CHOICE]); only in a
                                          build with the split (the firmware's layout unchanged) */

@@ -48,7 +48,7 @@ TRACKER_KEYS = {
     "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
-    "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_across", "split_decouple_r", "initial_tracks",
+    "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
 }
 
 ASSOC_MODES = (
