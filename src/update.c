@@ -23,14 +23,20 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
-    int i;
     /* memcpy of distinct objects: the element loops compiled to a memmove
      * call, which alone linked newlib's memmove into the firmware */
     memcpy(t->x, tf->xp, MTT_STATE_N * sizeof t->x[0]);
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
+#if MTT_MAX_STATE == MTT_STATE_N
+    memcpy(t->P, tf->Pp, sizeof t->P); /* the whole block (fixed point: with its exponent) */
+#else
+    {
+        int i;
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
+        }
+        MTT_COV_COPY_E(t->P, tf->Pp);
     }
-    MTT_COV_COPY_E(t->P, tf->Pp);
+#endif
     t->existence = mtt_existence_update(tf->ex_pred, MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(trk->par.pd, trk->par.pg))));
     t->meas = -1;
 }
