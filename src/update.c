@@ -70,22 +70,24 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     mtt_track_frame *tf = &trk->tf[ti];
     mtt_real *beta = trk->row.beta;
     mtt_real(*nu)[2] = trk->row.nu;
+    const mtt_pair *const pairs = &trk->pairs[tf->pair_first];
+    mtt_mstore *const meas = trk->meas;
     uint16_t m = tf->pair_count, j, b = 0;
     for (j = 0; j < m; ++j) {
-        const mtt_pair *pp = &trk->pairs[tf->pair_first + j];
+        const mtt_pair *pp = &pairs[j];
         beta[j] = pp->beta;
-        nu[j][0] = trk->meas[pp->meas].x - tf->xp[0];
-        nu[j][1] = trk->meas[pp->meas].y - tf->xp[1];
+        nu[j][0] = meas[pp->meas].x - tf->xp[0];
+        nu[j][1] = meas[pp->meas].y - tf->xp[1];
         if (beta[j] > beta[b]) {
             b = j;
         }
         if (MTT_CONTESTED(tf) && beta[j] >= trk->par.contest_beta) {
-            trk->meas[pp->meas].used = 1;
+            meas[pp->meas].used = 1;
         }
     }
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
     t->existence = tf->ex_post;
-    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
+    t->meas = (int32_t)meas[pairs[b].meas].src;
 }
 
 #if MTT_WITH_BASELINES
