@@ -1,5 +1,5 @@
 /* sort.c - heap sort and heap sift over small fixed arrays, the
- * stable x sort of the gating sweep (ALGORITHMS.md §4, §16; insertion), and the shift
+ * stable x sort of the gating sweep (ALGORITHMS.md §4, §16), and the shift
  * that turns CSR cursors back into starts (gating, clusters §9).
  *
  * Heap sort because it is O(n log n) in the worst case, needs no recursion
@@ -56,17 +56,29 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
 
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas)
 {
-    uint16_t k, q, v;
-    (void)tmp;
-    /* Insertion: a stable sort in the least code (a firmware's .text,
-     * docs/FIXED_POINT.md "Size measures"); at most n (n - 1) / 2 moves,
-     * and few when the input comes roughly in x order. */
-    for (k = 1; k < n; ++k) {
-        v = idx[k];
-        for (q = k; q > 0u && meas[idx[q - 1u]].x > meas[v].x; --q) {
-            idx[q] = idx[q - 1u];
+    uint16_t *src = idx, *dst = tmp, *t;
+    uint32_t width, lo;
+    /* Runs of 1, 2, 4, ...: at most log2(n) passes of n moves each. */
+    for (width = 1u; width < n; width *= 2u) {
+        for (lo = 0; lo < n; lo += 2u * width) {
+            uint32_t mid = lo + width < n ? lo + width : n;
+            uint32_t hi = lo + 2u * width < n ? lo + 2u * width : n;
+            uint32_t i = lo, j = mid, k;
+            /* One loop takes from either run ('<=' keeps equal keys in
+             * their current (index) order): less code than a merge loop
+             * and two tails (a firmware's .text). */
+            for (k = lo; k < hi; ++k) {
+                dst[k] = (j >= hi || (i < mid && meas[src[i]].x <= meas[src[j]].x)) ? src[i++] : src[j++];
+            }
         }
-        idx[q] = v;
+        t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != idx) {
+        for (lo = 0; lo < n; ++lo) {
+            idx[lo] = src[lo];
+        }
     }
 }
 
