@@ -162,6 +162,7 @@ void mtt_update_frame(mtt_tracker *trk)
     uint16_t i;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
+        const int one = kind == MTT_UPDATE_ONE && !MTT_CONTESTED(tf); /* the ONE update */
         if (!tf->valid) {
             continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
@@ -170,14 +171,10 @@ void mtt_update_frame(mtt_tracker *trk)
             update_imm(trk, i, kind); /* motion imm refuses the contest variant */
         } else
 #endif
-        if (kind == MTT_UPDATE_ONE && !MTT_CONTESTED(tf)) {
-            if (tf->assigned < 0) {
-                keep_prediction(trk, i);
-            } else {
-                update_one(trk, i, (uint16_t)tf->assigned);
-            }
-        } else if (tf->pair_count == 0u) {
-            keep_prediction(trk, i);
+        if (one ? tf->assigned < 0 : tf->pair_count == 0u) {
+            keep_prediction(trk, i); /* no measurement for this track */
+        } else if (one) {
+            update_one(trk, i, (uint16_t)tf->assigned);
 #if MTT_WITH_BASELINES
         } else if (kind == MTT_UPDATE_HARD) {
             update_nn(trk, i);
