@@ -143,20 +143,23 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
         const mtt_real r = reach_x(trk, dt);
         for (j = 0; j < trk->n_meas; ++j) {
             mtt_mstore *b = &meas[j];
+            mtt_pos x_lo, x_hi; /* the slice within reach */
             uint16_t lo = 0, hi = trk->n_prev, nc = 0;
             int started = 0;
             if (b->used) {
                 continue;
             }
+            x_lo = MTT_SUBS(b->x, r);
+            x_hi = MTT_ADDS(b->x, r);
             while (lo < hi) {
                 uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-                if (prev[prev_order[mid]].x < MTT_SUBS(b->x, r)) {
+                if (prev[prev_order[mid]].x < x_lo) {
                     lo = (uint16_t)(mid + 1u);
                 } else {
                     hi = mid;
                 }
             }
-            for (k = lo; k < trk->n_prev && prev[prev_order[k]].x <= MTT_ADDS(b->x, r); ++k) {
+            for (k = lo; k < trk->n_prev && prev[prev_order[k]].x <= x_hi; ++k) {
                 cand[nc++] = prev_order[k];
             }
             /* Births in input order of z_k-1, as a plain double loop would;
