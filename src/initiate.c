@@ -242,13 +242,8 @@ mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_rea
     {
         /* the CV part; fixed point: from the block to the variance format */
         mtt_cov Pm;
-        int i, j;
         mtt_motion_two_point_cov(R, dt, Pm);
-        for (i = 0; i < 4; ++i) {
-            for (j = 0; j < 4; ++j) {
-                P[i][j] = MTT_COV_VIEW(Pm, i, j);
-            }
-        }
+        mtt_cov_view4(Pm, P);
     }
 #endif
     return MTT_OK;
