@@ -18,10 +18,9 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
  * element that is NOT less than any other ("max-heap" for `less`). */
 void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less, const void *ctx);
 
-/* Sort idx[0..n) ascending by meas[idx].x, equal keys kept in their order
- * (stable; from the identity order: ties by index).  Insertion, typed
- * compares, no byte swaps: the least code, at most n (n - 1) / 2 moves.
- * tmp is not used (the merge sort it held is gone). */
+/* Sort idx[0..n) ascending by meas[idx].x, ties by index (stable merge
+ * sort, bottom-up: no recursion; tmp holds n entries).  The hot-path sort:
+ * typed compares, no byte swaps. */
 void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
 /* CSR lists filled with first[c] as the cursor of c hold in first[c] the
