@@ -19,55 +19,59 @@ static uint16_t find_root(uint16_t *uf, uint16_t i)
 
 void mtt_cluster_frame(mtt_tracker *trk)
 {
+    /* The arrays once in locals: each trk-> field lies at a large offset,
+     * which Thumb-1 loads from a literal at every use (a firmware's .text). */
+    uint16_t *const uf = trk->uf, *const first = trk->cl_first;
+    mtt_track_frame *const tfs = trk->tf;
+    const mtt_pair *const pairs = trk->pairs;
+    const uint16_t *const mp_first = trk->mp_first, *const mp_list = trk->mp_list;
+    const uint16_t nt = trk->n_tracks;
     uint16_t i, k, nc = 0, biggest = 0;
 
-    for (i = 0; i < trk->n_tracks; ++i) {
-        trk->uf[i] = i;
+    for (i = 0; i < nt; ++i) {
+        uf[i] = i;
+        first[i] = 0;
     }
+    first[nt] = 0;
     for (i = 0; i < trk->n_meas; ++i) {
-        uint16_t first = trk->mp_first[i], end = trk->mp_first[i + 1u];
-        if (end - first < 2) {
-            continue;
-        }
-        for (k = (uint16_t)(first + 1u); k < end; ++k) {
-            uint16_t ra = find_root(trk->uf, trk->pairs[trk->mp_list[first]].track);
-            uint16_t rb = find_root(trk->uf, trk->pairs[trk->mp_list[k]].track);
+        const uint16_t f = mp_first[i], end = mp_first[i + 1u];
+        for (k = (uint16_t)(f + 1u); k < end; ++k) {
+            uint16_t ra = find_root(uf, pairs[mp_list[f]].track);
+            uint16_t rb = find_root(uf, pairs[mp_list[k]].track);
             if (ra < rb) {
-                trk->uf[rb] = ra;
+                uf[rb] = ra;
             } else if (rb < ra) {
-                trk->uf[ra] = rb;
+                uf[ra] = rb;
             }
         }
     }
-    for (i = 0; i <= trk->n_tracks; ++i) {
-        trk->cl_first[i] = 0;
-    }
-    for (i = 0; i < trk->n_tracks; ++i) {
-        mtt_track_frame *tf = &trk->tf[i];
+    for (i = 0; i < nt; ++i) {
+        mtt_track_frame *tf = &tfs[i];
         uint16_t r;
         if (!tf->valid) {
             tf->cluster = MTT_NONE16;
             continue;
         }
-        r = find_root(trk->uf, i);
-        tf->cluster = (r == i) ? nc++ : trk->tf[r].cluster;
-        trk->cl_first[tf->cluster + 1u]++;
+        r = find_root(uf, i);
+        tf->cluster = (r == i) ? nc++ : tfs[r].cluster;
+        first[tf->cluster + 1u]++;
     }
     for (i = 0; i < nc; ++i) {
-        trk->cl_first[i + 1u] = (uint16_t)(trk->cl_first[i + 1u] + trk->cl_first[i]);
-        if (trk->cl_first[i + 1u] - trk->cl_first[i] > biggest) {
-            biggest = (uint16_t)(trk->cl_first[i + 1u] - trk->cl_first[i]);
+        const uint16_t size = first[i + 1u];
+        first[i + 1u] = (uint16_t)(size + first[i]);
+        if (size > biggest) {
+            biggest = size;
         }
     }
-    /* Fill with cl_first[c] as the cursor of c, then shift back (as in gate.c). */
-    for (i = 0; i < trk->n_tracks; ++i) {
-        uint16_t c = trk->tf[i].cluster;
+    /* Fill with first[c] as the cursor of c, then shift back (as in gate.c). */
+    for (i = 0; i < nt; ++i) {
+        uint16_t c = tfs[i].cluster;
         if (c != MTT_NONE16) {
-            trk->cl_list[trk->cl_first[c]] = i;
-            trk->cl_first[c]++;
+            trk->cl_list[first[c]] = i;
+            first[c]++;
         }
     }
-    mtt_csr_unshift(trk->cl_first, nc);
+    mtt_csr_unshift(first, nc);
     trk->n_clusters = nc;
     trk->stats.last.clusters = nc;
     trk->stats.max_cluster_tracks = biggest;

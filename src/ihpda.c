@@ -145,18 +145,20 @@ static void betas_amp(mtt_real pdpg, mtt_real vg, const mtt_cand *c, uint16_t m,
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best)
 {
-    const mtt_track_frame *tf = &trk->tf[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
     mtt_cand *c = trk->row.cand;
     uint16_t *pk = trk->row.pair;
     mtt_real *beta = trk->row.beta, *L = trk->row.L;
     uint8_t *rank = trk->row.rank;
     const mtt_real *prank = NULL;
     const int amp = MTT_CONTEST_ON(trk);
+    mtt_pair *const pairs = trk->pairs;
+    const mtt_mstore *const meas = trk->meas;
     uint16_t m = 0, k, b = 0;
 
     for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-        mtt_pair *pp = &trk->pairs[k];
-        const mtt_mstore *ms = &trk->meas[pp->meas];
+        mtt_pair *pp = &pairs[k];
+        const mtt_mstore *ms = &meas[pp->meas];
         pp->beta = MTT_ZERO;
         if (excl_used && ms->used && (int16_t)k != keep) {
             continue;
@@ -169,7 +171,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         ++m;
     }
     *best = -1;
-    trk->tf[ti].row_m = (uint8_t)m;
+    tf->row_m = (uint8_t)m;
     if (m == 0u) {
         return 0;
     }
@@ -187,8 +189,8 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
         mtt_ihpda_betas(trk->par.pd, trk->par.pg, tf->vg, prank, c, m, beta, L, rank);
     }
     for (k = 0; k < m; ++k) {
-        trk->pairs[pk[k]].beta = beta[k];
-        trk->pairs[pk[k]].L = L[k];
+        pairs[pk[k]].beta = beta[k];
+        pairs[pk[k]].L = L[k];
         /* Candidates are in measurement order, so a strict '>' keeps the
          * lower index on ties; rule 1 lets the smaller rank win first. */
         if (k == 0u || beta[k] > beta[b] || (rule == 1 && beta[k] == beta[b] && rank[k] < rank[b])) {

@@ -132,45 +132,52 @@ static int birth_ok(const mtt_state x, mtt_cov P)
 
 void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
 {
+    /* The arrays once in locals: Thumb-1 loads a large field offset from a
+     * literal at every use (a firmware's .text). */
+    mtt_mstore *const meas = trk->meas, *const prev = trk->prev;
+    uint16_t *const cand = trk->init_cand, *const prev_order = trk->prev_order;
     uint16_t j, a, k;
     if (trk->par.initiate && dt > MTT_ZERO && trk->n_prev > 0u) {
         /* U_k-1 sorted along x once: each z_k scans only the slice within
          * reach, O((n + pairs) log n) instead of |U_k| x |U_k-1|. */
         const mtt_real r = reach_x(trk, dt);
         for (j = 0; j < trk->n_meas; ++j) {
-            mtt_mstore *b = &trk->meas[j];
+            mtt_mstore *b = &meas[j];
+            mtt_pos x_lo, x_hi; /* the slice within reach */
             uint16_t lo = 0, hi = trk->n_prev, nc = 0;
             int started = 0;
             if (b->used) {
                 continue;
             }
+            x_lo = MTT_SUBS(b->x, r);
+            x_hi = MTT_ADDS(b->x, r);
             while (lo < hi) {
                 uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-                if (trk->prev[trk->prev_order[mid]].x < MTT_SUBS(b->x, r)) {
+                if (prev[prev_order[mid]].x < x_lo) {
                     lo = (uint16_t)(mid + 1u);
                 } else {
                     hi = mid;
                 }
             }
-            for (k = lo; k < trk->n_prev && trk->prev[trk->prev_order[k]].x <= MTT_ADDS(b->x, r); ++k) {
-                trk->init_cand[nc++] = trk->prev_order[k];
+            for (k = lo; k < trk->n_prev && prev[prev_order[k]].x <= x_hi; ++k) {
+                cand[nc++] = prev_order[k];
             }
             /* Births in input order of z_k-1, as a plain double loop would;
              * the slice is short, so insertion sort unless it is not. */
             if (nc > 16u) {
-                mtt_sort(trk->init_cand, nc, sizeof trk->init_cand[0], idx_less, NULL);
+                mtt_sort(cand, nc, sizeof cand[0], idx_less, NULL);
             } else {
                 uint16_t q, v;
                 for (k = 1; k < nc; ++k) {
-                    v = trk->init_cand[k];
-                    for (q = k; q > 0u && trk->init_cand[q - 1u] > v; --q) {
-                        trk->init_cand[q] = trk->init_cand[q - 1u];
+                    v = cand[k];
+                    for (q = k; q > 0u && cand[q - 1u] > v; --q) {
+                        cand[q] = cand[q - 1u];
                     }
-                    trk->init_cand[q] = v;
+                    cand[q] = v;
                 }
             }
             for (k = 0; k < nc; ++k) {
-                const mtt_mstore *pa = &trk->prev[trk->init_cand[k]];
+                const mtt_mstore *pa = &prev[cand[k]];
                 mtt_state x;
                 mtt_cov P;
                 if (!mtt_init_pair_ok(trk, pa, b, dt)) {
@@ -203,15 +210,15 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
      * init_cand maps a measurement to its place in prev. */
     trk->n_prev = 0;
     for (j = 0; j < trk->n_meas; ++j) {
-        if (!trk->meas[j].used) {
-            trk->init_cand[j] = trk->n_prev;
-            trk->prev[trk->n_prev++] = trk->meas[j];
+        if (!meas[j].used) {
+            cand[j] = trk->n_prev;
+            prev[trk->n_prev++] = meas[j];
         }
     }
     for (k = 0, a = 0; k < trk->n_meas; ++k) {
         j = trk->order[k];
-        if (!trk->meas[j].used) {
-            trk->prev_order[a++] = trk->init_cand[j];
+        if (!meas[j].used) {
+            prev_order[a++] = cand[j];
         }
     }
 }
@@ -235,13 +242,8 @@ mtt_status mtt_init_two_point_cov(mtt_real sx, mtt_real sy, mtt_real dt, mtt_rea
     {
         /* the CV part; fixed point: from the block to the variance format */
         mtt_cov Pm;
-        int i, j;
         mtt_motion_two_point_cov(R, dt, Pm);
-        for (i = 0; i < 4; ++i) {
-            for (j = 0; j < 4; ++j) {
-                P[i][j] = MTT_COV_VIEW(Pm, i, j);
-            }
-        }
+        mtt_cov_view4(Pm, P);
     }
 #endif
     return MTT_OK;

@@ -28,8 +28,11 @@ void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob
 #ifdef MTT_REAL_FIXED
     int k = 0;
 #endif
+    /* beta_j holds p_j / lambda_j until the betas are formed: one
+     * quotient per pair instead of two (three when Lambda saturates). */
     for (j = 0; j < m; ++j) {
-        big = MTT_ADDS(big, MTT_DIV_R(pp[j].p, pp[j].lam));
+        pp[j].beta = MTT_DIV_R(pp[j].p, pp[j].lam);
+        big = MTT_ADDS(big, pp[j].beta);
     }
     l = MTT_ADDS(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg)), MTT_MUL_RP(pdpg, big));
     lb = l;
@@ -38,13 +41,13 @@ void mtt_ipda_betas(mtt_prob pd, mtt_prob pg, mtt_pair *pp, uint16_t m, mtt_prob
         k = 32 - mtt_fx_clz(m); /* m < 2^k: the scaled sum stays below 2^31 */
         big = 0;
         for (j = 0; j < m; ++j) {
-            big += ROW(MTT_DIV_R(pp[j].p, pp[j].lam));
+            big += ROW(pp[j].beta);
         }
         lb = MTT_ADDS(ROW(MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), pdpg))), MTT_MUL_RP(pdpg, big));
     }
 #endif
     for (j = 0; j < m; ++j) {
-        pp[j].beta = MTT_DIV_P(MTT_MUL_RP(pdpg, ROW(MTT_DIV_R(pp[j].p, pp[j].lam))), lb);
+        pp[j].beta = MTT_DIV_P(MTT_MUL_RP(pdpg, ROW(pp[j].beta)), lb);
     }
     *beta0 = MTT_DIV_PR(MTT_SUB(MTT_P(1.0), pdpg), l);
     *L = l;

@@ -28,6 +28,11 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
 {
     const mtt_prob pdpg = MTT_MUL_PP(trk->par.pd, trk->par.pg);
     const mtt_prob pt_max = MTT_SUB(MTT_P(1.0), MTT_P(1e-6)); /* ALGORITHMS.md §16 clamp */
+    /* The arrays once in locals: Thumb-1 loads a large field offset from a
+     * literal at every use (a firmware's .text). */
+    mtt_pair *const pairs = trk->pairs;
+    const uint16_t *const mp_first = trk->mp_first, *const mp_list = trk->mp_list;
+    mtt_ratio *const wsum = trk->wsum;
 #if MTT_WITH_CONTEST
     const int amp = MTT_CONTEST_ON(trk);
 #endif
@@ -46,7 +51,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         }
         tf->lambda = lam;
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-            mtt_pair *pp = &trk->pairs[k];
+            mtt_pair *pp = &pairs[k];
 #if MTT_WITH_CONTEST
             const mtt_mstore *ms = &trk->meas[pp->meas];
             if (amp && ms->has_amp) {
@@ -76,7 +81,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
 #define LM_PT(p) MTT_DIV_P(MTT_MUL_RP(MTT_MUL_PP(pdpg, tf->ex_pred), (p)), sum)
 #endif
             for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-                mtt_pair *pp = &trk->pairs[k];
+                mtt_pair *pp = &pairs[k];
                 mtt_prob pt = LM_PT(pp->p);
                 if (pt > pt_max) {
                     pt = pt_max;
@@ -91,27 +96,27 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
     }
     for (i = 0; i < trk->n_meas; ++i) {
         mtt_ratio W = MTT_ZERO;
-        for (k = trk->mp_first[i]; k < trk->mp_first[i + 1u]; ++k) {
-            W = MTT_ADDS(W, trk->pairs[trk->mp_list[k]].w);
+        for (k = mp_first[i]; k < mp_first[i + 1u]; ++k) {
+            W = MTT_ADDS(W, pairs[mp_list[k]].w);
         }
-        trk->wsum[i] = W;
+        wsum[i] = W;
     }
     /* Pass 2: lambda~ = lambda + (W_j - w_j^t), clamped at 0 (ALGORITHMS.md §8.2). */
     for (k = 0; k < trk->n_pairs; ++k) {
-        mtt_pair *pp = &trk->pairs[k];
+        mtt_pair *pp = &pairs[k];
         uint16_t j = pp->meas;
-        uint16_t c = (uint16_t)(trk->mp_first[j + 1u] - trk->mp_first[j]);
+        uint16_t c = (uint16_t)(mp_first[j + 1u] - mp_first[j]);
         mtt_ratio others;
         if (c <= MTT_LM_DIRECT) {
             uint16_t q;
             others = MTT_ZERO;
-            for (q = trk->mp_first[j]; q < trk->mp_first[j + 1u]; ++q) {
-                if (trk->mp_list[q] != k) {
-                    others = MTT_ADDS(others, trk->pairs[trk->mp_list[q]].w);
+            for (q = mp_first[j]; q < mp_first[j + 1u]; ++q) {
+                if (mp_list[q] != k) {
+                    others = MTT_ADDS(others, pairs[mp_list[q]].w);
                 }
             }
         } else {
-            others = MTT_SUBS(trk->wsum[j], pp->w);
+            others = MTT_SUBS(wsum[j], pp->w);
             if (others < MTT_ZERO) {
                 others = MTT_ZERO;
             }

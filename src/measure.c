@@ -43,9 +43,8 @@ static int meas_ok(const mtt_meas *m)
     return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_ZERO);
 }
 
-static void store_meas(mtt_tracker *trk, const mtt_meas *m, uint32_t src)
+static void store_meas(mtt_mstore *s, const mtt_meas *m, uint32_t src)
 {
-    mtt_mstore *s = &trk->meas[trk->n_meas++];
     s->x = m->x;
     s->y = m->y;
     s->has_amp = (uint8_t)(m->has_amplitude != 0);
@@ -56,9 +55,9 @@ static void store_meas(mtt_tracker *trk, const mtt_meas *m, uint32_t src)
 
 void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
 {
+    uint32_t *const sel = trk->sel; /* in a local: a large field offset (a firmware's .text) */
     size_t i;
     uint32_t kept = 0, valid = 0;
-    trk->n_meas = 0;
     for (i = 0; i < n; ++i) {
         if (!meas_ok(&meas[i])) {
             trk->stats.last.meas_bad++;
@@ -66,24 +65,25 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
         }
         ++valid;
         if (kept < MTT_MAX_MEAS) {
-            trk->sel[kept++] = (uint32_t)i;
+            sel[kept++] = (uint32_t)i;
             if (kept == MTT_MAX_MEAS) {
                 uint32_t h;
                 for (h = MTT_MAX_MEAS / 2u; h > 0u; --h) {
-                    mtt_heap_sift(trk->sel, MTT_MAX_MEAS, sizeof trk->sel[0], h - 1u, sel_less, meas);
+                    mtt_heap_sift(sel, MTT_MAX_MEAS, sizeof sel[0], h - 1u, sel_less, meas);
                 }
             }
-        } else if (stronger(meas, (uint32_t)i, trk->sel[0])) {
-            trk->sel[0] = (uint32_t)i; /* the weakest kept one gives way */
-            mtt_heap_sift(trk->sel, MTT_MAX_MEAS, sizeof trk->sel[0], 0u, sel_less, meas);
+        } else if (stronger(meas, (uint32_t)i, sel[0])) {
+            sel[0] = (uint32_t)i; /* the weakest kept one gives way */
+            mtt_heap_sift(sel, MTT_MAX_MEAS, sizeof sel[0], 0u, sel_less, meas);
         }
     }
     trk->stats.last.meas_dropped = valid - kept;
     if (kept == MTT_MAX_MEAS) {
         /* the heap was built (even with nothing dropped): back to input order */
-        mtt_sort(trk->sel, kept, sizeof trk->sel[0], idx_less, NULL);
+        mtt_sort(sel, kept, sizeof sel[0], idx_less, NULL);
     }
     for (i = 0; i < kept; ++i) {
-        store_meas(trk, &meas[trk->sel[i]], trk->sel[i]);
+        store_meas(&trk->meas[i], &meas[sel[i]], sel[i]);
     }
+    trk->n_meas = (uint16_t)kept;
 }

@@ -69,28 +69,34 @@ static void add_cand(mtt_tracker *trk, mtt_d2 d2, uint16_t a, uint16_t b)
 void mtt_merge_frame(mtt_tracker *trk)
 {
     const mtt_d2 thr = trk->par.merge_threshold;
+    /* The arrays once in locals: Thumb-1 loads a large field offset from a
+     * literal at every use (a firmware's .text). */
+    const uint16_t *const first = trk->cl_first, *const list = trk->cl_list;
+    const mtt_track_frame *const tf = trk->tf;
+    mtt_track *const tracks = trk->tracks;
+    const mtt_merge_cand *const mc = trk->merge;
     uint16_t c, q1, q2, k;
     trk->n_merge = 0;
     if (!(thr > MTT_ZERO)) {
         return;
     }
     for (c = 0; c < trk->n_clusters; ++c) {
-        for (q1 = trk->cl_first[c]; q1 < trk->cl_first[c + 1u]; ++q1) {
-            for (q2 = (uint16_t)(q1 + 1u); q2 < trk->cl_first[c + 1u]; ++q2) {
-                uint16_t a = trk->cl_list[q1], b = trk->cl_list[q2];
+        for (q1 = first[c]; q1 < first[c + 1u]; ++q1) {
+            for (q2 = (uint16_t)(q1 + 1u); q2 < first[c + 1u]; ++q2) {
+                uint16_t a = list[q1], b = list[q2];
                 mtt_d2 d2;
                 /* A track the update found numerically invalid is deleted
                  * as such, not merged (it would be counted twice). */
-                if (!trk->tf[a].valid || !trk->tf[b].valid) {
+                if (!tf[a].valid || !tf[b].valid) {
                     continue;
                 }
                 /* lm-ihpda contest (ALGORITHMS.md §10.4): two tracks that both
                  * took the mixture this frame are two targets meeting, not
                  * one target tracked twice; merging them lost one. */
-                if (MTT_CONTESTED(&trk->tf[a]) && MTT_CONTESTED(&trk->tf[b])) {
+                if (MTT_CONTESTED(&tf[a]) && MTT_CONTESTED(&tf[b])) {
                     continue;
                 }
-                if (mtt_merge_d2(&trk->tracks[a], &trk->tracks[b], &d2) == 0 && d2 < thr) {
+                if (mtt_merge_d2(&tracks[a], &tracks[b], &d2) == 0 && d2 < thr) {
                     add_cand(trk, d2, a, b);
                 }
             }
@@ -98,7 +104,7 @@ void mtt_merge_frame(mtt_tracker *trk)
     }
     mtt_sort(trk->merge, trk->n_merge, sizeof trk->merge[0], less_cand, NULL);
     for (k = 0; k < trk->n_merge; ++k) {
-        mtt_track *ta = &trk->tracks[trk->merge[k].a], *tb = &trk->tracks[trk->merge[k].b];
+        mtt_track *ta = &tracks[mc[k].a], *tb = &tracks[mc[k].b];
         mtt_track *keep, *drop;
         mtt_real tra, trb;
         if (ta->dead || tb->dead) {

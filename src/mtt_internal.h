@@ -326,6 +326,9 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
                      int confirmed, int born);
 /* End of frame: delete, confirm, compact. */
 void mtt_track_manage(mtt_tracker *trk);
+/* The CV part of P as the API gives it: 4 x 4, in the fixed build in the
+ * variance format (MTT_COV_VIEW); P is only read. */
+void mtt_cov_view4(mtt_cov P, mtt_real out[4][4]);
 
 /* ==== Split targets (ALGORITHMS.md §14.3): split.c ======================
  * Built with MTT_WITH_SPLIT (include/mtt/config.h).  Plain functions over

@@ -311,11 +311,10 @@ mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
 
 mtt_status mtt_status_text(mtt_status s, const char **text)
 {
+    /* Short: a firmware links them (mtt.h's list says more). */
     static const char *const texts[] = {
-        "ok", "null pointer", "invalid parameter", "tracker not initialised",
-        "time not finite or not increasing", "index or count out of range",
-        "track table full", "state or covariance not finite or not positive definite",
-        "association mode not built into this version",
+        "ok", "null pointer", "invalid parameter", "not initialised", "time not increasing",
+        "out of range", "table full", "bad state or covariance", "not built in",
         "configuration mismatch"};
     int k = -(int)s;
     if (text == NULL) {

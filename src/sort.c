@@ -63,16 +63,12 @@ void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *m
         for (lo = 0; lo < n; lo += 2u * width) {
             uint32_t mid = lo + width < n ? lo + width : n;
             uint32_t hi = lo + 2u * width < n ? lo + 2u * width : n;
-            uint32_t i = lo, j = mid, k = lo;
-            while (i < mid && j < hi) {
-                /* '<=' keeps equal keys in their current (index) order. */
-                dst[k++] = (meas[src[i]].x <= meas[src[j]].x) ? src[i++] : src[j++];
-            }
-            while (i < mid) {
-                dst[k++] = src[i++];
-            }
-            while (j < hi) {
-                dst[k++] = src[j++];
+            uint32_t i = lo, j = mid, k;
+            /* One loop takes from either run ('<=' keeps equal keys in
+             * their current (index) order): less code than a merge loop
+             * and two tails (a firmware's .text). */
+            for (k = lo; k < hi; ++k) {
+                dst[k] = (j >= hi || (i < mid && meas[src[i]].x <= meas[src[j]].x)) ? src[i++] : src[j++];
             }
         }
         t = src;

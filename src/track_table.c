@@ -151,6 +151,16 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
     return MTT_OK;
 }
 
+void mtt_cov_view4(mtt_cov P, mtt_real out[4][4])
+{
+    int i, j;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            out[i][j] = MTT_COV_VIEW(P, i, j);
+        }
+    }
+}
+
 mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count)
 {
     if (trk == NULL || count == NULL) {
@@ -166,7 +176,7 @@ mtt_status mtt_tracker_count(const mtt_tracker *trk, size_t *count)
 mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *view)
 {
     const mtt_track *t;
-    int k, j;
+    int k;
     if (trk == NULL || view == NULL) {
         return MTT_ERR_NULL;
     }
@@ -182,10 +192,8 @@ mtt_status mtt_tracker_track(const mtt_tracker *trk, size_t i, mtt_track_view *v
     view->confirmed = t->confirmed;
     for (k = 0; k < 4; ++k) { /* the CV part: x, y, vx, vy */
         view->x[k] = t->x[k];
-        for (j = 0; j < 4; ++j) {
-            view->P[k][j] = MTT_COV_VIEW(t->P, k, j);
-        }
     }
+    mtt_cov_view4((mtt_real(*)[MTT_MAX_STATE])t->P, view->P); /* read only */
     view->existence = t->existence;
     view->age = t->age;
     view->meas = t->meas;

@@ -31,8 +31,9 @@ static void charge(mtt_tracker *trk, mtt_stage s, uint32_t *mark)
 
 /* tot += c, counter by counter: mtt_counts holds uint32_t counters only
  * (mtt.h), so one loop over its words instead of a line per member (a
- * firmware's .text; docs/FIRMWARE.md).  memcpy reads and writes each word
- * through its bytes, which C defines for any object. */
+ * firmware's .text; docs/FIRMWARE.md).  The byte offset k of a word is
+ * that of a uint32_t member, so the cast pointer points at that member and
+ * reads and writes it with its own type (no memcpy call per word). */
 typedef char mtt_counts_words[(sizeof(mtt_counts) % sizeof(uint32_t) == 0u) ? 1 : -1];
 static void add_counts(mtt_counts *tot, const mtt_counts *c)
 {
@@ -40,11 +41,7 @@ static void add_counts(mtt_counts *tot, const mtt_counts *c)
     const unsigned char *s = (const unsigned char *)c;
     size_t k;
     for (k = 0; k < sizeof *tot; k += sizeof(uint32_t)) {
-        uint32_t a, b;
-        memcpy(&a, t + k, sizeof a);
-        memcpy(&b, s + k, sizeof b);
-        a += b;
-        memcpy(t + k, &a, sizeof a);
+        *(uint32_t *)(void *)(t + k) += *(const uint32_t *)(const void *)(s + k);
     }
 }
 

@@ -23,14 +23,20 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
-    int i;
     /* memcpy of distinct objects: the element loops compiled to a memmove
      * call, which alone linked newlib's memmove into the firmware */
     memcpy(t->x, tf->xp, MTT_STATE_N * sizeof t->x[0]);
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
+#if MTT_MAX_STATE == MTT_STATE_N
+    memcpy(t->P, tf->Pp, sizeof t->P); /* the whole block (fixed point: with its exponent) */
+#else
+    {
+        int i;
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            memcpy(t->P[i], tf->Pp[i], MTT_STATE_N * sizeof t->P[i][0]);
+        }
+        MTT_COV_COPY_E(t->P, tf->Pp);
     }
-    MTT_COV_COPY_E(t->P, tf->Pp);
+#endif
     t->existence = mtt_existence_update(tf->ex_pred, MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(trk->par.pd, trk->par.pg))));
     t->meas = -1;
 }
@@ -64,22 +70,24 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
     mtt_track_frame *tf = &trk->tf[ti];
     mtt_real *beta = trk->row.beta;
     mtt_real(*nu)[2] = trk->row.nu;
+    const mtt_pair *const pairs = &trk->pairs[tf->pair_first];
+    mtt_mstore *const meas = trk->meas;
     uint16_t m = tf->pair_count, j, b = 0;
     for (j = 0; j < m; ++j) {
-        const mtt_pair *pp = &trk->pairs[tf->pair_first + j];
+        const mtt_pair *pp = &pairs[j];
         beta[j] = pp->beta;
-        nu[j][0] = trk->meas[pp->meas].x - tf->xp[0];
-        nu[j][1] = trk->meas[pp->meas].y - tf->xp[1];
+        nu[j][0] = meas[pp->meas].x - tf->xp[0];
+        nu[j][1] = meas[pp->meas].y - tf->xp[1];
         if (beta[j] > beta[b]) {
             b = j;
         }
         if (MTT_CONTESTED(tf) && beta[j] >= trk->par.contest_beta) {
-            trk->meas[pp->meas].used = 1;
+            meas[pp->meas].used = 1;
         }
     }
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
     t->existence = tf->ex_post;
-    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
+    t->meas = (int32_t)meas[pairs[b].meas].src;
 }
 
 #if MTT_WITH_BASELINES
@@ -154,6 +162,7 @@ void mtt_update_frame(mtt_tracker *trk)
     uint16_t i;
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &trk->tf[i];
+        const int one = kind == MTT_UPDATE_ONE && !MTT_CONTESTED(tf); /* the ONE update */
         if (!tf->valid) {
             continue; /* deleted by the manager (ALGORITHMS.md §3) */
         }
@@ -162,14 +171,10 @@ void mtt_update_frame(mtt_tracker *trk)
             update_imm(trk, i, kind); /* motion imm refuses the contest variant */
         } else
 #endif
-        if (kind == MTT_UPDATE_ONE && !MTT_CONTESTED(tf)) {
-            if (tf->assigned < 0) {
-                keep_prediction(trk, i);
-            } else {
-                update_one(trk, i, (uint16_t)tf->assigned);
-            }
-        } else if (tf->pair_count == 0u) {
-            keep_prediction(trk, i);
+        if (one ? tf->assigned < 0 : tf->pair_count == 0u) {
+            keep_prediction(trk, i); /* no measurement for this track */
+        } else if (one) {
+            update_one(trk, i, (uint16_t)tf->assigned);
 #if MTT_WITH_BASELINES
         } else if (kind == MTT_UPDATE_HARD) {
             update_nn(trk, i);

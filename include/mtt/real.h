@@ -138,7 +138,10 @@ typedef int32_t mtt_pos;
 #define MTT_DENS(x) MTT_FX_CONST(x, MTT_FX_DENS_FRAC)
 #define MTT_ZERO 0
 #define MTT_CNT(n) ((int32_t)(n) * ((int32_t)1 << MTT_FX_CNT_FRAC))
-#define MTT_REL_DENS(d) (((d) > 0) ? MTT_RATIO(1.0) : 0)
+/* The declared density relative to itself: 1.  mtt_params_check refuses
+ * a density that is not positive in this build (the estimated density of
+ * ALGORITHMS.md §5.2 has no reference), so the estimate is not compiled. */
+#define MTT_REL_DENS(d) MTT_RATIO(1.0)
 /* Existence floor of ALGORITHMS.md §16 (1e-30 in float): one Q30 unit. */
 #define MTT_P_FLOOR 0
 
