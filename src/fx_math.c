@@ -170,12 +170,68 @@ int32_t mtt_fx_mulq28(int32_t a, int32_t b)
     FX_MULQ_RETURN(a, b, 28);
 }
 
+/* round(2^46 / m) at the midpoint m of each interval [(64 + i) 2^24,
+ * (65 + i) 2^24) of a divisor in [2^30, 2^31): 7 bits of 2^46 / d. */
+static const uint16_t recip_tab[64] = {
+    65028u, 64035u, 63072u, 62138u, 61231u, 60350u, 59494u, 58662u,
+    57852u, 57065u, 56299u, 55554u, 54828u, 54120u, 53431u, 52759u,
+    52103u, 51464u, 50840u, 50231u, 49637u, 49056u, 48489u, 47935u,
+    47393u, 46864u, 46346u, 45839u, 45344u, 44859u, 44384u, 43919u,
+    43464u, 43019u, 42582u, 42154u, 41734u, 41323u, 40920u, 40525u,
+    40137u, 39756u, 39383u, 39017u, 38657u, 38304u, 37958u, 37617u,
+    37283u, 36954u, 36631u, 36314u, 36003u, 35696u, 35395u, 35099u,
+    34808u, 34521u, 34239u, 33962u, 33689u, 33421u, 33157u, 32897u};
+
+/* One quotient digit of b bits (b <= 11): q = floor(r 2^b / d) with
+ * r < d, d in [2^30, 2^31), and r becomes r 2^b - q d.  The estimate
+ * (r >> 15) v >> (31 - b) (below 2^31: v <= 2^46 / d) is never above q
+ * and at most 1 below it: the truncated r costs under 2^(b-15), v's
+ * deficit (< 7.1, fx_div_core) 7.1 2^(b-15), the floor 1, together
+ * < 1.5 for b = 11.  So the remainder, formed modulo 2^32, is in
+ * [0, 2d) and exact, and one comparison corrects the digit. */
+#define FX_DIV_DIGIT(q, b)                                   \
+    do {                                                     \
+        (q) = ((r >> 15) * v) >> (31 - (b));                 \
+        r = (r << (b)) - (q) * d;                            \
+        if (r >= d) {                                        \
+            r -= d;                                          \
+            ++(q);                                           \
+        }                                                    \
+    } while (0)
+
+/* floor(n 2^31 / d) for n, d in [2^30, 2^31) (below 2^32), and the
+ * remainder n 2^31 - q d in *rem: the restoring division's result, by
+ * three digits of 11, 10 and 10 bits after the integer bit.  v: 2^46 / d
+ * from the table and one Newton step on d1 = d >> 15, v1 = x0 + x0 e /
+ * 2^31 with e = 2^31 - d1 x0 (|e| < 2^31 / 128: x0 (e >> 10) fits).
+ * Newton from x0 of relative error < 2^-7 lands below 2^31 / d1 by at
+ * most 2^16 2^-14 = 4, the floors add < 1.04; 2^31 / d1 exceeds 2^46 / d
+ * by < 2 (d1 2^15 > d - 2^15), so v = v1 - 2 <= 2^46 / d, at most 7.1 below. */
+static uint32_t fx_div_core(uint32_t n, uint32_t d, uint32_t *rem)
+{
+    const uint32_t d1 = d >> 15;
+    const uint32_t x0 = recip_tab[(d >> 24) - 64u];
+    const int32_t e = (int32_t)(0x80000000u - d1 * x0);
+    const uint32_t v = (uint32_t)((int32_t)x0 + (((int32_t)x0 * (e >> 10)) >> 21)) - 2u;
+    uint32_t r = n, q0 = 0u, q1, q2, q3;
+    if (r >= d) {
+        q0 = 0x80000000u;
+        r -= d;
+    }
+    FX_DIV_DIGIT(q1, 11);
+    FX_DIV_DIGIT(q2, 10);
+    FX_DIV_DIGIT(q3, 10);
+    *rem = r;
+    return q0 | (q1 << 20) | (q2 << 10) | q3;
+}
+#undef FX_DIV_DIGIT
+
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
 {
     const uint32_t ua = mag(a), ub = mag(b);
     const int neg = (a < 0) != (b < 0);
-    uint32_t n, d, q = 0u, r;
-    int na, nb, sh, i;
+    uint32_t n, d, q, r;
+    int na, nb, sh;
     if (ub == 0u) {
         return (a > 0) ? MTT_FX_MAX : ((a < 0) ? MTT_FX_MIN : 0);
     }
@@ -184,37 +240,12 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
     }
     na = mtt_fx_clz(ua);
     nb = mtt_fx_clz(ub);
-    /* Both in [2^30, 2^31): n / d in (1/2, 2), and the doubled remainder
-     * (< 2 d < 2^32) never leaves 32 bits.  The shift drops no bit: a
+    /* Both in [2^30, 2^31): n / d in (1/2, 2).  The shift drops no bit: a
      * magnitude is at most 2^31, so na = 0 only for 2^31 itself. */
     n = (ua << na) >> 1;
     d = (ub << nb) >> 1;
-    /* q = floor(n / d 2^31) < 2^32: the integer bit, then 31 fraction bits,
-     * one per pass. */
-    if (n >= d) {
-        q = 1u;
-        n -= d;
-    }
-    /* unrolled by 31 = 6 x 5 + 1: the loop's own count and branch were a
-     * third of each pass on Cortex-M0+ (docs/FIXED_POINT.md, "Status") */
-#define FX_DIV_BIT()          \
-    do {                      \
-        n <<= 1;              \
-        q <<= 1;              \
-        if (n >= d) {         \
-            n -= d;           \
-            q += 1u;          \
-        }                     \
-    } while (0)
-    FX_DIV_BIT();
-    for (i = 0; i < 6; ++i) {
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-    }
-#undef FX_DIV_BIT
+    /* q = floor(n / d 2^31) < 2^32, n the remainder */
+    q = fx_div_core(n, d, &n);
     /* |a| 2^s / |b| = (n0 / d) 2^(s - na + nb) = q 2^-sh (+ the remainder). */
     sh = 31 + na - nb - s;
     if (sh < 0) {
