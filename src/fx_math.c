@@ -12,34 +12,28 @@
 
 #if defined(MTT_REAL_FIXED) || defined(MTT_FX_KERNELS)
 
+/* leading zeros of a 4-bit value (4 for 0) */
+static const uint8_t clz4_tab[16] = {4u, 3u, 2u, 2u, 1u, 1u, 1u, 1u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u};
+
 int mtt_fx_clz(uint32_t x)
 {
-    /* a binary search by shifts (no 32-bit constants to load on Thumb-1):
-     * n counts down from 32 while the leading bit is narrowed; 0 gives 32 */
-    uint32_t y;
-    int n = 32;
-    y = x >> 16;
-    if (y != 0u) {
-        n -= 16;
-        x = y;
+    /* the leading bit brought into the top nibble by shifts of 16, 8 and
+     * 4 (no 32-bit constants to load on Thumb-1), the nibble by a table;
+     * 0 gives 28 + 4 = 32 */
+    int n = 0;
+    if ((x >> 16) == 0u) {
+        n = 16;
+        x <<= 16;
     }
-    y = x >> 8;
-    if (y != 0u) {
-        n -= 8;
-        x = y;
+    if ((x >> 24) == 0u) {
+        n += 8;
+        x <<= 8;
     }
-    y = x >> 4;
-    if (y != 0u) {
-        n -= 4;
-        x = y;
+    if ((x >> 28) == 0u) {
+        n += 4;
+        x <<= 4;
     }
-    y = x >> 2;
-    if (y != 0u) {
-        n -= 2;
-        x = y;
-    }
-    /* x in 0..3 now: one leading bit more when x >= 2, n - x otherwise */
-    return ((x >> 1) != 0u) ? n - 2 : n - (int)x;
+    return n + (int)clz4_tab[x >> 28];
 }
 
 int32_t mtt_fx_add(int32_t a, int32_t b)
