@@ -327,7 +327,21 @@ uint32_t mtt_fx_sqrt(uint32_t x, int f)
 
 uint32_t mtt_fx_sqrt8(uint32_t x)
 {
-    return sqrt_digits(x, 0u, 8);
+    /* sqrt_digits(x, 0, 8) in one word: the radicand's top 16 bits, root
+     * < 2^8 and rem <= 2 root; the same steps and rounding */
+    uint32_t root = 0u, rem = 0u;
+    int i;
+    for (i = 0; i < 8; ++i) {
+        const uint32_t trial = (root << 2) | 1u;
+        rem = (rem << 2) | (x >> 30);
+        x <<= 2;
+        root <<= 1;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    return (rem > root) ? root + 1u : root;
 }
 
 /* 2^-(i/16) in Q30, i = 0..15, rounded. */
