@@ -182,7 +182,15 @@ int32_t mtt_fx_at(int32_t m, int from, int to)
     if (s == 0) {
         return m;
     }
-    return (-s > 30) ? ((m == 0) ? 0 : ((m > 0) ? MTT_FX_MAX : MTT_FX_MIN)) : mtt_fx_mul(m, (int32_t)1 << -s, 0);
+    if (m == 0) {
+        return 0;
+    }
+    /* m 2^-s, or MTT_FX_MAX with m's sign beyond it: mtt_fx_mul(m, 2^-s, 0)'s
+     * result (m = INT32_MIN saturates) without its 64-bit product */
+    if (-s > 30 || m == INT32_MIN || ((m < 0) ? -m : m) > (MTT_FX_MAX >> -s)) {
+        return (m > 0) ? MTT_FX_MAX : MTT_FX_MIN;
+    }
+    return m * ((int32_t)1 << -s);
 }
 
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
