@@ -254,8 +254,12 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
         r = (q >= 0x80000000u) ? 1u : 0u;
     } else {
         /* floor(floor(x) + c) / 2^sh = floor((x + c) / 2^sh): rounding the
-         * floored quotient is rounding the exact one. */
-        r = shr_round(0u, q, sh);
+         * floored quotient is rounding the exact one.  shr_round(0, q, sh)
+         * in one word: floor((q + 2^(sh-1)) / 2^sh) = t - floor(t / 2) with
+         * t = floor(q / 2^(sh-1)), at most 2^31 (saturated) */
+        const uint32_t t = q >> (sh - 1);
+        r = t - (t >> 1);
+        r = (r > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : r;
     }
     return neg ? -(int32_t)r : (int32_t)r;
 }
