@@ -145,7 +145,8 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
                             (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);                        \
         const int k = (s) - 18;                                                                    \
         const uint32_t high = (uint32_t)(ah * bh) << (32 - (s));                                   \
-        const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);                     \
+        const int32_t t = mid >> (k - 1); /* (mid + 2^(k-1)) >> k = t - (t >> 1): no constant */ \
+        const uint32_t low = (uint32_t)(t - (t >> 1));                                             \
         return (int32_t)(high + low);                                                              \
     } while (0)
 
