@@ -270,35 +270,44 @@ int32_t mtt_fx_recip(int32_t x, int s)
     return mtt_fx_div(1, x, s);
 }
 
-/* round(sqrt(hi:lo 2^(2 n - 64))): the top 2 n bits of the radicand hi:lo,
- * two bits per step. */
-static uint32_t sqrt_digits(uint32_t hi, uint32_t lo, int n)
+/* One step of the digit-by-digit root in one word: the next two radicand
+ * bits from the top of w, one root bit (rem <= 2 root before and after). */
+#define FX_SQRT_STEP(w)                       \
+    do {                                      \
+        const uint32_t trial = (root << 2) | 1u; \
+        rem = (rem << 2) | ((w) >> 30);       \
+        (w) <<= 2;                            \
+        root <<= 1;                           \
+        if (rem >= trial) {                   \
+            rem -= trial;                     \
+            root |= 1u;                       \
+        }                                     \
+    } while (0)
+
+/* round(sqrt(hi:lo)) (32 root bits), two radicand bits per step. */
+static uint32_t sqrt_digits(uint32_t hi, uint32_t lo)
 {
     uint32_t root = 0u, rem = 0u, remc = 0u;
     int i;
     /* The first 28 steps: root < 2^i and rem <= 2 root < 2^(i+1) after i
-     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each. */
-    for (i = 0; i < n && i < 28; ++i) {
-        uint32_t trial;
-        rem = (rem << 2) | (hi >> 30);
-        hi = (hi << 2) | (lo >> 30);
-        lo <<= 2;
-        trial = (root << 2) | 1u;
-        root <<= 1;
-        if (rem >= trial) {
-            rem -= trial;
-            root |= 1u;
-        }
+     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each.
+     * The first 16 take their bits from hi, the next 12 from lo (no
+     * 64-bit shift per step). */
+    for (i = 0; i < 16; ++i) {
+        FX_SQRT_STEP(hi);
     }
+    for (i = 0; i < 12; ++i) {
+        FX_SQRT_STEP(lo);
+    }
+    hi = lo; /* the last 8 bits, now at the top of lo */
     /* The last steps of a 32-bit root: root < 2^32 and rem <= 2 root, so
      * rem needs 33 bits: kept as rem (low 32) and remc (bit 32). */
-    for (; i < n; ++i) {
+    for (i = 0; i < 4; ++i) {
         /* rem = rem * 4 + next two bits; trial = 4 root + 1 (both up to 35 bits:
          * the high parts are tracked in remc / trc). */
         const uint32_t bits = hi >> 30;
         uint32_t trial, trc;
-        hi = (hi << 2) | (lo >> 30);
-        lo <<= 2;
+        hi <<= 2;
         remc = (remc << 2) | (rem >> 30);
         rem = (rem << 2) | bits;
         trc = root >> 30;
@@ -322,12 +331,12 @@ uint32_t mtt_fx_sqrt(uint32_t x, int f)
 {
     /* Radicand x 2^f = hi:lo (64 bits), 32 steps. */
     if (f == 0) {
-        return sqrt_digits(0u, x, 32);
+        return sqrt_digits(0u, x);
     }
     if (f < 32) {
-        return sqrt_digits(x >> (32 - f), x << f, 32);
+        return sqrt_digits(x >> (32 - f), x << f);
     }
-    return sqrt_digits(x, 0u, 32);
+    return sqrt_digits(x, 0u);
 }
 
 uint32_t mtt_fx_sqrt8(uint32_t x)
@@ -337,17 +346,11 @@ uint32_t mtt_fx_sqrt8(uint32_t x)
     uint32_t root = 0u, rem = 0u;
     int i;
     for (i = 0; i < 8; ++i) {
-        const uint32_t trial = (root << 2) | 1u;
-        rem = (rem << 2) | (x >> 30);
-        x <<= 2;
-        root <<= 1;
-        if (rem >= trial) {
-            rem -= trial;
-            root |= 1u;
-        }
+        FX_SQRT_STEP(x);
     }
     return (rem > root) ? root + 1u : root;
 }
+#undef FX_SQRT_STEP
 
 /* 2^-(i/16) in Q30, i = 0..15, rounded. */
 static const int32_t exp2_tab[16] = {
