@@ -67,17 +67,23 @@ static uint32_t mag(int32_t v)
     return (v < 0) ? (uint32_t)0u - (uint32_t)v : (uint32_t)v;
 }
 
-/* Exact ua * ub = hi:lo from four 16 x 16 -> 32 products. */
+/* Exact ua * ub = hi:lo from four 16 x 16 -> 32 products (a macro: the
+ * hot mtt_fx_mul keeps hi and lo in registers). */
+#define FX_UMULL(ua, ub, hi, lo)                                                                    \
+    do {                                                                                           \
+        const uint32_t al_ = (ua) & 0xFFFFu, ah_ = (ua) >> 16, bl_ = (ub) & 0xFFFFu, bh_ = (ub) >> 16; \
+        const uint32_t ll_ = al_ * bl_, hh_ = ah_ * bh_, m1_ = al_ * bh_, m2_ = ah_ * bl_;          \
+        /* mid = m1 + m2 may carry out of 32 bits: that carry is worth 2^48. */                    \
+        const uint32_t mid_ = m1_ + m2_;                                                           \
+        const uint32_t carry_ = (mid_ < m1_) ? 0x10000u : 0u;                                      \
+        const uint32_t l_ = ll_ + (mid_ << 16);                                                    \
+        (hi) = hh_ + (mid_ >> 16) + carry_ + ((l_ < ll_) ? 1u : 0u);                               \
+        (lo) = l_;                                                                                 \
+    } while (0)
+
 static void umull(uint32_t ua, uint32_t ub, uint32_t *hi, uint32_t *lo)
 {
-    const uint32_t al = ua & 0xFFFFu, ah = ua >> 16, bl = ub & 0xFFFFu, bh = ub >> 16;
-    const uint32_t ll = al * bl, hh = ah * bh, m1 = al * bh, m2 = ah * bl;
-    /* mid = m1 + m2 may carry out of 32 bits: that carry is worth 2^48. */
-    const uint32_t mid = m1 + m2;
-    const uint32_t carry = (mid < m1) ? 0x10000u : 0u;
-    const uint32_t l = ll + (mid << 16);
-    *hi = hh + (mid >> 16) + carry + ((l < ll) ? 1u : 0u);
-    *lo = l;
+    FX_UMULL(ua, ub, *hi, *lo);
 }
 
 int mtt_fx_mull(int32_t a, int32_t b, uint32_t *hi, uint32_t *lo)
@@ -124,7 +130,7 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
     if (ua == 0u || ub == 0u) {
         return 0;
     }
-    umull(ua, ub, &hi, &lo);
+    FX_UMULL(ua, ub, hi, lo);
     r = shr_round(hi, lo, s);
     return ((a < 0) != (b < 0)) ? -(int32_t)r : (int32_t)r;
 }
@@ -366,8 +372,8 @@ int32_t mtt_fx_exp_neg(uint32_t y, int *k)
     int32_t u, h;
     int i;
     /* t = y log2(e) in Q54: y le_hi + (y le_lo) / 2^32 (truncated). */
-    umull(y, le_hi, &th, &tl);
-    umull(y, le_lo, &ch, &cl);
+    FX_UMULL(y, le_hi, th, tl);
+    FX_UMULL(y, le_lo, ch, cl);
     (void)cl;
     {
         const uint32_t l = tl + ch;
