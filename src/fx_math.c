@@ -96,30 +96,28 @@ int mtt_fx_mull(int32_t a, int32_t b, uint32_t *hi, uint32_t *lo)
     return ((a < 0) != (b < 0)) ? -1 : 1;
 }
 
-/* round((hi:lo) / 2^s) (ties up), saturated to MTT_FX_MAX; 0 <= s <= 62. */
+/* round((hi:lo) / 2^s) (ties up), saturated to MTT_FX_MAX; 0 <= s <= 62,
+ * hi:lo < 2^62.  floor((x + 2^(s-1)) / 2^s) = t - floor(t / 2) with t =
+ * floor(x / 2^(s-1)): no 64-bit add; t >= 2^32 saturates. */
 static uint32_t shr_round(uint32_t hi, uint32_t lo, int s)
 {
-    uint32_t rh, rl;
+    const int k = s - 1;
+    uint32_t r;
     if (s == 0) {
         return (hi != 0u || lo > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : lo;
     }
-    /* + 2^(s-1), with the carry into the high word. */
-    if (s <= 32) {
-        const uint32_t half = (uint32_t)1u << (s - 1);
-        const uint32_t l = lo + half;
-        hi += (l < lo) ? 1u : 0u; /* hi < 2^62 / 2^32: no overflow */
-        lo = l;
-    } else {
-        hi += (uint32_t)1u << (s - 33);
+    if (k >= 32) {
+        lo = hi >> (k - 32);
+    } else if (k > 0) {
+        if ((hi >> k) != 0u) {
+            return (uint32_t)MTT_FX_MAX;
+        }
+        lo = (lo >> k) | (hi << (32 - k));
+    } else if (hi != 0u) {
+        return (uint32_t)MTT_FX_MAX;
     }
-    if (s < 32) {
-        rh = hi >> s;
-        rl = (lo >> s) | (hi << (32 - s));
-    } else {
-        rh = 0u;
-        rl = hi >> (s - 32);
-    }
-    return (rh != 0u || rl > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : rl;
+    r = lo - (lo >> 1);
+    return (r > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : r;
 }
 
 int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
