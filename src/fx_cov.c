@@ -49,17 +49,14 @@ static void shift_block(mtt_cov P, int s)
 {
     int i, j;
     /* the direction and shr_round's shift k = -s - 1 chosen once, not per
-     * entry (k > 30: every entry rounds to 0, as in shr_round) */
-    if (s > 0) {
+     * entry; beyond s = -31 every entry rounds to 0 (shr_round), written
+     * as a product by 0 with the left moves' loop (a loop of zeros would
+     * become a memset call on the stack's deepest path) */
+    if (s > 0 || s < -31) {
+        const int32_t m = (s > 0) ? (int32_t)1 << s : 0;
         for (i = 0; i < MTT_STATE_N; ++i) {
             for (j = 0; j < MTT_STATE_N; ++j) {
-                P[i][j] *= (int32_t)1 << s;
-            }
-        }
-    } else if (s < -31) {
-        for (i = 0; i < MTT_STATE_N; ++i) {
-            for (j = 0; j < MTT_STATE_N; ++j) {
-                P[i][j] = 0;
+                P[i][j] *= m;
             }
         }
     } else if (s < 0) {
