@@ -36,7 +36,11 @@ static int32_t shr_round(int32_t v, int s)
     if (s > 31) {
         return 0;
     }
-    return (v >> (s - 1) >> 1) + ((v >> (s - 1)) & 1);
+    {
+        /* t - floor(t / 2) = floor(t / 2) + (t & 1): no constant to load */
+        const int32_t t = v >> (s - 1);
+        return t - (t >> 1);
+    }
 }
 
 /* Mantissas times 2^s: exact for s > 0 (the caller keeps them below 2^31),
@@ -44,15 +48,23 @@ static int32_t shr_round(int32_t v, int s)
 static void shift_block(mtt_cov P, int s)
 {
     int i, j;
-    if (s == 0) {
-        return;
-    }
-    for (i = 0; i < MTT_STATE_N; ++i) {
-        for (j = 0; j < MTT_STATE_N; ++j) {
-            if (s > 0) {
-                P[i][j] *= (int32_t)1 << s;
-            } else {
-                P[i][j] = shr_round(P[i][j], -s);
+    /* the direction and shr_round's shift k = -s - 1 chosen once, not per
+     * entry; beyond s = -31 every entry rounds to 0 (shr_round), written
+     * as a product by 0 with the left moves' loop (a loop of zeros would
+     * become a memset call on the stack's deepest path) */
+    if (s > 0 || s < -31) {
+        const int32_t m = (s > 0) ? (int32_t)1 << s : 0;
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            for (j = 0; j < MTT_STATE_N; ++j) {
+                P[i][j] *= m;
+            }
+        }
+    } else if (s < 0) {
+        const int k = -s - 1;
+        for (i = 0; i < MTT_STATE_N; ++i) {
+            for (j = 0; j < MTT_STATE_N; ++j) {
+                const int32_t v = P[i][j] >> k;
+                P[i][j] = v - (v >> 1); /* as shr_round */
             }
         }
     }
@@ -167,7 +179,15 @@ int32_t mtt_fx_at(int32_t m, int from, int to)
     if (s == 0) {
         return m;
     }
-    return (-s > 30) ? ((m == 0) ? 0 : ((m > 0) ? MTT_FX_MAX : MTT_FX_MIN)) : mtt_fx_mul(m, (int32_t)1 << -s, 0);
+    if (m == 0) {
+        return 0;
+    }
+    /* m 2^-s, or MTT_FX_MAX with m's sign beyond it: mtt_fx_mul(m, 2^-s, 0)'s
+     * result (m = INT32_MIN saturates) without its 64-bit product */
+    if (-s > 30 || m == INT32_MIN || ((m < 0) ? -m : m) > (MTT_FX_MAX >> -s)) {
+        return (m > 0) ? MTT_FX_MAX : MTT_FX_MIN;
+    }
+    return m * ((int32_t)1 << -s);
 }
 
 int mtt_fx_s_exp(mtt_cov Pp, const int32_t R[3])
@@ -256,7 +276,10 @@ int32_t mtt_fx_shift(int32_t v, int s)
     /* shr_round's rounding written out: a call to it here makes GCC stop
      * inlining it into the prediction's exponent moves (+260 instructions
      * per track, as with mtt_fx_mahal2) */
-    return (v >> (-s - 1) >> 1) + ((v >> (-s - 1)) & 1);
+    {
+        const int32_t t = v >> (-s - 1);
+        return t - (t >> 1); /* floor(t / 2) + (t & 1), as shr_round */
+    }
 }
 
 uint32_t mtt_fx_or_abs(const int32_t *v, int n)

@@ -12,34 +12,28 @@
 
 #if defined(MTT_REAL_FIXED) || defined(MTT_FX_KERNELS)
 
+/* leading zeros of a 4-bit value (4 for 0) */
+static const uint8_t clz4_tab[16] = {4u, 3u, 2u, 2u, 1u, 1u, 1u, 1u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u};
+
 int mtt_fx_clz(uint32_t x)
 {
-    /* a binary search by shifts (no 32-bit constants to load on Thumb-1):
-     * n counts down from 32 while the leading bit is narrowed; 0 gives 32 */
-    uint32_t y;
-    int n = 32;
-    y = x >> 16;
-    if (y != 0u) {
-        n -= 16;
-        x = y;
+    /* the leading bit brought into the top nibble by shifts of 16, 8 and
+     * 4 (no 32-bit constants to load on Thumb-1), the nibble by a table;
+     * 0 gives 28 + 4 = 32 */
+    int n = 0;
+    if ((x >> 16) == 0u) {
+        n = 16;
+        x <<= 16;
     }
-    y = x >> 8;
-    if (y != 0u) {
-        n -= 8;
-        x = y;
+    if ((x >> 24) == 0u) {
+        n += 8;
+        x <<= 8;
     }
-    y = x >> 4;
-    if (y != 0u) {
-        n -= 4;
-        x = y;
+    if ((x >> 28) == 0u) {
+        n += 4;
+        x <<= 4;
     }
-    y = x >> 2;
-    if (y != 0u) {
-        n -= 2;
-        x = y;
-    }
-    /* x in 0..3 now: one leading bit more when x >= 2, n - x otherwise */
-    return ((x >> 1) != 0u) ? n - 2 : n - (int)x;
+    return n + (int)clz4_tab[x >> 28];
 }
 
 int32_t mtt_fx_add(int32_t a, int32_t b)
@@ -73,17 +67,23 @@ static uint32_t mag(int32_t v)
     return (v < 0) ? (uint32_t)0u - (uint32_t)v : (uint32_t)v;
 }
 
-/* Exact ua * ub = hi:lo from four 16 x 16 -> 32 products. */
+/* Exact ua * ub = hi:lo from four 16 x 16 -> 32 products (a macro: the
+ * hot mtt_fx_mul keeps hi and lo in registers). */
+#define FX_UMULL(ua, ub, hi, lo)                                                                    \
+    do {                                                                                           \
+        const uint32_t al_ = (ua) & 0xFFFFu, ah_ = (ua) >> 16, bl_ = (ub) & 0xFFFFu, bh_ = (ub) >> 16; \
+        const uint32_t ll_ = al_ * bl_, hh_ = ah_ * bh_, m1_ = al_ * bh_, m2_ = ah_ * bl_;          \
+        /* mid = m1 + m2 may carry out of 32 bits: that carry is worth 2^48. */                    \
+        const uint32_t mid_ = m1_ + m2_;                                                           \
+        const uint32_t carry_ = (mid_ < m1_) ? 0x10000u : 0u;                                      \
+        const uint32_t l_ = ll_ + (mid_ << 16);                                                    \
+        (hi) = hh_ + (mid_ >> 16) + carry_ + ((l_ < ll_) ? 1u : 0u);                               \
+        (lo) = l_;                                                                                 \
+    } while (0)
+
 static void umull(uint32_t ua, uint32_t ub, uint32_t *hi, uint32_t *lo)
 {
-    const uint32_t al = ua & 0xFFFFu, ah = ua >> 16, bl = ub & 0xFFFFu, bh = ub >> 16;
-    const uint32_t ll = al * bl, hh = ah * bh, m1 = al * bh, m2 = ah * bl;
-    /* mid = m1 + m2 may carry out of 32 bits: that carry is worth 2^48. */
-    const uint32_t mid = m1 + m2;
-    const uint32_t carry = (mid < m1) ? 0x10000u : 0u;
-    const uint32_t l = ll + (mid << 16);
-    *hi = hh + (mid >> 16) + carry + ((l < ll) ? 1u : 0u);
-    *lo = l;
+    FX_UMULL(ua, ub, *hi, *lo);
 }
 
 int mtt_fx_mull(int32_t a, int32_t b, uint32_t *hi, uint32_t *lo)
@@ -96,30 +96,28 @@ int mtt_fx_mull(int32_t a, int32_t b, uint32_t *hi, uint32_t *lo)
     return ((a < 0) != (b < 0)) ? -1 : 1;
 }
 
-/* round((hi:lo) / 2^s) (ties up), saturated to MTT_FX_MAX; 0 <= s <= 62. */
+/* round((hi:lo) / 2^s) (ties up), saturated to MTT_FX_MAX; 0 <= s <= 62,
+ * hi:lo < 2^62.  floor((x + 2^(s-1)) / 2^s) = t - floor(t / 2) with t =
+ * floor(x / 2^(s-1)): no 64-bit add; t >= 2^32 saturates. */
 static uint32_t shr_round(uint32_t hi, uint32_t lo, int s)
 {
-    uint32_t rh, rl;
+    const int k = s - 1;
+    uint32_t r;
     if (s == 0) {
         return (hi != 0u || lo > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : lo;
     }
-    /* + 2^(s-1), with the carry into the high word. */
-    if (s <= 32) {
-        const uint32_t half = (uint32_t)1u << (s - 1);
-        const uint32_t l = lo + half;
-        hi += (l < lo) ? 1u : 0u; /* hi < 2^62 / 2^32: no overflow */
-        lo = l;
-    } else {
-        hi += (uint32_t)1u << (s - 33);
+    if (k >= 32) {
+        lo = hi >> (k - 32);
+    } else if (k > 0) {
+        if ((hi >> k) != 0u) {
+            return (uint32_t)MTT_FX_MAX;
+        }
+        lo = (lo >> k) | (hi << (32 - k));
+    } else if (hi != 0u) {
+        return (uint32_t)MTT_FX_MAX;
     }
-    if (s < 32) {
-        rh = hi >> s;
-        rl = (lo >> s) | (hi << (32 - s));
-    } else {
-        rh = 0u;
-        rl = hi >> (s - 32);
-    }
-    return (rh != 0u || rl > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : rl;
+    r = lo - (lo >> 1);
+    return (r > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : r;
 }
 
 int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
@@ -130,7 +128,7 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
     if (ua == 0u || ub == 0u) {
         return 0;
     }
-    umull(ua, ub, &hi, &lo);
+    FX_UMULL(ua, ub, hi, lo);
     r = shr_round(hi, lo, s);
     return ((a < 0) != (b < 0)) ? -(int32_t)r : (int32_t)r;
 }
@@ -151,7 +149,8 @@ int32_t mtt_fx_mul(int32_t a, int32_t b, int s)
                             (int32_t)(((uint32_t)al * (uint32_t)bl) >> 18);                        \
         const int k = (s) - 18;                                                                    \
         const uint32_t high = (uint32_t)(ah * bh) << (32 - (s));                                   \
-        const uint32_t low = (uint32_t)((mid + ((int32_t)1 << (k - 1))) >> k);                     \
+        const int32_t t = mid >> (k - 1); /* (mid + 2^(k-1)) >> k = t - (t >> 1): no constant */ \
+        const uint32_t low = (uint32_t)(t - (t >> 1));                                             \
         return (int32_t)(high + low);                                                              \
     } while (0)
 
@@ -170,12 +169,68 @@ int32_t mtt_fx_mulq28(int32_t a, int32_t b)
     FX_MULQ_RETURN(a, b, 28);
 }
 
+/* round(2^46 / m) at the midpoint m of each interval [(64 + i) 2^24,
+ * (65 + i) 2^24) of a divisor in [2^30, 2^31): 7 bits of 2^46 / d. */
+static const uint16_t recip_tab[64] = {
+    65028u, 64035u, 63072u, 62138u, 61231u, 60350u, 59494u, 58662u,
+    57852u, 57065u, 56299u, 55554u, 54828u, 54120u, 53431u, 52759u,
+    52103u, 51464u, 50840u, 50231u, 49637u, 49056u, 48489u, 47935u,
+    47393u, 46864u, 46346u, 45839u, 45344u, 44859u, 44384u, 43919u,
+    43464u, 43019u, 42582u, 42154u, 41734u, 41323u, 40920u, 40525u,
+    40137u, 39756u, 39383u, 39017u, 38657u, 38304u, 37958u, 37617u,
+    37283u, 36954u, 36631u, 36314u, 36003u, 35696u, 35395u, 35099u,
+    34808u, 34521u, 34239u, 33962u, 33689u, 33421u, 33157u, 32897u};
+
+/* One quotient digit of b bits (b <= 11): q = floor(r 2^b / d) with
+ * r < d, d in [2^30, 2^31), and r becomes r 2^b - q d.  The estimate
+ * (r >> 15) v >> (31 - b) (below 2^31: v <= 2^46 / d) is never above q
+ * and at most 1 below it: the truncated r costs under 2^(b-15), v's
+ * deficit (< 7.1, fx_div_core) 7.1 2^(b-15), the floor 1, together
+ * < 1.5 for b = 11.  So the remainder, formed modulo 2^32, is in
+ * [0, 2d) and exact, and one comparison corrects the digit. */
+#define FX_DIV_DIGIT(q, b)                                   \
+    do {                                                     \
+        (q) = ((r >> 15) * v) >> (31 - (b));                 \
+        r = (r << (b)) - (q) * d;                            \
+        if (r >= d) {                                        \
+            r -= d;                                          \
+            ++(q);                                           \
+        }                                                    \
+    } while (0)
+
+/* floor(n 2^31 / d) for n, d in [2^30, 2^31) (below 2^32), and the
+ * remainder n 2^31 - q d in *rem: the restoring division's result, by
+ * three digits of 11, 10 and 10 bits after the integer bit.  v: 2^46 / d
+ * from the table and one Newton step on d1 = d >> 15, v1 = x0 + x0 e /
+ * 2^31 with e = 2^31 - d1 x0 (|e| < 2^31 / 128: x0 (e >> 10) fits).
+ * Newton from x0 of relative error < 2^-7 lands below 2^31 / d1 by at
+ * most 2^16 2^-14 = 4, the floors add < 1.04; 2^31 / d1 exceeds 2^46 / d
+ * by < 2 (d1 2^15 > d - 2^15), so v = v1 - 2 <= 2^46 / d, at most 7.1 below. */
+static uint32_t fx_div_core(uint32_t n, uint32_t d, uint32_t *rem)
+{
+    const uint32_t d1 = d >> 15;
+    const uint32_t x0 = recip_tab[(d >> 24) - 64u];
+    const int32_t e = (int32_t)(0x80000000u - d1 * x0);
+    const uint32_t v = (uint32_t)((int32_t)x0 + (((int32_t)x0 * (e >> 10)) >> 21)) - 2u;
+    uint32_t r = n, q0 = 0u, q1, q2, q3;
+    if (r >= d) {
+        q0 = 0x80000000u;
+        r -= d;
+    }
+    FX_DIV_DIGIT(q1, 11);
+    FX_DIV_DIGIT(q2, 10);
+    FX_DIV_DIGIT(q3, 10);
+    *rem = r;
+    return q0 | (q1 << 20) | (q2 << 10) | q3;
+}
+#undef FX_DIV_DIGIT
+
 int32_t mtt_fx_div(int32_t a, int32_t b, int s)
 {
     const uint32_t ua = mag(a), ub = mag(b);
     const int neg = (a < 0) != (b < 0);
-    uint32_t n, d, q = 0u, r;
-    int na, nb, sh, i;
+    uint32_t n, d, q, r;
+    int na, nb, sh;
     if (ub == 0u) {
         return (a > 0) ? MTT_FX_MAX : ((a < 0) ? MTT_FX_MIN : 0);
     }
@@ -184,37 +239,12 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
     }
     na = mtt_fx_clz(ua);
     nb = mtt_fx_clz(ub);
-    /* Both in [2^30, 2^31): n / d in (1/2, 2), and the doubled remainder
-     * (< 2 d < 2^32) never leaves 32 bits.  The shift drops no bit: a
+    /* Both in [2^30, 2^31): n / d in (1/2, 2).  The shift drops no bit: a
      * magnitude is at most 2^31, so na = 0 only for 2^31 itself. */
     n = (ua << na) >> 1;
     d = (ub << nb) >> 1;
-    /* q = floor(n / d 2^31) < 2^32: the integer bit, then 31 fraction bits,
-     * one per pass. */
-    if (n >= d) {
-        q = 1u;
-        n -= d;
-    }
-    /* unrolled by 31 = 6 x 5 + 1: the loop's own count and branch were a
-     * third of each pass on Cortex-M0+ (docs/FIXED_POINT.md, "Status") */
-#define FX_DIV_BIT()          \
-    do {                      \
-        n <<= 1;              \
-        q <<= 1;              \
-        if (n >= d) {         \
-            n -= d;           \
-            q += 1u;          \
-        }                     \
-    } while (0)
-    FX_DIV_BIT();
-    for (i = 0; i < 6; ++i) {
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-        FX_DIV_BIT();
-    }
-#undef FX_DIV_BIT
+    /* q = floor(n / d 2^31) < 2^32, n the remainder */
+    q = fx_div_core(n, d, &n);
     /* |a| 2^s / |b| = (n0 / d) 2^(s - na + nb) = q 2^-sh (+ the remainder). */
     sh = 31 + na - nb - s;
     if (sh < 0) {
@@ -229,8 +259,12 @@ int32_t mtt_fx_div(int32_t a, int32_t b, int s)
         r = (q >= 0x80000000u) ? 1u : 0u;
     } else {
         /* floor(floor(x) + c) / 2^sh = floor((x + c) / 2^sh): rounding the
-         * floored quotient is rounding the exact one. */
-        r = shr_round(0u, q, sh);
+         * floored quotient is rounding the exact one.  shr_round(0, q, sh)
+         * in one word: floor((q + 2^(sh-1)) / 2^sh) = t - floor(t / 2) with
+         * t = floor(q / 2^(sh-1)), at most 2^31 (saturated) */
+        const uint32_t t = q >> (sh - 1);
+        r = t - (t >> 1);
+        r = (r > (uint32_t)MTT_FX_MAX) ? (uint32_t)MTT_FX_MAX : r;
     }
     return neg ? -(int32_t)r : (int32_t)r;
 }
@@ -240,35 +274,44 @@ int32_t mtt_fx_recip(int32_t x, int s)
     return mtt_fx_div(1, x, s);
 }
 
-/* round(sqrt(hi:lo 2^(2 n - 64))): the top 2 n bits of the radicand hi:lo,
- * two bits per step. */
-static uint32_t sqrt_digits(uint32_t hi, uint32_t lo, int n)
+/* One step of the digit-by-digit root in one word: the next two radicand
+ * bits from the top of w, one root bit (rem <= 2 root before and after). */
+#define FX_SQRT_STEP(w)                       \
+    do {                                      \
+        const uint32_t trial = (root << 2) | 1u; \
+        rem = (rem << 2) | ((w) >> 30);       \
+        (w) <<= 2;                            \
+        root <<= 1;                           \
+        if (rem >= trial) {                   \
+            rem -= trial;                     \
+            root |= 1u;                       \
+        }                                     \
+    } while (0)
+
+/* round(sqrt(hi:lo)) (32 root bits), two radicand bits per step. */
+static uint32_t sqrt_digits(uint32_t hi, uint32_t lo)
 {
     uint32_t root = 0u, rem = 0u, remc = 0u;
     int i;
     /* The first 28 steps: root < 2^i and rem <= 2 root < 2^(i+1) after i
-     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each. */
-    for (i = 0; i < n && i < 28; ++i) {
-        uint32_t trial;
-        rem = (rem << 2) | (hi >> 30);
-        hi = (hi << 2) | (lo >> 30);
-        lo <<= 2;
-        trial = (root << 2) | 1u;
-        root <<= 1;
-        if (rem >= trial) {
-            rem -= trial;
-            root |= 1u;
-        }
+     * steps, so 4 rem + 3 and 4 root + 1 stay below 2^31: one word each.
+     * The first 16 take their bits from hi, the next 12 from lo (no
+     * 64-bit shift per step). */
+    for (i = 0; i < 16; ++i) {
+        FX_SQRT_STEP(hi);
     }
+    for (i = 0; i < 12; ++i) {
+        FX_SQRT_STEP(lo);
+    }
+    hi = lo; /* the last 8 bits, now at the top of lo */
     /* The last steps of a 32-bit root: root < 2^32 and rem <= 2 root, so
      * rem needs 33 bits: kept as rem (low 32) and remc (bit 32). */
-    for (; i < n; ++i) {
+    for (i = 0; i < 4; ++i) {
         /* rem = rem * 4 + next two bits; trial = 4 root + 1 (both up to 35 bits:
          * the high parts are tracked in remc / trc). */
         const uint32_t bits = hi >> 30;
         uint32_t trial, trc;
-        hi = (hi << 2) | (lo >> 30);
-        lo <<= 2;
+        hi <<= 2;
         remc = (remc << 2) | (rem >> 30);
         rem = (rem << 2) | bits;
         trc = root >> 30;
@@ -292,18 +335,26 @@ uint32_t mtt_fx_sqrt(uint32_t x, int f)
 {
     /* Radicand x 2^f = hi:lo (64 bits), 32 steps. */
     if (f == 0) {
-        return sqrt_digits(0u, x, 32);
+        return sqrt_digits(0u, x);
     }
     if (f < 32) {
-        return sqrt_digits(x >> (32 - f), x << f, 32);
+        return sqrt_digits(x >> (32 - f), x << f);
     }
-    return sqrt_digits(x, 0u, 32);
+    return sqrt_digits(x, 0u);
 }
 
 uint32_t mtt_fx_sqrt8(uint32_t x)
 {
-    return sqrt_digits(x, 0u, 8);
+    /* sqrt_digits(x, 0, 8) in one word: the radicand's top 16 bits, root
+     * < 2^8 and rem <= 2 root; the same steps and rounding */
+    uint32_t root = 0u, rem = 0u;
+    int i;
+    for (i = 0; i < 8; ++i) {
+        FX_SQRT_STEP(x);
+    }
+    return (rem > root) ? root + 1u : root;
 }
+#undef FX_SQRT_STEP
 
 /* 2^-(i/16) in Q30, i = 0..15, rounded. */
 static const int32_t exp2_tab[16] = {
@@ -319,8 +370,8 @@ int32_t mtt_fx_exp_neg(uint32_t y, int *k)
     int32_t u, h;
     int i;
     /* t = y log2(e) in Q54: y le_hi + (y le_lo) / 2^32 (truncated). */
-    umull(y, le_hi, &th, &tl);
-    umull(y, le_lo, &ch, &cl);
+    FX_UMULL(y, le_hi, th, tl);
+    FX_UMULL(y, le_lo, ch, cl);
     (void)cl;
     {
         const uint32_t l = tl + ch;

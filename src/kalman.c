@@ -331,7 +331,13 @@ static int ff_scale(mtt_cov A, struct ff *f)
         for (j = 0; j <= i; ++j) {
             const int32_t v = A[i][j];
             const int tt = f->t[i] + f->t[j];
-            const int32_t m = (tt > 0 && ((v < 0) ? -v : v) >> (30 - tt) != 0) ? MTT_FX_MAX : mtt_fx_shift(v, tt);
+            int32_t m;
+            if (tt >= 0) {
+                m = (tt > 0 && ((v < 0) ? -v : v) >> (30 - tt) != 0) ? MTT_FX_MAX : v * ((int32_t)1 << tt);
+            } else {
+                const int32_t h = v >> (-tt - 1); /* tt >= -2: mtt_fx_shift's rounding inline */
+                m = h - (h >> 1);
+            }
             if (!(((m < 0) ? -m : m) < ((int32_t)1 << 30))) {
                 return -1;
             }

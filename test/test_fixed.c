@@ -257,6 +257,24 @@ static void test_div(void)
             }
         }
     }
+    /* The quotient digits' worst cases (fx_math.c): divisors at both ends
+     * of each of the reciprocal table's 64 intervals and with the bits
+     * below d >> 15 all set (the Newton step's largest deficit), numerators
+     * just below the divisor (the largest digits) and at the edges. */
+    for (i = 0; i < 64; ++i) {
+        const int32_t d[4] = {(int32_t)((64 + i) << 24), (int32_t)(((65 + i) << 24) - 1),
+                              (int32_t)(((64 + i) << 24) | 0x7FFF), (int32_t)(((64 + i) << 24) | 0x00FFFFFF)};
+        int k, j;
+        for (k = 0; k < 4; ++k) {
+            const int32_t n[5] = {d[k] - 1, d[k], d[k] + 1, 1 << 30, MTT_FX_MAX};
+            for (j = 0; j < 5; ++j) {
+                for (s = 28; s <= 31; ++s) {
+                    check_div_exact(n[j], d[k], s, mtt_fx_div(n[j], d[k], s));
+                    check_div_exact(-n[j], d[k] >> 9, s - 9, mtt_fx_div(-n[j], d[k] >> 9, s - 9));
+                }
+            }
+        }
+    }
     /* division by zero and overflow saturate */
     TEST_ASSERT_EQUAL_INT32(MTT_FX_MAX, mtt_fx_div(5, 0, 0));
     TEST_ASSERT_EQUAL_INT32(MTT_FX_MIN, mtt_fx_div(-5, 0, 10));

@@ -56,9 +56,10 @@ int32_t mtt_fx_mulq30(int32_t a, int32_t b);
 int32_t mtt_fx_mulq28(int32_t a, int32_t b);
 
 /* round(a * 2^s / b), saturated; 0 <= s <= 62.  b = 0 saturates with
- * the sign of a (0 / 0 = 0).  Restoring division of the normalised
- * operands (32 quotient bits + a rounding bit): correctly rounded,
- * error <= 0.5 ulp. */
+ * the sign of a (0 / 0 = 0).  The normalised operands' 32 quotient bits
+ * (three digits from a table-and-Newton reciprocal, each corrected by its
+ * exact remainder: the restoring division's bits) + a rounding bit:
+ * correctly rounded, error <= 0.5 ulp. */
 int32_t mtt_fx_div(int32_t a, int32_t b, int s);
 
 /* round(2^s / x), saturated; 0 <= s <= 62 (mtt_fx_div(1, x, s)). */
