@@ -226,12 +226,12 @@ static int less_pair(const void *a, const void *b, const void *ctx)
 }
 
 /* First position in the x-sorted order whose x >= v. */
-static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_pos v)
+static uint16_t lower_bound_x(const mtt_mstore *meas, const uint16_t *order, uint16_t n, mtt_pos v)
 {
-    uint16_t lo = 0, hi = trk->n_meas;
+    uint16_t lo = 0, hi = n;
     while (lo < hi) {
         uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-        if (trk->meas[trk->order[mid]].x < v) {
+        if (meas[order[mid]].x < v) {
             lo = (uint16_t)(mid + 1u);
         } else {
             hi = mid;
@@ -241,22 +241,22 @@ static uint16_t lower_bound_x(const mtt_tracker *trk, mtt_pos v)
 }
 
 /* Beyond MTT_MAX_PAIRS: the least likely pair of the frame gives way (docs/DESIGN.md). */
-static void push_pair(mtt_tracker *trk, const mtt_pair *np, int *resort)
+static void push_pair(mtt_tracker *trk, mtt_pair *pairs, const mtt_pair *np, int *resort)
 {
     uint16_t k, worst = 0;
     if (trk->n_pairs < MTT_MAX_PAIRS) {
-        trk->pairs[trk->n_pairs++] = *np;
+        pairs[trk->n_pairs++] = *np;
         return;
     }
     trk->stats.last.pairs_dropped++;
     for (k = 1; k < MTT_MAX_PAIRS; ++k) {
-        if (trk->pairs[k].p < trk->pairs[worst].p ||
-            (trk->pairs[k].p == trk->pairs[worst].p && less_pair(&trk->pairs[worst], &trk->pairs[k], NULL))) {
+        if (pairs[k].p < pairs[worst].p ||
+            (pairs[k].p == pairs[worst].p && less_pair(&pairs[worst], &pairs[k], NULL))) {
             worst = k;
         }
     }
-    if (np->p > trk->pairs[worst].p) {
-        trk->pairs[worst] = *np;
+    if (np->p > pairs[worst].p) {
+        pairs[worst] = *np;
         *resort = 1;
     }
 }
@@ -264,6 +264,13 @@ static void push_pair(mtt_tracker *trk, const mtt_pair *np, int *resort)
 void mtt_gate_frame(mtt_tracker *trk)
 {
     const uint16_t n = trk->n_meas;
+    /* the tracker's arrays in locals: on Thumb-1 their fields lie beyond a
+     * load's offset (docs/FIXED_POINT.md, "Size measures") */
+    const mtt_mstore *meas = trk->meas;
+    uint16_t *order = trk->order;
+    mtt_pair *pairs = trk->pairs;
+    mtt_track_frame *tfs = trk->tf;
+    uint16_t *mp_first = trk->mp_first;
     uint16_t cm[MTT_MAX_GATED];
     mtt_d2 cd[MTT_MAX_GATED];
     uint16_t i, k;
@@ -276,9 +283,9 @@ void mtt_gate_frame(mtt_tracker *trk)
 #endif
 
     for (i = 0; i < n; ++i) {
-        trk->order[i] = i;
+        order[i] = i;
     }
-    mtt_sort_by_x(trk->order, trk->init_cand, n, trk->meas);
+    mtt_sort_by_x(order, trk->init_cand, n, meas);
     trk->n_pairs = 0;
 #ifdef MTT_REAL_FIXED
     /* one gamma for every track: no adaptive JPDA in the fixed build */
@@ -286,7 +293,7 @@ void mtt_gate_frame(mtt_tracker *trk)
 #endif
 
     for (i = 0; i < trk->n_tracks; ++i) {
-        mtt_track_frame *tf = &trk->tf[i];
+        mtt_track_frame *tf = &tfs[i];
         mtt_pos zx = tf->xp[0], zy = tf->xp[1], wx, wy;
         mtt_d2 gamma = trk->gamma;
         uint16_t nc = 0, a, b;
@@ -314,9 +321,9 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
-        for (k = lower_bound_x(trk, MTT_SUBS(zx, wx)); k < n; ++k) {
-            uint16_t j = trk->order[k];
-            mtt_pos dx = MTT_SUBS(trk->meas[j].x, zx), dy = MTT_SUBS(trk->meas[j].y, zy);
+        for (k = lower_bound_x(meas, order, n, MTT_SUBS(zx, wx)); k < n; ++k) {
+            uint16_t j = order[k];
+            mtt_pos dx = MTT_SUBS(meas[j].x, zx), dy = MTT_SUBS(meas[j].y, zy);
             mtt_d2 d2;
             if (dx > wx) {
                 break;
@@ -325,7 +332,7 @@ void mtt_gate_frame(mtt_tracker *trk)
                 continue;
             }
 #if MTT_WITH_IMM
-            d2 = imm ? mtt_imm_gate_d2(trk, i, trk->meas[j].x, trk->meas[j].y) : mtt_mahal2(tf->Si, dx, dy);
+            d2 = imm ? mtt_imm_gate_d2(trk, i, meas[j].x, meas[j].y) : mtt_mahal2(tf->Si, dx, dy);
 #else
             d2 = mtt_mahal2(tf->Si, dx, dy);
 #endif
@@ -368,7 +375,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.meas = cm[a];
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
-            np.p = imm ? mtt_imm_gate_p(trk, i, trk->meas[cm[a]].x, trk->meas[cm[a]].y)
+            np.p = imm ? mtt_imm_gate_p(trk, i, meas[cm[a]].x, meas[cm[a]].y)
                        : MTT_GATE_LIK(peak, cd[a]);
 #else
             np.p = MTT_GATE_LIK(peak, cd[a]);
@@ -377,45 +384,45 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.lam = MTT_ZERO;
             np.beta = MTT_ZERO;
             np.g = MTT_RATIO(1.0);
-            push_pair(trk, &np, &resort);
+            push_pair(trk, pairs, &np, &resort);
         }
     }
     if (resort) {
-        mtt_sort(trk->pairs, trk->n_pairs, sizeof trk->pairs[0], less_pair, NULL);
+        mtt_sort(pairs, trk->n_pairs, sizeof pairs[0], less_pair, NULL);
     }
 
     /* Per-track ranges (pairs are sorted by track). */
     for (i = 0; i < trk->n_tracks; ++i) {
-        trk->tf[i].pair_count = 0;
-        trk->tf[i].pair_first = 0;
-        trk->tf[i].has_all_amp = 1;
+        tfs[i].pair_count = 0;
+        tfs[i].pair_first = 0;
+        tfs[i].has_all_amp = 1;
     }
     for (k = trk->n_pairs; k > 0; --k) {
-        const mtt_pair *pp = &trk->pairs[k - 1u];
-        mtt_track_frame *tf = &trk->tf[pp->track];
+        const mtt_pair *pp = &pairs[k - 1u];
+        mtt_track_frame *tf = &tfs[pp->track];
         tf->pair_first = (uint16_t)(k - 1u);
         tf->pair_count++;
-        if (!trk->meas[pp->meas].has_amp) {
+        if (!meas[pp->meas].has_amp) {
             tf->has_all_amp = 0;
         }
     }
     /* Pairs of each measurement (CSR), ascending track. */
     for (i = 0; i <= n; ++i) {
-        trk->mp_first[i] = 0;
+        mp_first[i] = 0;
     }
     for (k = 0; k < trk->n_pairs; ++k) {
-        trk->mp_first[trk->pairs[k].meas + 1u]++;
+        mp_first[pairs[k].meas + 1u]++;
     }
     for (i = 0; i < n; ++i) {
-        trk->mp_first[i + 1u] = (uint16_t)(trk->mp_first[i + 1u] + trk->mp_first[i]);
+        mp_first[i + 1u] = (uint16_t)(mp_first[i + 1u] + mp_first[i]);
     }
     /* Fill with mp_first[j] as the cursor of j; it then holds the end of j,
      * which is the start of j + 1: shift back by one. */
     for (k = 0; k < trk->n_pairs; ++k) {
-        uint16_t j = trk->pairs[k].meas;
-        trk->mp_list[trk->mp_first[j]] = k;
-        trk->mp_first[j]++;
+        uint16_t j = pairs[k].meas;
+        trk->mp_list[mp_first[j]] = k;
+        mp_first[j]++;
     }
-    mtt_csr_unshift(trk->mp_first, n);
+    mtt_csr_unshift(mp_first, n);
     trk->stats.last.pairs = trk->n_pairs;
 }
