@@ -262,11 +262,13 @@ static void test_div(void)
      * below d >> 15 all set (the Newton step's largest deficit), numerators
      * just below the divisor (the largest digits) and at the edges. */
     for (i = 0; i < 64; ++i) {
-        const int32_t d[4] = {(int32_t)((64 + i) << 24), (int32_t)(((65 + i) << 24) - 1),
-                              (int32_t)(((64 + i) << 24) | 0x7FFF), (int32_t)(((64 + i) << 24) | 0x00FFFFFF)};
+        const int64_t lo = (int64_t)(64 + i) << 24; /* 64-bit: the last interval ends at 2^31 */
+        const int32_t d[4] = {(int32_t)lo, (int32_t)(lo + (1L << 24) - 1), (int32_t)(lo | 0x7FFF),
+                              (int32_t)(lo | 0x00FFFFFF)};
         int k, j;
         for (k = 0; k < 4; ++k) {
-            const int32_t n[5] = {d[k] - 1, d[k], d[k] + 1, 1 << 30, MTT_FX_MAX};
+            /* d + 1 saturates at MTT_FX_MAX (d = 2^31 - 1 ends the last interval) */
+            const int32_t n[5] = {d[k] - 1, d[k], (d[k] < MTT_FX_MAX) ? d[k] + 1 : d[k], 1 << 30, MTT_FX_MAX};
             for (j = 0; j < 5; ++j) {
                 for (s = 28; s <= 31; ++s) {
                     check_div_exact(n[j], d[k], s, mtt_fx_div(n[j], d[k], s));
