@@ -280,26 +280,24 @@ static void normal(const mtt_real x[], mtt_real *nx, mtt_real *ny)
 }
 
 /* The late look's clusters (split_known_speed): the parent's centre is the
- * measurement nearest the cv prediction (on its S; beta 2, above every
- * other), the others rank by their nearest offset (a + h) split_dv dt,
- * h < KNOWN_LATE_OFFSETS, on either side of the course (on model 5's S^-1
- * Si): the child's centre is the one nearest an offset. */
-static void late_centres(mtt_tracker *trk, uint16_t ti, uint16_t m, const mtt_real Si[3], mtt_real dt)
+ * measurement nearest the cv prediction (on its S, the prediction stage's
+ * tf->Sim; beta 2, above every other), the others rank by their nearest
+ * offset (a + h) split_dv dt, h < KNOWN_LATE_OFFSETS, on either side of the
+ * course (unit normal nx, ny; on model 5's S^-1 Si): the child's centre is
+ * the one nearest an offset. */
+static void late_centres(mtt_tracker *trk, uint16_t ti, uint16_t m, const mtt_real Si[3], mtt_real dt,
+                         mtt_real nx, mtt_real ny)
 {
     mtt_split_scratch *sc = &trk->split_scr;
     const mtt_params *p = &trk->par;
-    mtt_track_frame *tf = &trk->tf[ti];
+    const mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t cm = mtt_params_cv_model(p);
     const mtt_real *xq = tf->xpm[cm];
-    mtt_real K[MTT_MAX_STATE][2];
-    mtt_real Sc[3], Sci[3], detc, nx, ny, best = MTT_R(-1.0);
+    const mtt_real *Sci = tf->Sim[cm]; /* the cv model's S^-1 (valid: mtt_split_frame checks tf->valid) */
+    mtt_real best = MTT_R(-1.0);
     uint16_t j, jb = 0;
     uint8_t h;
     int sd;
-    if (mtt_kalman_innov_n(N1, tf->Ppm[cm], trk->R, Sc, Sci, &detc, K) != 0) {
-        return;
-    }
-    normal(xq, &nx, &ny);
     for (j = 0; j < m; ++j) {
         const mtt_real g = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Sci, sc->z[j][0] - xq[0], sc->z[j][1] - xq[1]));
         if (g > best) {
@@ -342,6 +340,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
     const int known = p->split_known_speed && p->split_dv > MTT_R(0.0);
     int late = 0; /* the late look of split_known_speed */
+    mtt_real nx = MTT_R(0.0), ny = MTT_R(1.0); /* the course's unit normal, for the late look */
     uint16_t j, m;
     int a, b;
     mtt_split_impulse_q(dt, p->split_dv, p->split_across, tf->xpm[cm][2], tf->xpm[cm][3], P5);
@@ -360,7 +359,6 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     m = gather(trk, ti, 1, c, w);
     if (known && m < 2u) {
         /* the late look: a gate widened across the course */
-        mtt_real nx, ny;
         normal(tf->xpm[cm], &nx, &ny);
         c[1][0] = c[0][0];
         c[1][1] = c[0][1];
@@ -376,7 +374,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         sc->beta[j] = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1]));
     }
     if (late && m >= 2u) {
-        late_centres(trk, ti, m, Si, dt);
+        late_centres(trk, ti, m, Si, dt, nx, ny);
     }
     if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta,
                                  MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
