@@ -22,10 +22,13 @@
  *   Λ_6 = mtt_split_joint (parametric events, λ known or estimated);
  * a measurement outside a model's gate is clutter under it, factor 1 on
  * this scale, so the three compare over the union of their gates.
- * Measurements that another confirmed track took this frame (its reported
- * measurement) are not in the split modes' sets [CHOICE]: a target already
- * tracked is not a second half of this one (after a decoupling the child's
- * detections stay in the parent's gate for a while).
+ * A measurement that another confirmed track holds is not in the split
+ * modes' sets [CHOICE, one measurement, one target]: the one it reports,
+ * and every other one in its gate unless a track reports it (owners).  A
+ * target already tracked, or a detection it may have produced, is not the
+ * second half of this one (after a decoupling the child's detections stay
+ * in the parent's gate for a while; where tracks cross, their detections
+ * and the clutter between them would otherwise start splits).
  * Model 5 starts from the cv model's prediction widened by the split's
  * velocity impulse (split_dv); model 6 from the
  * moment-matched mixture of the two split modes' stacked states, predicted
@@ -87,6 +90,7 @@
                                         below in 1 or 2 scans; a child missed at once (0.95 -> about
                                         0.6 at PD 0.9) is the price */
 #define NS (2 * MTT_STATE_N)
+#define SPLIT_HELD_BY_MANY 0xFFFFu /* owner[]: held by two or more confirmed tracks */
 
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
  * states with weights w[0] (mode 5) and w[1] (mode 6), Σ w = 1. */
@@ -116,29 +120,45 @@ static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split
 }
 
 /* 1 when measurement j is free for track ti's split modes: no other
- * confirmed track took it this frame. */
+ * confirmed track holds it (owners). */
 static int free_for(const mtt_tracker *trk, uint16_t ti, uint16_t j)
 {
     const uint16_t o = trk->split_scr.owner[j];
     return o == 0u || o == ti + 1u;
 }
 
-/* owner[j]: the first confirmed track whose update took measurement j (its
- * reported measurement: assigned, selected or largest β). */
+/* owner[j]: 1 + the confirmed track that holds measurement j this frame,
+ * SPLIT_HELD_BY_MANY for two or more, 0 for none (ALGORITHMS.md §14.3
+ * [CHOICE], one measurement, one target): the first confirmed track that
+ * reports it (its update took it: assigned, selected or largest β), else
+ * every confirmed track in whose gate it lies.  A measurement that another
+ * confirmed target may have produced is not the second half of this
+ * track's split; a track keeps the one it reports. */
 static void owners(mtt_tracker *trk)
 {
+    mtt_split_scratch *sc = &trk->split_scr;
     uint16_t i, k;
-    memset(trk->split_scr.owner, 0, trk->n_meas * sizeof trk->split_scr.owner[0]);
-    for (i = 0; i < trk->n_tracks; ++i) {
-        const mtt_track *t = &trk->tracks[i];
-        const mtt_track_frame *tf = &trk->tf[i];
-        if (!tf->valid || t->born || !t->confirmed || t->meas < 0) {
-            continue;
-        }
-        for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
-            const uint16_t j = trk->pairs[k].meas;
-            if ((int32_t)trk->meas[j].src == t->meas && trk->split_scr.owner[j] == 0u) {
-                trk->split_scr.owner[j] = (uint16_t)(i + 1u);
+    int pass;
+    memset(sc->owner, 0, trk->n_meas * sizeof sc->owner[0]);
+    memset(sc->reported, 0, trk->n_meas * sizeof sc->reported[0]);
+    for (pass = 0; pass < 2; ++pass) {
+        for (i = 0; i < trk->n_tracks; ++i) {
+            const mtt_track *t = &trk->tracks[i];
+            const mtt_track_frame *tf = &trk->tf[i];
+            if (!tf->valid || t->born || !t->confirmed) {
+                continue;
+            }
+            for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+                const uint16_t j = trk->pairs[k].meas;
+                if (pass == 0) {
+                    if (t->meas >= 0 && (int32_t)trk->meas[j].src == t->meas && sc->owner[j] == 0u) {
+                        sc->owner[j] = (uint16_t)(i + 1u);
+                        sc->reported[j] = 1u;
+                    }
+                } else if (!sc->reported[j]) {
+                    sc->owner[j] = (sc->owner[j] == 0u || sc->owner[j] == i + 1u) ? (uint16_t)(i + 1u)
+                                                                                 : SPLIT_HELD_BY_MANY;
+                }
             }
         }
     }

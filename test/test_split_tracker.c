@@ -4,7 +4,8 @@
  * records its parent; a target that does not split never spawns; the
  * decoupling test at its threshold (d² = 9.2103 just above and just below),
  * on P_11 + P_22 (the default) and on S_1 + S_2 (split_decouple_r);
- * the settings that refuse split. */
+ * a detection in a confirmed neighbour's gate starts no split; the
+ * settings that refuse split. */
 #include <math.h>
 #include <string.h>
 
@@ -283,6 +284,64 @@ static void test_late_look_reaches_a_far_child(void)
     TEST_ASSERT_TRUE(p1 > 1e-3);
 }
 
+/* One measurement, one target: a detection in the gate of another confirmed
+ * track is not the second half of this track's split.  The seeded target
+ * of split_params (split_dv 4) and a confirmed neighbour 8 above it on a
+ * parallel course, each detected every frame, for 10 frames; then a frame
+ * with a third detection 6 across the parent's course: inside model 5's
+ * gate (about 9, late_look) and outside the parent's own (about 3), and
+ * (mode 0) 2 from the neighbour, in its gate, which reports its own
+ * detection instead.  Mode 0: held by the neighbour, so model 5 of the
+ * parent has one measurement and P(split) is 0.  Controls: the detection
+ * mirrored to -6 (mode 1, no track holds it) and the neighbour made
+ * tentative before the last frame (mode 2, a tentative track holds
+ * nothing) start the split: P(split) > 1e-3.  Returns the parent's
+ * P(split). */
+static double held_by_neighbour(int mode)
+{
+    mtt_params p;
+    mtt_track_view v;
+    const mtt_real x0[4] = {0, 0, 10, 0}, x1[4] = {0, 8, 10, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const double extra = (mode == 1) ? -6.0 : 6.0;
+    sim_rng r = {4242u};
+    uint16_t k;
+    int f, in_gate = 0;
+    split_params(&p);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x0, P0, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x1, P0, NULL));
+    for (f = 0; f <= 10; ++f) {
+        mtt_meas z[3];
+        int m = 0;
+        z[m++] = sim_meas((mtt_real)(10.0 * f + 0.5 * sim_gauss(&r)), (mtt_real)(0.5 * sim_gauss(&r)), MTT_R(0.0), 0);
+        z[m++] = sim_meas((mtt_real)(10.0 * f + 0.5 * sim_gauss(&r)), (mtt_real)(8.0 + 0.5 * sim_gauss(&r)), MTT_R(0.0), 0);
+        if (f == 10) {
+            z[m++] = sim_meas(MTT_R(100.0), (mtt_real)extra, MTT_R(0.0), 0);
+            if (mode == 2) {
+                TV_TRACK(&trk, 1)->confirmed = 0;
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)f, z, (size_t)m));
+    }
+    for (k = 0; k < TV_PAIR_COUNT(&trk, 1); ++k) {
+        in_gate |= TV_PAIR_MEAS(&trk, TV_PAIR_FIRST(&trk, 1) + k) == 2u;
+    }
+    TEST_ASSERT_EQUAL_INT(mode != 1, in_gate);               /* +6 is in the neighbour's gate, -6 not */
+    TEST_ASSERT_EQUAL_INT32(1, TV_TRACK(&trk, 1)->meas);    /* the neighbour reports its own detection */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_EQUAL_UINT32(0, v.id);
+    return (double)v.p_split;
+}
+
+static void test_a_confirmed_neighbours_detection_starts_no_split(void)
+{
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, held_by_neighbour(0));
+    TEST_ASSERT_EQUAL_UINT8(MTT_SPLIT_NONE, TV_SPLIT_SLOT(&trk, 0));
+    TEST_ASSERT_TRUE(held_by_neighbour(1) > 1e-3);
+    TEST_ASSERT_TRUE(held_by_neighbour(2) > 1e-3);
+}
+
 static void test_split_needs_imm_with_a_cv_model(void)
 {
     mtt_params p;
@@ -325,6 +384,7 @@ int main(void)
     RUN_TEST(test_child_confirmed_by_split_confirm);
     RUN_TEST(test_provisional_child_deleted);
     RUN_TEST(test_late_look_reaches_a_far_child);
+    RUN_TEST(test_a_confirmed_neighbours_detection_starts_no_split);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else
     RUN_TEST(test_split_is_refused_without_mtt_with_split);

@@ -139,7 +139,8 @@ typedef struct mtt_split_scratch {
     mtt_split_assoc as;
     mtt_real z[MTT_MAX_SPLIT_MEAS][2];   /* model 6's validated set */
     uint16_t zi[MTT_MAX_SPLIT_MEAS];     /* their measurement indices */
-    uint16_t owner[MTT_MAX_MEAS];        /* 1 + the confirmed track that took measurement j, 0 */
+    uint16_t owner[MTT_MAX_MEAS];        /* 1 + the confirmed track that holds measurement j, 0 */
+    uint8_t reported[MTT_MAX_MEAS];      /* 1 when owner[j] reports measurement j */
     mtt_real beta[MTT_MAX_GATED];        /* model 5's input betas */
     mtt_real beta_n[MTT_MAX_GATED];
     uint8_t cluster[MTT_MAX_GATED];
