@@ -20,9 +20,9 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static mtt_tracker trk;
-
 #if MTT_WITH_CONTEST
+
+static mtt_tracker trk;
 
 /* sigma 1, q 1, PD 0.9, PG 0.999, lambda 1e-4, no amplitude, no
  * initiation; the floor adapt_s_min = 0.01 (adapt_index large), alpha 0.8,
