@@ -280,6 +280,22 @@ static void dense_frame(sim_rng *rng, tgt *tg, int n, double side, mtt_meas *m, 
 
 /* --variant: lm_ihpda_variant for every workload, -1 = not given. */
 static int variant = -1;
+/* --set KEY=NUMBER: numeric settings of every workload, after --variant. */
+#define MAX_SETS 8
+static const char *set_key[MAX_SETS];
+static double set_val[MAX_SETS];
+static int n_sets;
+
+static void apply_variant_and_sets(mtt_params *p)
+{
+    int k;
+    if (variant >= 0) {
+        p->lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
+    }
+    for (k = 0; k < n_sets; ++k) {
+        set_param(p, set_key[k], set_val[k]);
+    }
+}
 
 static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *first)
 {
@@ -311,9 +327,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     set_param(&p, "snr_rho", 3.0);
     set_param(&p, "vmax", 8.0);
     p.cycle_counter = ns_counter;
-    if (variant >= 0) {
-        p.lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
-    }
+    apply_variant_and_sets(&p);
     if (mtt_tracker_init(&trk, &p) != MTT_OK) {
         fprintf(stderr, "mtt-bench: init failed\n");
         exit(1);
@@ -371,9 +385,7 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
         s.params.motion = MTT_MOTION_IMM; /* the settings file's imm_models, or the defaults */
     }
     s.params.cycle_counter = ns_counter;
-    if (variant >= 0) {
-        s.params.lm_ihpda_variant = (mtt_lm_ihpda_variant)variant;
-    }
+    apply_variant_and_sets(&s.params);
     /* pass 1: find the busiest frame */
     for (i = 0; i < 2; ++i) {
         if (mtt_tracker_init(&trk, &s.params) != MTT_OK) {
@@ -441,6 +453,7 @@ static void usage(FILE *f)
             "  --json F     write the results as JSON\n"
             "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
             "               (default: s0 for dense, the config's for the replay)\n"
+            "  --set K=V    a numeric setting of every workload (repeatable, up to 8)\n"
             "  --list-modes print the modes built into this library and exit\n"
             "  --motion M   cv (default) or imm (the default CV + CA models, or the\n"
             "               --config file's imm_models); modes without IMM are skipped\n"
@@ -486,6 +499,21 @@ int main(int argc, char **argv)
                 fprintf(stderr, "mtt-bench: --variant must be s0 or contest\n");
                 return 2;
             }
+        } else if (i + 1 < argc && !strcmp(argv[i], "--set")) {
+            char *eq = strchr(argv[++i], '=');
+            char *end = NULL;
+            if (eq == NULL || n_sets == MAX_SETS) {
+                fprintf(stderr, "mtt-bench: --set KEY=NUMBER, at most %d\n", MAX_SETS);
+                return 2;
+            }
+            *eq = '\0';
+            set_key[n_sets] = argv[i];
+            set_val[n_sets] = strtod(eq + 1, &end);
+            if (end == eq + 1 || *end != '\0') {
+                fprintf(stderr, "mtt-bench: --set %s: not a number\n", argv[i]);
+                return 2;
+            }
+            ++n_sets;
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--motion") &&

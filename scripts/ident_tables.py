@@ -49,6 +49,7 @@ from mtt_sim import csvio, generate, metrics, runner, scenario
 ROWS = {
     "s0": ("lm-ihpda", ['tracker.lm_ihpda_variant="s0"']),
     "contest": ("lm-ihpda", ['tracker.lm_ihpda_variant="contest"']),
+    "contest-noadapt": ("lm-ihpda", ['tracker.lm_ihpda_variant="contest"', "tracker.adapt_s_min=1"]),
     "contest-pure": ("lm-ihpda", ['tracker.lm_ihpda_variant="contest"', "tracker.amplitude_eta=0"]),
     "lm-ipda": ("lm-ipda", []),
     "jipda": ("jipda", []),

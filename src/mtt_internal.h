@@ -201,6 +201,19 @@ enum { MTT_CONTEST_NONE = 0, MTT_CONTEST_ROW = 1, MTT_CONTEST_YES = 2 };
 /* After MMR: the LM-IPDA row (pair.beta, tf.beta0, tf.ex_post) of every
  * track of a cluster with two or more tracks, then tf.contest. */
 void mtt_contest_frame(mtt_tracker *trk);
+
+/* ---- adapt_q.c: a confirmed contest track's process-noise scale (ALGORITHMS.md §2.1) ---- */
+#if MTT_WITH_CONTEST
+/* Qs = s Q (the model's leading block; Q is read, not changed). */
+void mtt_adapt_scale_q(mtt_cov Q, mtt_real s, mtt_cov Qs);
+/* The lowest scale for an interval dt: max(adapt_s_min, Lambda^2 / adapt_index), at most 1. */
+mtt_real mtt_adapt_floor(const mtt_tracker *trk, mtt_real dt);
+/* E[NIS] of a gated target detection: chi-square 2 truncated at gamma. */
+mtt_real mtt_adapt_nis_mean(mtt_real gamma, mtt_real pg);
+/* After track ti's update: its NIS average and scale s (tentative,
+ * contested and s0 tracks keep s = 1 / theirs). */
+void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti);
+#endif
 /* ---- params.c ---- */
 #if MTT_WITH_IMM
 /* imm_transition and imm_initial: docs/FORMATS.md's defaults for r models. */

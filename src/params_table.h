@@ -90,6 +90,24 @@ extern const char *const mtt_model_names[3];
 #define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 #endif
 
+/* The noise-adaptive process noise of lm_ihpda_variant contest
+ * (ALGORITHMS.md §2.1): only in a build with MTT_WITH_CONTEST. */
+#if MTT_WITH_CONTEST
+#define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)                                                    \
+    REAL("adapt_s_min", adapt_s_min, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                               \
+         "lm_ihpda_variant contest: smallest scale s of a confirmed track's process noise, s·process_psd, lowered while its innovations are smaller than the filter expects and raised when they grow; 1 turns the adaptation off (§2.1)") \
+    REAL("adapt_index", adapt_index, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                      \
+         "lm_ihpda_variant contest: s stays at or above Λ²/adapt_index, Λ² = process_psd·ΔT³/σ² the squared tracking index (σ² the mean of σx², σy²): the stronger the configured manoeuvres against the measurement noise, the less the level is lowered (§2.1)") \
+    REAL("adapt_memory", adapt_memory, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                             \
+         "lm_ihpda_variant contest: fading factor α of the average of the normalised innovation squared that drives s (§2.1)") \
+    REAL("adapt_gain", adapt_gain, 1, 0.0, 100.0, PF_OPEN_LO, NULL,                               \
+         "lm_ihpda_variant contest: gain κ of s's update, s ← s·exp(κ(r̄ − 1)) with r̄ the average NIS over its expectation (§2.1)") \
+    REAL("adapt_reset_nis", adapt_reset_nis, 1, 0.0, MTT_REAL_MAX, 0, NULL,                       \
+         "lm_ihpda_variant contest: a confirmed track whose measurement has a normalised innovation squared above this returns to s = 1 at once (a manoeuvre); 0 never (§2.1)")
+#else
+#define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)
+#endif
+
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
@@ -110,6 +128,7 @@ extern const char *const mtt_model_names[3];
          "intensity parameter ρ: target amplitude mean 1 + ρ, clutter mean 1; 0 ignores amplitude (§7.1)")     \
     REAL("amplitude_eta", amplitude_eta, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                          \
          "lm_ihpda_variant contest: share η of untracked-target detections in the background amplitude law; 0 is the plain ratio (§7.6)") \
+    MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)                                                        \
     REAL("markov_p11", markov_p11, 1, 0.0, 1.0, 0, NULL,                                         \
          "probability that an existing target still exists at the next scan (§11)")          \
     REAL("markov_p21", markov_p21, 1, 0.0, 1.0, 0, NULL,                                         \

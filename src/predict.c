@@ -2,6 +2,8 @@
  * §2, §3, §11): the motion model's x^ = F x, P^ = F P F' + Q, the Markov
  * existence prediction, and the innovation covariance S = H P^ H' + R
  * with its inverse and the gain, from which gating and every update work.
+ * A confirmed track of lm-ihpda contest predicts with its own scale of the
+ * process noise (§2.1, adapt_q.c).
  * A track whose S is not positive definite is marked invalid (§3): it is
  * not gated and the manager deletes it. */
 #include <string.h>
@@ -14,6 +16,9 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
     uint16_t i;
     if (dt > MTT_ZERO) {
         mtt_motion_q(dt, trk->par.process_psd, Q);
+#if MTT_WITH_CONTEST
+        trk->q_floor = mtt_adapt_floor(trk, dt);
+#endif
     }
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track *t = &trk->tracks[i];
@@ -26,7 +31,20 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
             if (trk->par.motion != MTT_MOTION_IMM)
 #endif
             {
-                mtt_kalman_predict_q(dt, Q, t->x, t->P, tf->xp, tf->Pp);
+#if MTT_WITH_CONTEST
+                if (t->q_scale < trk->q_floor) {
+                    t->q_scale = trk->q_floor; /* this interval's floor (ALGORITHMS.md §2.1) */
+                }
+                if (t->q_scale < MTT_R(1.0)) {
+                    /* a confirmed contest track's own level (ALGORITHMS.md §2.1) */
+                    mtt_cov Qs;
+                    mtt_adapt_scale_q(Q, t->q_scale, Qs);
+                    mtt_kalman_predict_q(dt, Qs, t->x, t->P, tf->xp, tf->Pp);
+                } else
+#endif
+                {
+                    mtt_kalman_predict_q(dt, Q, t->x, t->P, tf->xp, tf->Pp);
+                }
             }
             tf->ex_pred = mtt_existence_predict(t->existence, trk->par.markov_p11, trk->par.markov_p21);
             t->age++;

@@ -10,7 +10,8 @@
  * HARD (NNJPDA, ALGORITHMS.md §13.5): the Kalman update with the assigned measurement
  * (beta 1, beta0 0); existence from the association stage (ALGORITHMS.md §13.2).
  * lm-ihpda contest (ALGORITHMS.md §10.4): a contested track takes the PDA update with
- * the LM-IPDA row of the contest test instead of ONE.
+ * the LM-IPDA row of the contest test instead of ONE; after its update a
+ * confirmed track's process-noise scale follows its NIS (ALGORITHMS.md §2.1).
  * A track with no measurement keeps its prediction, with L = 1 - PD PG.
  * Fixed point (docs/FIXED_POINT.md): the firmware modes only (ONE and PDA
  * with CV; IMM, the baselines and the contest variant are compiled out),
@@ -182,6 +183,11 @@ void mtt_update_frame(mtt_tracker *trk)
         } else {
             update_pda(trk, i);
         }
+#if MTT_WITH_CONTEST
+        if (MTT_CONTEST_ON(trk)) {
+            mtt_adapt_observe(trk, i); /* the process-noise scale (ALGORITHMS.md §2.1) */
+        }
+#endif
         /* ALGORITHMS.md §3 deletes a track whose S is not positive definite; the same
          * for its covariance, which float arithmetic can lose for extreme
          * priors (a velocity variance 1e30 beside a position variance of 4:

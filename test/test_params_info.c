@@ -32,7 +32,11 @@ static void test_table_lists_the_settings_keys(void)
 {
     static const char *const keys[] = {
         "association", "lm_ihpda_variant", "contest_beta", "process_psd", "meas_sigma", "pd",
-        "pg", "clutter_density", "snr_rho", "amplitude_eta", "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
+        "pg", "clutter_density", "snr_rho", "amplitude_eta",
+#if MTT_WITH_CONTEST
+        "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis",
+#endif
+        "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
         "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
         "intensity_gate.f1", "intensity_gate.f2", "intensity_gate.blend", "jpda_bias",
         "jpda_star_threshold", "nnjpda_threshold", "adaptive_jpda_distance",
@@ -60,8 +64,9 @@ static void test_table_lists_the_settings_keys(void)
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(4, &info));
     TEST_ASSERT_EQUAL_UINT(2, info->count); /* meas_sigma */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(19, &info));
-    TEST_ASSERT_EQUAL_UINT(3, info->count); /* intensity_gate.f1 */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_find("intensity_gate.f1", &i));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(i, &info));
+    TEST_ASSERT_EQUAL_UINT(3, info->count);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_params_info(k, &info));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_params_info(0, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_params_find("initial_tracks", &i));

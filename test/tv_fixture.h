@@ -65,6 +65,13 @@
 #define TV_EX_PRED(t, i) ((t)->tf[i].ex_pred)
 #define TV_BEST(t, i) ((t)->tf[i].best)
 #define TV_CONTEST(t, i) ((t)->tf[i].contest)
+#if MTT_WITH_CONTEST
+/* track i's process-noise scale s and NIS average (ALGORITHMS.md §2.1),
+ * and the frame's floor of s */
+#define TV_Q_SCALE(t, i) ((t)->tracks[i].q_scale)
+#define TV_NIS_RATIO(t, i) ((t)->tracks[i].nis_ratio)
+#define TV_Q_FLOOR(t) ((t)->q_floor)
+#endif
 /* track i of the table */
 #define TV_TRACK(t, i) (&(t)->tracks[i])
 #define TV_X(t, i) ((t)->tracks[i].x)

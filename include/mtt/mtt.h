@@ -149,6 +149,13 @@ typedef struct mtt_params {
     mtt_real clutter_density;   /**< per unit area; 0 estimates it per track (ALGORITHMS.md §5.2) */
     mtt_real snr_rho;           /**< amplitude model rho; 0 ignores amplitude */
     mtt_real amplitude_eta;     /**< background share eta of the amplitude ratio (ALGORITHMS.md §7.6) */
+#if MTT_WITH_CONTEST
+    mtt_real adapt_s_min;       /**< contest: smallest process-noise scale of a confirmed track (ALGORITHMS.md §2.1) */
+    mtt_real adapt_index;       /**< the scale stays >= process_psd dt^3 / (sigma^2 adapt_index) */
+    mtt_real adapt_memory;      /**< its NIS average's fading factor */
+    mtt_real adapt_gain;        /**< its update gain */
+    mtt_real adapt_reset_nis;   /**< a NIS above this resets the scale to 1; 0 never */
+#endif
     mtt_real markov_p11;        /**< existence Markov chain: stays */
     mtt_real markov_p21;        /**< existence Markov chain: appears */
     mtt_real existence_init;    /**< existence of a new track */

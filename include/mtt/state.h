@@ -25,6 +25,12 @@ typedef struct mtt_track {
     uint8_t confirmed;
     uint8_t born;        /* born in the current frame: no gate yet */
     uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
+#if MTT_WITH_CONTEST
+    /* lm-ihpda contest: the noise-adaptive process noise of a confirmed
+     * track (ALGORITHMS.md §2.1, src/adapt_q.c) */
+    mtt_real q_scale;    /* s: the track's Q is s times process_psd's, in [adapt_s_min, 1] */
+    mtt_real nis_ratio;  /* fading average of NIS / its expectation, 1 at birth */
+#endif
 #if MTT_WITH_IMM
     /* motion = imm (ALGORITHMS.md §14): x, P above hold the combined 4-D
      * estimate; these the model-conditioned ones and the mode probabilities. */
@@ -266,6 +272,9 @@ typedef struct mtt_tracker {
     mtt_real R[3];                  /* measurement covariance (sym) */
     mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */
     mtt_real time;
+#if MTT_WITH_CONTEST
+    mtt_real q_floor;               /* this frame's lowest process-noise scale (ALGORITHMS.md §2.1) */
+#endif
     uint8_t have_time;
     uint32_t next_id;
     uint16_t n_tracks;

@@ -44,7 +44,7 @@ class ScenarioError(ValueError):
 # docs/FORMATS.md "Tracker settings" keys.
 TRACKER_KEYS = {
     "association", "lm_ihpda_variant", "contest_beta", "process_psd", "meas_sigma", "pd",
-    "pg", "clutter_density", "snr_rho", "amplitude_eta", "markov_p11", "markov_p21",
+    "pg", "clutter_density", "snr_rho", "amplitude_eta", "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "markov_p11", "markov_p21",
     "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",

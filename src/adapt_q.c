@@ -1,0 +1,90 @@
+/* adapt_q.c - the noise-adaptive process noise of a confirmed track with
+ * lm-ihpda's contest variant (ALGORITHMS.md §2.1): Q = s·Q(process_psd)
+ * with s in [floor, 1], lowered while the track's normalised innovations
+ * are smaller than the filter expects and raised when they grow, at once
+ * past adapt_reset_nis (a manoeuvre).  The floor is adapt_s_min or, when
+ * larger, the squared tracking index process_psd·dt³/σ² over adapt_index:
+ * where the configured manoeuvres move a target by σ or more in one scan
+ * a lower level would lose it before its innovations show the manoeuvre.
+ * O(1) per track per scan: one NIS, one exp.
+ *
+ * process_psd stays the upper level the user configured: s = 1 is the
+ * plain §2 filter, and a tentative track keeps it (it has no history).
+ * Not part of [S0] (lm_ihpda_variant s0 never leaves s = 1), not with
+ * motion imm, and not in a build without MTT_WITH_CONTEST (the fixed
+ * point and the firmware builds), where this file is empty. */
+#include <string.h>
+
+#include "mtt_internal.h"
+
+#if MTT_WITH_CONTEST
+
+void mtt_adapt_scale_q(mtt_cov Q, mtt_real s, mtt_cov Qs)
+{
+    int i, j;
+    memcpy(Qs, Q, sizeof(mtt_cov));
+    for (i = 0; i < MTT_STATE_N; ++i) {
+        for (j = 0; j < MTT_STATE_N; ++j) {
+            Qs[i][j] = s * Q[i][j];
+        }
+    }
+}
+
+mtt_real mtt_adapt_floor(const mtt_tracker *trk, mtt_real dt)
+{
+    const mtt_params *p = &trk->par;
+    /* Lambda^2 = q dt^3 / sigma^2, sigma^2 the mean of R's diagonal */
+    mtt_real f = p->process_psd * dt * dt * dt / (MTT_R(0.5) * (trk->R[0] + trk->R[2]) * p->adapt_index);
+    if (f < p->adapt_s_min) {
+        f = p->adapt_s_min;
+    }
+    return (f < MTT_R(1.0)) ? f : MTT_R(1.0);
+}
+
+mtt_real mtt_adapt_nis_mean(mtt_real gamma, mtt_real pg)
+{
+    /* E[chi2_2 | chi2_2 < gamma] = 2 - gamma (1 - PG) / PG, with 1 - PG =
+     * exp(-gamma / 2) (ALGORITHMS.md §2.1) */
+    return MTT_R(2.0) - gamma * (MTT_R(1.0) - pg) / pg;
+}
+
+void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
+{
+    mtt_track *t = &trk->tracks[ti];
+    const mtt_track_frame *tf = &trk->tf[ti];
+    const mtt_params *p = &trk->par;
+    const mtt_pair *pp;
+    const mtt_mstore *ms;
+    mtt_real dx, dy, nis, w, s;
+    if (!t->confirmed || !(p->adapt_s_min < MTT_R(1.0)) || MTT_CONTESTED(tf)) {
+        return; /* tentative, adaptation off, or a PDA mixture at a meeting: no observation */
+    }
+    if (tf->assigned < 0) {
+        return; /* a miss says nothing about the level (ALGORITHMS.md §2.1) */
+    }
+    pp = &trk->pairs[tf->assigned];
+    ms = &trk->meas[pp->meas];
+    dx = ms->x - tf->xp[0];
+    dy = ms->y - tf->xp[1];
+    nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
+    /* weight beta_s: the NIS is the target's with that probability */
+    w = (MTT_R(1.0) - p->adapt_memory) * pp->beta;
+    t->nis_ratio += w * (nis / mtt_adapt_nis_mean(trk->gamma, p->pg) - t->nis_ratio);
+    if (p->adapt_reset_nis > MTT_R(0.0) && nis > p->adapt_reset_nis) {
+        t->q_scale = MTT_R(1.0); /* a manoeuvre: back to the configured level at once */
+        t->nis_ratio = MTT_R(1.0);
+        return;
+    }
+    s = t->q_scale * mtt_exp(p->adapt_gain * (t->nis_ratio - MTT_R(1.0)));
+    if (s > MTT_R(1.0)) {
+        s = MTT_R(1.0);
+    }
+    if (s < trk->q_floor) {
+        s = trk->q_floor;
+    }
+    t->q_scale = s;
+}
+
+#else
+typedef int mtt_adapt_q_unused; /* ISO C: no empty translation unit */
+#endif /* MTT_WITH_CONTEST */
