@@ -22,12 +22,20 @@ import sys
 from . import plots, report, runner, scenario
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def add_run_arguments(ap: argparse.ArgumentParser) -> None:
+    """The options of every Monte Carlo command: scenario, runs, jobs, out, seed0, set."""
     ap.add_argument("--scenario", required=True, help="scenario JSON file")
     ap.add_argument("--runs", type=int, default=100, help="Monte Carlo runs per mode (default 100)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="worker processes (default: cores)")
     ap.add_argument("--out", required=True, help="output directory")
+    ap.add_argument("--seed0", type=int, default=0, help="seed of run 0 (default 0)")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="override a scenario value by dotted path (repeatable)")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    add_run_arguments(ap)
     ap.add_argument("--mtt-track", dest="mtt_track",
                     help="mtt-track binary (default: $MTT_TRACK, then build/host-float/cli/mtt-track)")
     ap.add_argument("--tracker", choices=("auto", "in-process", "mtt-track"), default="auto",
@@ -35,9 +43,6 @@ def main(argv=None):
                          "mtt-track; in-process / mtt-track: that one only")
     ap.add_argument("--assoc", nargs="+", metavar="MODE",
                     help="association mode(s) to compare (default: the scenario's tracker.association)")
-    ap.add_argument("--seed0", type=int, default=0, help="seed of run 0 (default 0)")
-    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                    help="override a scenario value by dotted path (repeatable)")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds allowed per mtt-track call")
     ap.add_argument("--no-plots", action="store_true", help="skip the PNG figures")
     a = ap.parse_args(argv)

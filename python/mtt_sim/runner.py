@@ -35,7 +35,7 @@ import numpy as np
 from . import csvio, generate, metrics
 from . import scenario as scnmod
 
-__all__ = ["find_mtt_track", "find_tracker", "in_process_available", "track_in_process", "IN_PROCESS",
+__all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_available", "track_in_process", "IN_PROCESS",
            "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate"]
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -84,7 +84,7 @@ def find_tracker(choice: str = "auto", explicit: str | None = None) -> str | Non
     return find_mtt_track(explicit)
 
 
-def _as_text(v, digits: int) -> np.ndarray:
+def text_values(v, digits: int) -> np.ndarray:
     """v as it reads back from text written with %.<digits>g (NaN stays NaN).
     One format of the whole column, then one parse (the fastest way found)."""
     v = np.asarray(v, float).ravel()
@@ -107,11 +107,11 @@ def track_in_process(run: dict, printed=("x", "y")) -> tuple[dict, float]:
     from mtt.tracker import TABLE_COLUMNS
 
     det = run["det"]
-    times = _as_text(run["times"], 10)
+    times = text_values(run["times"], 10)
     order = np.argsort(np.asarray(det["scan"], int), kind="stable")
     scans = np.asarray(det["scan"], int)[order]
-    z = np.column_stack([_as_text(det["x"], 10)[order], _as_text(det["y"], 10)[order],
-                         _as_text(det["amp"], 6)[order]])
+    z = np.column_stack([text_values(det["x"], 10)[order], text_values(det["y"], 10)[order],
+                         text_values(det["amp"], 6)[order]])
     bounds = np.searchsorted(scans, np.arange(len(times) + 1))
     tables, scan_of = [], []
     t_start = time.perf_counter()
@@ -133,7 +133,7 @@ def track_in_process(run: dict, printed=("x", "y")) -> tuple[dict, float]:
     out["time"] = times[out["scan"]]
     for k, c in (("x", "x"), ("y", "y"), ("vx", "vx"), ("vy", "vy"), ("existence", "existence"),
                  ("pxx", "P00"), ("pxy", "P01"), ("pyy", "P11")):
-        out[k] = _as_text(col[c], digits) if k in printed else col[c].copy()
+        out[k] = text_values(col[c], digits) if k in printed else col[c].copy()
     if run["settings"].get("split"):
         out["p_split"] = col["p_split"].copy()
         out["parent"] = col["parent"].astype(int)
@@ -193,14 +193,20 @@ def _track_process(run: dict, mode: str, exe: str, keep_dir: str | None, timeout
 
 def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir: str | None = None,
             timeout: float = 600.0) -> dict:
-    """Generate, track and score one run; never raises for tracker failures."""
+    """Generate, track and score one run; never raises for tracker failures.
+
+    ``exe``: IN_PROCESS, the path of mtt-track, or a callable ``exe(run) ->
+    (tracks table, seconds)`` (another tracker, e.g. mtt_sim.stonesoup_mc's).
+    """
     res = {"mode": mode, "run": run_index, "seed": seed, "ok": False}
     try:
-        run = generate.generate(scn, seed, mode)
+        # another tracker (a callable) ignores the association mode; the detections do not depend on it
+        run = generate.generate(scn, seed, None if callable(exe) else mode)
         nscan = len(run["times"])
-        if exe == IN_PROCESS:
+        if exe == IN_PROCESS or callable(exe):
             # run 0 is kept: every column as mtt-track would print it
-            tracks, elapsed = track_in_process(run, csvio.TRACKS_HEADER.split(",") if keep_dir else ("x", "y"))
+            tracks, elapsed = (exe(run) if callable(exe) else
+                               track_in_process(run, csvio.TRACKS_HEADER.split(",") if keep_dir else ("x", "y")))
             if keep_dir:
                 name = run["name"]
                 generate.write_run(run, keep_dir, name)

@@ -1,0 +1,256 @@
+#!/usr/bin/env python3
+"""Monte Carlo runs of a scenario through Stone Soup's JPDA: a baseline on mtt's own detections.
+
+    PYTHONPATH=python python3 -m mtt_sim.stonesoup_mc --scenario scenarios/split_fast.json --runs 50 \\
+        --out out/ss_fast
+
+Run r draws seed SEED0 + r with mtt_sim.generate exactly as mtt_sim.mc does
+(the same detections, handed over with the digits mtt-track reads from the
+detections file), tracks it with Stone Soup's MultiTargetMixtureTracker + JPDA
+and scores it with mtt_sim.metrics.score_run: OUT/report.txt (also printed)
+and OUT/summary.json have mc's shape, one mode named "stonesoup-jpda".
+Every Stone Soup track counts as a confirmed track (Stone Soup has no
+tentative state: the initiator holds its candidates until they are sure).
+
+Stone Soup configuration (docs/PYTHON.md "Stone Soup JPDA baseline"), every
+number from the scenario's tracker settings:
+  KalmanPredictor with CombinedLinearGaussianTransitionModel of
+  ConstantVelocity(process_psd) per axis; KalmanUpdater with LinearGaussian
+  (mapping x, y; R = diag(meas_sigma^2)); JPDA with PDAHypothesiser
+  (prob_detect = pd, prob_gate = pg, clutter_spatial_density =
+  clutter_density, or the scenario's mean clutter / area when the tracker
+  estimates it, clutter_density = 0); MultiMeasurementInitiator fed with the
+  detections JPDA left unassociated: its own GNN (GNNWith2DAssignment,
+  DistanceHypothesiser with the Mahalanobis distance gated at
+  sqrt(-2 ln(1 - pg))), prior velocity N(0, vmax^2 / 3) per axis (the
+  variance of a uniform speed in [-vmax, vmax]), --min-points scans with a
+  detection to confirm, candidates dropped after 2 scans without one;
+  track deleter --deleter; the scenario's initial_tracks enter as tracks 0,
+  1, ... with the two-point covariance (docs/ALGORITHMS.md §12.1) of the
+  first scan interval.
+
+Needs Stone Soup (pip install stone-soup; the module itself imports without
+it).  Progress on stderr.  Exit status: 0 if every run succeeded, 1 if some
+failed, 2 on bad arguments or without Stone Soup.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+from . import mc, report, runner, scenario
+
+MODE = "stonesoup-jpda"
+T0 = datetime.datetime(2000, 1, 1)
+DEFAULTS = {"process_psd": 5.0, "pd": 0.9, "pg": 0.999, "vmax": 60.0, "clutter_density": 0.0}  # docs/FORMATS.md
+
+
+def stonesoup_version() -> str | None:
+    try:
+        import stonesoup
+    except ImportError:
+        return None
+    return stonesoup.__version__
+
+
+def mean_clutter(scn: dict) -> float:
+    """Mean number of clutter detections per scan of the scenario's clutter model."""
+    cl = scn.get("clutter", {})
+    if cl.get("model") == "poisson":
+        return float(cl["mean"]) if "mean" in cl else float(cl["density"]) * scenario.area_size(scn)
+    if cl.get("model") == "binomial":
+        return int(cl["n"]) * float(cl["p"])
+    return 0.0
+
+
+class JpdaTracker:
+    """A callable for runner.one_run: ``tracker(run) -> (tracks table, seconds)``.
+
+    ``min_points``: updates a candidate needs to become a track; ``deleter``:
+    "steps:N" (UpdateTimeStepsDeleter, no detection in the last N scans) or
+    "covar:F" (CovarianceBasedDeleter on the position covariance's trace >
+    F (sigma_x^2 + sigma_y^2)).
+    """
+
+    def __init__(self, scn: dict, min_points: int = 3, deleter: str = "covar:1"):
+        trk = scn["tracker"]
+        self.cfg = {k: float(trk.get(k, v)) for k, v in DEFAULTS.items()}
+        self.cfg["meas_sigma"] = [float(v) for v in trk.get("meas_sigma", scn["meas_sigma"])]
+        if self.cfg["clutter_density"] <= 0.0:  # mtt estimates it: give Stone Soup the true mean
+            self.cfg["clutter_density"] = mean_clutter(scn) / scenario.area_size(scn)
+        if self.cfg["clutter_density"] <= 0.0:
+            raise scenario.ScenarioError("Stone Soup's PDAHypothesiser needs a clutter density > 0 "
+                                         "(tracker.clutter_density, or clutter in the scenario)")
+        kind, _, arg = deleter.partition(":")
+        if kind not in ("steps", "covar") or not arg:
+            raise ValueError(f"deleter must be steps:N or covar:F, not {deleter!r}")
+        self.deleter = (kind, float(arg))
+        if min_points < 1:
+            raise ValueError("min_points must be >= 1")
+        self.min_points = int(min_points)
+        self.initial = trk.get("initial_tracks") or []
+
+    def _components(self):
+        from stonesoup.dataassociator.neighbour import GNNWith2DAssignment
+        from stonesoup.dataassociator.probability import JPDA
+        from stonesoup.deleter.error import CovarianceBasedDeleter
+        from stonesoup.deleter.time import UpdateTimeStepsDeleter
+        from stonesoup.hypothesiser.distance import DistanceHypothesiser
+        from stonesoup.hypothesiser.probability import PDAHypothesiser
+        from stonesoup.initiator.simple import MultiMeasurementInitiator
+        from stonesoup.measures import Mahalanobis
+        from stonesoup.models.measurement.linear import LinearGaussian
+        from stonesoup.models.transition.linear import CombinedLinearGaussianTransitionModel, ConstantVelocity
+        from stonesoup.predictor.kalman import KalmanPredictor
+        from stonesoup.tracker.simple import MultiTargetMixtureTracker
+        from stonesoup.types.state import GaussianState
+        from stonesoup.updater.kalman import KalmanUpdater
+
+        c = self.cfg
+        sx, sy = c["meas_sigma"]
+        self.meas_model = LinearGaussian(4, (0, 2), np.diag([sx * sx, sy * sy]))
+        predictor = KalmanPredictor(CombinedLinearGaussianTransitionModel(
+            [ConstantVelocity(c["process_psd"]), ConstantVelocity(c["process_psd"])]))
+        updater = KalmanUpdater(self.meas_model)
+        jpda = JPDA(PDAHypothesiser(predictor, updater, clutter_spatial_density=c["clutter_density"],
+                                    prob_detect=c["pd"], prob_gate=c["pg"]))
+        if self.deleter[0] == "steps":
+            deleter = UpdateTimeStepsDeleter(int(self.deleter[1]))
+        else:
+            deleter = CovarianceBasedDeleter(self.deleter[1] * (sx * sx + sy * sy), mapping=[0, 2])
+        v2 = c["vmax"] ** 2 / 3.0
+        initiator = MultiMeasurementInitiator(
+            prior_state=GaussianState(np.zeros(4), np.diag([0.0, v2, 0.0, v2])),
+            deleter=UpdateTimeStepsDeleter(2), measurement_model=self.meas_model,
+            data_associator=GNNWith2DAssignment(DistanceHypothesiser(
+                predictor, updater, Mahalanobis(), missed_distance=math.sqrt(-2.0 * math.log(1.0 - c["pg"])))),
+            updater=updater, min_points=self.min_points)
+        return MultiTargetMixtureTracker(initiator=initiator, deleter=deleter, detector=None,
+                                         data_associator=jpda, updater=updater)
+
+    def seeded_tracks(self, dt: float, t0: datetime.datetime) -> list:
+        """The scenario's initial_tracks as Stone Soup tracks ([x, vx, y, vy]), §12.1's covariance or "P"."""
+        from stonesoup.types.state import GaussianState
+        from stonesoup.types.track import Track
+
+        out = []
+        perm = [0, 2, 1, 3]  # mtt's x, y, vx, vy -> Stone Soup's x, vx, y, vy
+        for s in self.initial:
+            if "P" in s:
+                P = np.asarray(s["P"], float).reshape(4, 4)[np.ix_(perm, perm)]
+            else:
+                P = np.zeros((4, 4))
+                for i, sig in ((0, self.cfg["meas_sigma"][0]), (2, self.cfg["meas_sigma"][1])):
+                    r = sig * sig
+                    P[i:i + 2, i:i + 2] = [[r, r / dt], [r / dt, 2.0 * r / (dt * dt)]]
+            out.append(Track([GaussianState([s["x"], s["vx"], s["y"], s["vy"]], P, timestamp=t0)]))
+        return out
+
+    def detections(self, run: dict) -> list:
+        """Per scan, the (n, 2) detections as mtt-track reads them from the run's file (%.10g), in file order."""
+        det = run["det"]
+        scans = np.asarray(det["scan"], int)
+        xy = np.column_stack([runner.text_values(det["x"], 10), runner.text_values(det["y"], 10)])
+        return [xy[scans == k] for k in range(len(run["times"]))]
+
+    @staticmethod
+    def _record(k, live, ids, rows):
+        """Rows (scan, id, x, y, vx, vy, pxx, pxy, pyy) of the live tracks; new ones get the next ids
+        in the order of their position (Stone Soup's tracks are a set)."""
+        new = sorted((tr for tr in live if tr not in ids), key=lambda tr: (tr.state_vector[0, 0], tr.state_vector[2, 0]))
+        for tr in new:
+            ids[tr] = len(ids)
+        for tr in live:
+            x, P = tr.state_vector.ravel(), tr.covar
+            rows.append((k, ids[tr], x[0], x[2], x[1], x[3], P[0, 0], P[0, 2], P[2, 2]))
+
+    def __call__(self, run: dict):
+        from stonesoup.types.detection import Detection
+
+        times = runner.text_values(run["times"], 10)
+        dt = float(times[1] - times[0]) if len(times) > 1 else 1.0
+        per_scan = self.detections(run)
+        tracker = self._components()  # outside the timing: the first run of a process imports Stone Soup here
+        t_start = time.perf_counter()
+        ts = [T0 + datetime.timedelta(seconds=float(t - times[0])) for t in times]
+        ids = {}  # Stone Soup track -> our id
+        for tr in self.seeded_tracks(dt, ts[0]):
+            ids[tr] = len(ids)
+            tracker._tracks.add(tr)  # MultiTargetMixtureTracker keeps its tracks there; no public setter
+        rows = []
+        try:
+            for k, t in enumerate(ts):
+                # at scan 0 the seeded tracks' prediction is over 0 s (F = I, Q = 0): mtt's first frame (§15)
+                dets = {Detection(z.reshape(2, 1), timestamp=t, measurement_model=self.meas_model)
+                        for z in per_scan[k]}
+                _, live = tracker.update_tracker(t, dets)
+                self._record(k, live, ids, rows)
+        except (np.linalg.LinAlgError, ValueError) as e:
+            raise runner.TrackerError(f"Stone Soup: {e}") from None
+        elapsed = time.perf_counter() - t_start
+        rows.sort(key=lambda r: (r[0], r[1]))
+        a = np.array(rows, float).reshape(-1, 9)
+        scan = a[:, 0].astype(int)
+        tracks = {"scan": scan, "time": times[scan], "track": a[:, 1].astype(int),
+                  "confirmed": np.ones(len(a), bool), "existence": np.ones(len(a))}
+        for i, name in enumerate(("x", "y", "vx", "vy", "pxx", "pxy", "pyy")):
+            tracks[name] = a[:, 2 + i]
+        return tracks, elapsed
+
+
+def _fmt_s(ms_per_frame, nscan) -> str:
+    return "-" if ms_per_frame is None else f"{ms_per_frame * nscan / 1e3:.2f} s"
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    mc.add_run_arguments(ap)
+    ap.add_argument("--min-points", type=int, default=3,
+                    help="detections a candidate needs to become a track (default 3)")
+    ap.add_argument("--deleter", default="covar:1",
+                    help="steps:N = no detection in the last N scans, covar:F = position covariance trace > "
+                         "F (sx^2 + sy^2) (default covar:1)")
+    a = ap.parse_args(argv)
+    if a.runs < 1 or a.jobs < 1:
+        ap.error("--runs and --jobs must be >= 1")
+    version = stonesoup_version()
+    if version is None:
+        print("stonesoup_mc.py: Stone Soup is not installed (pip install stone-soup, or pip install '.[stonesoup]')",
+              file=sys.stderr)
+        return 2
+    try:
+        scn = scenario.load(a.scenario, a.set)
+        trk = JpdaTracker(scn, a.min_points, a.deleter)
+    except (scenario.ScenarioError, ValueError, OSError) as e:
+        print(f"stonesoup_mc.py: {e}", file=sys.stderr)
+        return 2
+    os.makedirs(a.out, exist_ok=True)
+    res = runner.monte_carlo(scn, [MODE], a.runs, trk, a.jobs, a.seed0,
+                            keep_root=os.path.join(a.out, "run0"))
+    label = f"Stone Soup {version} JPDA (min_points {a.min_points}, deleter {a.deleter})"
+    summary = runner.build_summary(scn, a.scenario, a.set, [MODE], a.runs, a.seed0, label, res)
+    summary["stonesoup"] = {"version": version, "min_points": a.min_points, "deleter": a.deleter,
+                            "config": trk.cfg}
+    with open(os.path.join(a.out, "summary.json"), "w", encoding="utf-8") as f:
+        json.dump(summary, f, indent=1)
+        f.write("\n")
+    tpf = summary["results"][MODE]["totals"]["time_per_frame_ms"]["mean"]
+    text = report.full_report(summary) + (
+        f"{label}; wall time per run {res['wall_s'] / a.runs:.2f} s ({res['jobs']} jobs), "
+        f"Stone Soup's tracking {_fmt_s(tpf, len(summary['scan_times']))} per run (one process)\n")
+    with open(os.path.join(a.out, "report.txt"), "w", encoding="utf-8") as f:
+        f.write(text)
+    sys.stdout.write(text)
+    return 1 if summary["results"][MODE]["runs_failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

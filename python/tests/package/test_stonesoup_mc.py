@@ -1,0 +1,93 @@
+"""mtt_sim.stonesoup_mc: Stone Soup's JPDA on the Monte Carlo's own detections, scored as mtt's runs."""
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from conftest import REPO, missing
+
+SIGMA = 5.0
+ONE_TARGET = [  # split_fast without the split and the clutter: one target at 25 m/s, PD 1, sigma 5 m
+    "splits=[]", 'clutter={"model": "none"}', "pd=1.0", f"meas_sigma=[{SIGMA}, {SIGMA}]",
+    f"tracker.meas_sigma=[{SIGMA}, {SIGMA}]", "tracker.pd=1.0", "scans.count=30",
+]
+UNSEEDED = ONE_TARGET + ["tracker.initial_tracks=[]", 'metrics={"match_distance": 50.0, "gospa_c": 100.0}']
+
+
+@pytest.fixture(scope="module")
+def ssmc():
+    try:
+        import stonesoup  # noqa: F401
+    except ImportError:
+        missing("stonesoup not installed (pip install .[stonesoup])")
+    from mtt_sim import stonesoup_mc
+    return stonesoup_mc
+
+
+def load(overrides):
+    from mtt_sim import scenario
+    return scenario.load(os.path.join(REPO, "scenarios", "split_fast.json"), overrides)
+
+
+def test_one_target_tracked_on_mc_detections(ssmc, tmp_path):
+    from mtt_sim import csvio, generate, runner
+
+    scn = load(UNSEEDED)
+    seed = 7
+    trk = ssmc.JpdaTracker(scn)  # the defaults: 3 points start a track, covariance-based deletion
+    # the detections Stone Soup consumes are those of the file mtt-track reads for this seed
+    run = generate.generate(scn, seed)
+    det, _times = csvio.read_det(generate.write_run(run, str(tmp_path), "r")["det"])
+    mine = trk.detections(run)
+    assert len(mine) == 30 and sum(len(z) for z in mine) == 30  # PD 1, no clutter: one per scan
+    for k, z in enumerate(mine):
+        sel = det["scan"] == k
+        assert np.array_equal(z, np.column_stack([det["x"][sel], det["y"][sel]]))
+
+    res = runner.one_run(scn, ssmc.MODE, 0, seed, trk)
+    assert res["ok"], res.get("error")
+    sc = res["score"]
+    c = scn["metrics"]["gospa_c"]
+    # scans 0 and 1: no track yet (three points start one): the target is missed, c/2
+    assert list(sc["gospa"][:2]) == [c / 2, c / 2] and list(sc["n_confirmed"][:2]) == [0, 0]
+    # then exactly one track, the same id, on the target: with both axes' errors of standard
+    # deviation <= sigma (a Kalman filter fed every measurement does no worse than the last one),
+    # the distance is Rayleigh: P(> 4 sigma) = exp(-8) per scan, mean <= 1.25 sigma
+    assert list(sc["n_confirmed"][2:]) == [1] * 28
+    g = sc["gospa"][2:]
+    assert g.max() < 4 * SIGMA and g.mean() < 1.25 * SIGMA, g
+    assert sc["mot"]["idsw"] == 0 and sc["mot"]["fp"] == 0 and sc["mot"]["fn"] == 2
+
+
+def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
+    from mtt_sim import generate, runner
+
+    scn = load(ONE_TARGET)
+    trk = ssmc.JpdaTracker(scn)
+    tracks, _ = trk(generate.generate(scn, 3))
+    assert set(tracks["track"]) == {0}  # the seeded track follows the target; nothing else starts
+    assert list(tracks["scan"]) == list(range(30))
+    # scan 0: the given state [100, 300] updated with one detection of sigma 5 (prior P = R: halfway)
+    d0 = np.hypot(tracks["x"][0] - 100.0, tracks["y"][0] - 300.0)
+    assert 0.0 < d0 < 2 * SIGMA
+    res = runner.one_run(scn, ssmc.MODE, 0, 3, trk)
+    assert res["ok"] and res["score"]["seeded"]["failed"] is False
+    assert res["score"]["gospa"][0] < 2 * SIGMA
+
+
+def test_bad_arguments_and_no_stonesoup(ssmc, tmp_path):
+    with pytest.raises(ValueError, match="steps:N or covar:F"):
+        ssmc.JpdaTracker(load([]), deleter="never")
+    # clutter-free scenario and clutter_density 0 (mtt estimates it): Stone Soup has no density to take
+    with pytest.raises(ValueError, match="clutter density > 0"):
+        ssmc.JpdaTracker(load(UNSEEDED + ["tracker.clutter_density=0"]))
+    code = ("import sys; sys.modules['stonesoup'] = None\n"  # Stone Soup absent: import fails
+            "from mtt_sim import stonesoup_mc\n"
+            f"sys.exit(stonesoup_mc.main(['--scenario', {os.path.join(REPO, 'scenarios', 'split.json')!r}, "
+            f"'--runs', '1', '--out', {str(tmp_path / 'o')!r}]))")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert p.returncode == 2 and "Stone Soup is not installed" in p.stderr, p.stderr
+    assert not os.path.exists(tmp_path / "o")
