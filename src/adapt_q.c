@@ -19,8 +19,12 @@
 
 #if MTT_WITH_CONTEST
 
-void mtt_adapt_scale_q(mtt_cov Q, mtt_real s, mtt_cov Qs)
+void mtt_adapt_predict(mtt_real dt, mtt_cov Q, mtt_real s, const mtt_state x, mtt_cov P,
+                       mtt_state xp, mtt_cov Pp)
 {
+    /* s Q in this function's own frame, not in mtt_predict_frame's: the
+     * IMM's prediction path, the deepest of a step, does not carry it */
+    mtt_cov Qs;
     int i, j;
     memcpy(Qs, Q, sizeof(mtt_cov));
     for (i = 0; i < MTT_STATE_N; ++i) {
@@ -28,6 +32,7 @@ void mtt_adapt_scale_q(mtt_cov Q, mtt_real s, mtt_cov Qs)
             Qs[i][j] = s * Q[i][j];
         }
     }
+    mtt_kalman_predict_q(dt, Qs, x, P, xp, Pp);
 }
 
 mtt_real mtt_adapt_floor(const mtt_tracker *trk, mtt_real dt)

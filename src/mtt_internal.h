@@ -204,8 +204,9 @@ void mtt_contest_frame(mtt_tracker *trk);
 
 /* ---- adapt_q.c: a confirmed contest track's process-noise scale (ALGORITHMS.md §2.1) ---- */
 #if MTT_WITH_CONTEST
-/* Qs = s Q (the model's leading block; Q is read, not changed). */
-void mtt_adapt_scale_q(mtt_cov Q, mtt_real s, mtt_cov Qs);
+/* The CV prediction with s Q (Q is read, not changed). */
+void mtt_adapt_predict(mtt_real dt, mtt_cov Q, mtt_real s, const mtt_state x, mtt_cov P,
+                       mtt_state xp, mtt_cov Pp);
 /* The lowest scale for an interval dt: max(adapt_s_min, Lambda^2 / adapt_index), at most 1. */
 mtt_real mtt_adapt_floor(const mtt_tracker *trk, mtt_real dt);
 /* E[NIS] of a gated target detection: chi-square 2 truncated at gamma. */

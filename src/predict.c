@@ -37,9 +37,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
                 }
                 if (t->q_scale < MTT_R(1.0)) {
                     /* a confirmed contest track's own level (ALGORITHMS.md §2.1) */
-                    mtt_cov Qs;
-                    mtt_adapt_scale_q(Q, t->q_scale, Qs);
-                    mtt_kalman_predict_q(dt, Qs, t->x, t->P, tf->xp, tf->Pp);
+                    mtt_adapt_predict(dt, Q, t->q_scale, t->x, t->P, tf->xp, tf->Pp);
                 } else
 #endif
                 {
