@@ -16,18 +16,20 @@ Stone Soup configuration (docs/PYTHON.md "Stone Soup JPDA baseline"), every
 number from the scenario's tracker settings:
   KalmanPredictor with CombinedLinearGaussianTransitionModel of
   ConstantVelocity(process_psd) per axis; KalmanUpdater with LinearGaussian
-  (mapping x, y; R = diag(meas_sigma^2)); JPDA with PDAHypothesiser
+  (mapping x, y; R = diag(meas_sigma^2)); JPDA (--associator ehm:
+  JPDAwithEHM, the same probabilities, faster) with PDAHypothesiser
   (prob_detect = pd, prob_gate = pg, clutter_spatial_density =
   clutter_density, or the scenario's mean clutter / area when the tracker
   estimates it, clutter_density = 0); MultiMeasurementInitiator fed with the
   detections JPDA left unassociated: its own GNN (GNNWith2DAssignment,
-  DistanceHypothesiser with the Mahalanobis distance gated at
-  sqrt(-2 ln(1 - pg))), prior velocity N(0, vmax^2 / 3) per axis (the
-  variance of a uniform speed in [-vmax, vmax]), --min-points scans with a
-  detection to confirm, candidates dropped after 2 scans without one;
-  track deleter --deleter; the scenario's initial_tracks enter as tracks 0,
-  1, ... with the two-point covariance (docs/ALGORITHMS.md §12.1) of the
-  first scan interval.
+  DistanceHypothesiser with the Mahalanobis distance gated at --init-gate,
+  default sqrt(-2 ln(1 - pg))), prior velocity N(0, --vel-std^2) per axis
+  (default vmax^2 / 3, the variance of a uniform speed in [-vmax, vmax]),
+  --min-points detections to confirm (default 5), candidates dropped after
+  --hold scans without one (default 1: 5 detections in a row); track
+  deleter --deleter (default steps:3, UpdateTimeStepsDeleter(3)); the
+  scenario's initial_tracks enter as tracks 0, 1, ... with the two-point
+  covariance (docs/ALGORITHMS.md §12.1) of the first scan interval.
 
 Needs Stone Soup (pip install stone-soup; the module itself imports without
 it).  Progress on stderr.  Exit status: 0 if every run succeeded, 1 if some
@@ -51,6 +53,9 @@ from . import mc, report, runner, scenario
 MODE = "stonesoup-jpda"
 T0 = datetime.datetime(2000, 1, 1)
 DEFAULTS = {"process_psd": 5.0, "pd": 0.9, "pg": 0.999, "vmax": 60.0, "clutter_density": 0.0}  # docs/FORMATS.md
+# the initiation and deletion chosen on the tuning seeds (docs/PYTHON.md "Stone Soup JPDA baseline"):
+# 5 detections in 5 consecutive scans start a track, 3 scans without one end it
+MIN_POINTS, HOLD, DELETER = 5, 1, "steps:3"
 
 
 def stonesoup_version() -> str | None:
@@ -75,12 +80,19 @@ class JpdaTracker:
     """A callable for runner.one_run: ``tracker(run) -> (tracks table, seconds)``.
 
     ``min_points``: updates a candidate needs to become a track; ``deleter``:
-    "steps:N" (UpdateTimeStepsDeleter, no detection in the last N scans) or
+    "steps:N" (UpdateTimeStepsDeleter, no detection in the last N scans),
     "covar:F" (CovarianceBasedDeleter on the position covariance's trace >
-    F (sigma_x^2 + sigma_y^2)).
+    F (sigma_x^2 + sigma_y^2)), or both joined by "+" (deleted when either
+    says so); ``vel_std``: the initiator's prior velocity standard deviation
+    per axis (default vmax / sqrt(3)); ``init_gate``: the initiator's
+    Mahalanobis gate (default sqrt(-2 ln(1 - pg))); ``hold``: scans without
+    a detection after which a candidate is dropped (UpdateTimeStepsDeleter);
+    ``associator``: "jpda" (JPDA) or "ehm" (JPDAwithEHM, the same marginals).
     """
 
-    def __init__(self, scn: dict, min_points: int = 3, deleter: str = "covar:1"):
+    def __init__(self, scn: dict, min_points: int = MIN_POINTS, deleter: str = DELETER,
+                 vel_std: float | None = None, init_gate: float | None = None, hold: int = HOLD,
+                 associator: str = "jpda"):
         trk = scn["tracker"]
         self.cfg = {k: float(trk.get(k, v)) for k, v in DEFAULTS.items()}
         self.cfg["meas_sigma"] = [float(v) for v in trk.get("meas_sigma", scn["meas_sigma"])]
@@ -89,19 +101,33 @@ class JpdaTracker:
         if self.cfg["clutter_density"] <= 0.0:
             raise scenario.ScenarioError("Stone Soup's PDAHypothesiser needs a clutter density > 0 "
                                          "(tracker.clutter_density, or clutter in the scenario)")
-        kind, _, arg = deleter.partition(":")
-        if kind not in ("steps", "covar") or not arg:
-            raise ValueError(f"deleter must be steps:N or covar:F, not {deleter!r}")
-        self.deleter = (kind, float(arg))
-        if min_points < 1:
-            raise ValueError("min_points must be >= 1")
-        self.min_points = int(min_points)
+        self.deleter = []
+        for part in deleter.split("+"):
+            kind, _, arg = part.partition(":")
+            try:
+                val = float(arg)
+            except ValueError:
+                val = 0.0
+            if kind not in ("steps", "covar") or val <= 0.0:
+                raise ValueError(f"deleter must be steps:N, covar:F or both joined by +, not {deleter!r}")
+            self.deleter.append((kind, val))
+        if min_points < 1 or hold < 1:
+            raise ValueError("min_points and hold must be >= 1")
+        if associator not in ("jpda", "ehm"):
+            raise ValueError(f"associator must be jpda or ehm, not {associator!r}")
+        self.min_points, self.hold, self.associator = int(min_points), int(hold), associator
+        self.cfg["vel_std"] = float(vel_std) if vel_std is not None else self.cfg["vmax"] / math.sqrt(3.0)
+        self.cfg["init_gate"] = (float(init_gate) if init_gate is not None
+                                 else math.sqrt(-2.0 * math.log(1.0 - self.cfg["pg"])))
+        if self.cfg["vel_std"] <= 0.0 or self.cfg["init_gate"] <= 0.0:
+            raise ValueError("vel_std and init_gate must be > 0")
         self.initial = trk.get("initial_tracks") or []
 
     def _components(self):
         from stonesoup.dataassociator.neighbour import GNNWith2DAssignment
-        from stonesoup.dataassociator.probability import JPDA
+        from stonesoup.dataassociator.probability import JPDA, JPDAwithEHM
         from stonesoup.deleter.error import CovarianceBasedDeleter
+        from stonesoup.deleter.multi import CompositeDeleter
         from stonesoup.deleter.time import UpdateTimeStepsDeleter
         from stonesoup.hypothesiser.distance import DistanceHypothesiser
         from stonesoup.hypothesiser.probability import PDAHypothesiser
@@ -120,18 +146,18 @@ class JpdaTracker:
         predictor = KalmanPredictor(CombinedLinearGaussianTransitionModel(
             [ConstantVelocity(c["process_psd"]), ConstantVelocity(c["process_psd"])]))
         updater = KalmanUpdater(self.meas_model)
-        jpda = JPDA(PDAHypothesiser(predictor, updater, clutter_spatial_density=c["clutter_density"],
-                                    prob_detect=c["pd"], prob_gate=c["pg"]))
-        if self.deleter[0] == "steps":
-            deleter = UpdateTimeStepsDeleter(int(self.deleter[1]))
-        else:
-            deleter = CovarianceBasedDeleter(self.deleter[1] * (sx * sx + sy * sy), mapping=[0, 2])
-        v2 = c["vmax"] ** 2 / 3.0
+        jpda = (JPDA if self.associator == "jpda" else JPDAwithEHM)(PDAHypothesiser(
+            predictor, updater, clutter_spatial_density=c["clutter_density"], prob_detect=c["pd"], prob_gate=c["pg"]))
+        deleters = [UpdateTimeStepsDeleter(int(arg)) if kind == "steps"
+                    else CovarianceBasedDeleter(arg * (sx * sx + sy * sy), mapping=[0, 2])
+                    for kind, arg in self.deleter]
+        deleter = deleters[0] if len(deleters) == 1 else CompositeDeleter(deleters, intersect=False)
+        v2 = c["vel_std"] ** 2
         initiator = MultiMeasurementInitiator(
             prior_state=GaussianState(np.zeros(4), np.diag([0.0, v2, 0.0, v2])),
-            deleter=UpdateTimeStepsDeleter(2), measurement_model=self.meas_model,
+            deleter=UpdateTimeStepsDeleter(self.hold), measurement_model=self.meas_model,
             data_associator=GNNWith2DAssignment(DistanceHypothesiser(
-                predictor, updater, Mahalanobis(), missed_distance=math.sqrt(-2.0 * math.log(1.0 - c["pg"])))),
+                predictor, updater, Mahalanobis(), missed_distance=c["init_gate"])),
             updater=updater, min_points=self.min_points)
         return MultiTargetMixtureTracker(initiator=initiator, deleter=deleter, detector=None,
                                          data_associator=jpda, updater=updater)
@@ -213,11 +239,18 @@ def _fmt_s(ms_per_frame, nscan) -> str:
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     mc.add_run_arguments(ap)
-    ap.add_argument("--min-points", type=int, default=3,
-                    help="detections a candidate needs to become a track (default 3)")
-    ap.add_argument("--deleter", default="covar:1",
+    ap.add_argument("--min-points", type=int, default=MIN_POINTS,
+                    help=f"detections a candidate needs to become a track (default {MIN_POINTS})")
+    ap.add_argument("--deleter", default=DELETER,
                     help="steps:N = no detection in the last N scans, covar:F = position covariance trace > "
-                         "F (sx^2 + sy^2) (default covar:1)")
+                         f"F (sx^2 + sy^2), or both joined by + (default {DELETER})")
+    ap.add_argument("--vel-std", type=float, help="initiator's prior velocity std per axis, m/s "
+                    "(default vmax / sqrt(3))")
+    ap.add_argument("--init-gate", type=float, help="initiator's Mahalanobis gate (default sqrt(-2 ln(1 - pg)))")
+    ap.add_argument("--hold", type=int, default=HOLD,
+                    help=f"scans without a detection after which the initiator drops a candidate (default {HOLD})")
+    ap.add_argument("--associator", choices=("jpda", "ehm"), default="jpda",
+                    help="jpda: JPDA, ehm: JPDAwithEHM (the same association probabilities; default jpda)")
     a = ap.parse_args(argv)
     if a.runs < 1 or a.jobs < 1:
         ap.error("--runs and --jobs must be >= 1")
@@ -228,17 +261,19 @@ def main(argv=None):
         return 2
     try:
         scn = scenario.load(a.scenario, a.set)
-        trk = JpdaTracker(scn, a.min_points, a.deleter)
+        trk = JpdaTracker(scn, a.min_points, a.deleter, a.vel_std, a.init_gate, a.hold, a.associator)
     except (scenario.ScenarioError, ValueError, OSError) as e:
         print(f"stonesoup_mc.py: {e}", file=sys.stderr)
         return 2
     os.makedirs(a.out, exist_ok=True)
     res = runner.monte_carlo(scn, [MODE], a.runs, trk, a.jobs, a.seed0,
                             keep_root=os.path.join(a.out, "run0"))
-    label = f"Stone Soup {version} JPDA (min_points {a.min_points}, deleter {a.deleter})"
+    label = (f"Stone Soup {version} {'JPDA' if a.associator == 'jpda' else 'JPDAwithEHM'} (min_points "
+             f"{a.min_points}, deleter {a.deleter}, vel_std {trk.cfg['vel_std']:.4g}, init_gate "
+             f"{trk.cfg['init_gate']:.4g}, hold {a.hold})")
     summary = runner.build_summary(scn, a.scenario, a.set, [MODE], a.runs, a.seed0, label, res)
     summary["stonesoup"] = {"version": version, "min_points": a.min_points, "deleter": a.deleter,
-                            "config": trk.cfg}
+                            "hold": a.hold, "associator": a.associator, "config": trk.cfg}
     with open(os.path.join(a.out, "summary.json"), "w", encoding="utf-8") as f:
         json.dump(summary, f, indent=1)
         f.write("\n")

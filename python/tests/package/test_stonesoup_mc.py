@@ -32,12 +32,15 @@ def load(overrides):
     return scenario.load(os.path.join(REPO, "scenarios", "split_fast.json"), overrides)
 
 
-def test_one_target_tracked_on_mc_detections(ssmc, tmp_path):
+@pytest.mark.parametrize("min_points", [None, 3])
+def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
     from mtt_sim import csvio, generate, runner
 
     scn = load(UNSEEDED)
     seed = 7
-    trk = ssmc.JpdaTracker(scn)  # the defaults: 3 points start a track, covariance-based deletion
+    # the defaults: 5 detections in a row start a track; or min_points 3 (--min-points 3)
+    trk = ssmc.JpdaTracker(scn) if min_points is None else ssmc.JpdaTracker(scn, min_points=min_points)
+    n0 = (min_points or 5) - 1  # scans before the first track
     # the detections Stone Soup consumes are those of the file mtt-track reads for this seed
     run = generate.generate(scn, seed)
     det, _times = csvio.read_det(generate.write_run(run, str(tmp_path), "r")["det"])
@@ -51,15 +54,15 @@ def test_one_target_tracked_on_mc_detections(ssmc, tmp_path):
     assert res["ok"], res.get("error")
     sc = res["score"]
     c = scn["metrics"]["gospa_c"]
-    # scans 0 and 1: no track yet (three points start one): the target is missed, c/2
-    assert list(sc["gospa"][:2]) == [c / 2, c / 2] and list(sc["n_confirmed"][:2]) == [0, 0]
+    # scans 0 to n0 - 1: no track yet: the target is missed, c/2
+    assert list(sc["gospa"][:n0]) == [c / 2] * n0 and list(sc["n_confirmed"][:n0]) == [0] * n0
     # then exactly one track, the same id, on the target: with both axes' errors of standard
     # deviation <= sigma (a Kalman filter fed every measurement does no worse than the last one),
     # the distance is Rayleigh: P(> 4 sigma) = exp(-8) per scan, mean <= 1.25 sigma
-    assert list(sc["n_confirmed"][2:]) == [1] * 28
-    g = sc["gospa"][2:]
+    assert list(sc["n_confirmed"][n0:]) == [1] * (30 - n0)
+    g = sc["gospa"][n0:]
     assert g.max() < 4 * SIGMA and g.mean() < 1.25 * SIGMA, g
-    assert sc["mot"]["idsw"] == 0 and sc["mot"]["fp"] == 0 and sc["mot"]["fn"] == 2
+    assert sc["mot"]["idsw"] == 0 and sc["mot"]["fp"] == 0 and sc["mot"]["fn"] == n0
 
 
 def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
@@ -79,8 +82,16 @@ def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
 
 
 def test_bad_arguments_and_no_stonesoup(ssmc, tmp_path):
-    with pytest.raises(ValueError, match="steps:N or covar:F"):
-        ssmc.JpdaTracker(load([]), deleter="never")
+    for bad in ("never", "steps:", "covar:2+never", "steps:0"):
+        with pytest.raises(ValueError, match="steps:N, covar:F or both"):
+            ssmc.JpdaTracker(load([]), deleter=bad)
+    both = ssmc.JpdaTracker(load([]), deleter="covar:2+steps:3")._components().deleter
+    assert [type(d).__name__ for d in both.deleters] == ["CovarianceBasedDeleter", "UpdateTimeStepsDeleter"]
+    assert both.intersect is False and both.deleters[0].covar_trace_thresh == 2 * (10.0 ** 2 + 10.0 ** 2)
+    with pytest.raises(ValueError, match="jpda or ehm"):
+        ssmc.JpdaTracker(load([]), associator="lbp")
+    with pytest.raises(ValueError, match="hold must be >= 1"):
+        ssmc.JpdaTracker(load([]), hold=0)
     # clutter-free scenario and clutter_density 0 (mtt estimates it): Stone Soup has no density to take
     with pytest.raises(ValueError, match="clutter density > 0"):
         ssmc.JpdaTracker(load(UNSEEDED + ["tracker.clutter_density=0"]))
