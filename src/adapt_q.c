@@ -74,7 +74,7 @@ void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
     nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
     /* weight beta_s: the NIS is the target's with that probability */
     w = (MTT_R(1.0) - p->adapt_memory) * pp->beta;
-    t->nis_ratio += w * (nis / mtt_adapt_nis_mean(trk->gamma, p->pg) - t->nis_ratio);
+    t->nis_ratio += w * (nis / trk->nis_mean - t->nis_ratio);
     if (p->adapt_reset_nis > MTT_R(0.0) && nis > p->adapt_reset_nis) {
         t->q_scale = MTT_R(1.0); /* a manoeuvre: back to the configured level at once */
         t->nis_ratio = MTT_R(1.0);

@@ -415,6 +415,8 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
  * course (per axis when the speed is 0).  Q's 4 x 4 cv part (position
  * first, then velocity), 0 beyond. */
 void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q);
+/* The unit normal (-vy, vx)/|v| of a course; (0, 1) and 0 returned at speed 0, else 1. */
+int mtt_split_normal(mtt_real vx, mtt_real vy, mtt_real *nx, mtt_real *ny);
 /* Model 5's child half for a split of known speed (ALGORITHMS.md §14.3,
  * split_known_speed): after mtt_split_just (its cluster and beta_n), the
  * child's half is updated again from the cv prediction (xp, Pp) moved

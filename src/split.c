@@ -639,13 +639,25 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
     return mixed_update(wk, 2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
 }
 
+int mtt_split_normal(mtt_real vx, mtt_real vy, mtt_real *nx, mtt_real *ny)
+{
+    const mtt_real v = mtt_sqrt(vx * vx + vy * vy);
+    *nx = MTT_R(0.0);
+    *ny = MTT_R(1.0);
+    if (!(v > MTT_R(0.0))) {
+        return 0;
+    }
+    *nx = -vy / v;
+    *ny = vx / v;
+    return 1;
+}
+
 /* ---- model 5's velocity impulse ---- */
 
 void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_real vy, mtt_cov Q)
 {
-    const mtt_real v = mtt_sqrt(vx * vx + vy * vy);
     const mtt_real q = dv * dv;
-    mtt_real qb[2][2], D[2][2];
+    mtt_real qb[2][2], D[2][2], nx, ny;
     int a, b;
     /* per axis: position q dt^2 / 2, cross q dt / 2, velocity q */
     qb[0][0] = MTT_R(0.5) * q * dt * dt;
@@ -657,8 +669,7 @@ void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_
     D[0][1] = MTT_R(0.0);
     D[1][0] = MTT_R(0.0);
     D[1][1] = MTT_R(1.0);
-    if (across && v > MTT_R(0.0)) {
-        const mtt_real nx = -vy / v, ny = vx / v;
+    if (across && mtt_split_normal(vx, vy, &nx, &ny)) {
         D[0][0] = nx * nx;
         D[0][1] = nx * ny;
         D[1][0] = nx * ny;
@@ -680,9 +691,8 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
 {
     mtt_real(*Pk)[NS] = wk->Pq; /* the child's prior */
     mtt_real *xk = wk->xh[1];
-    const mtt_real v = mtt_sqrt(xp[2] * xp[2] + xp[3] * xp[3]);
     const mtt_real vv = (MTT_SPLIT_KNOWN_SD * dv) * (MTT_SPLIT_KNOWN_SD * dv);
-    mtt_real nx = MTT_R(0.0), ny = MTT_R(1.0), zx = MTT_R(0.0), zy = MTT_R(0.0), bs = MTT_R(0.0);
+    mtt_real nx, ny, zx = MTT_R(0.0), zy = MTT_R(0.0), bs = MTT_R(0.0);
     mtt_real side, off, best = MTT_R(0.0), qb[2][2], D[2][2], Sa[3], Sai[3], Sb[3], Sbi[3], deta, detb;
     mtt_real nub[QMAX] = {MTT_R(0.0)}, sp[QMAX][QMAX] = {{MTT_R(0.0)}}, g[2] = {MTT_R(0.0), MTT_R(0.0)};
     mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
@@ -694,10 +704,7 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
         !(dt > MTT_R(0.0)) || n_off < 1u || n_off > MTT_SPLIT_KNOWN_MAX_OFFSETS) {
         return -1;
     }
-    if (v > MTT_R(0.0)) { /* the unit normal of the course; per axis y at speed 0 */
-        nx = -xp[3] / v;
-        ny = xp[2] / v;
-    }
+    (void)mtt_split_normal(xp[2], xp[3], &nx, &ny); /* per axis y at speed 0 */
     for (j = 0u; j < m; ++j) {
         if (cluster[j] > 1u) {
             return -1;

@@ -286,19 +286,6 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     }
 }
 
-/* The unit normal of the course of the state x (velocity at 2, 3); (0, 1)
- * at speed 0. */
-static void normal(const mtt_real x[], mtt_real *nx, mtt_real *ny)
-{
-    const mtt_real v = mtt_sqrt(x[2] * x[2] + x[3] * x[3]);
-    *nx = MTT_R(0.0);
-    *ny = MTT_R(1.0);
-    if (v > MTT_R(0.0)) {
-        *nx = -x[3] / v;
-        *ny = x[2] / v;
-    }
-}
-
 /* The late look's clusters (split_known_speed): the parent's centre is the
  * measurement nearest the cv prediction (on its S, the prediction stage's
  * tf->Sim; beta 2, above every other), the others rank by their nearest
@@ -379,7 +366,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     m = gather(trk, ti, 1, c, w);
     if (known && m < 2u) {
         /* the late look: a gate widened across the course */
-        normal(tf->xpm[cm], &nx, &ny);
+        (void)mtt_split_normal(tf->xpm[cm][2], tf->xpm[cm][3], &nx, &ny);
         c[1][0] = c[0][0];
         c[1][1] = c[0][1];
         w[1][0] = w[0][0] + KNOWN_LATE_REACH * p->split_dv * dt * mtt_fabs(nx);

@@ -274,6 +274,7 @@ typedef struct mtt_tracker {
     mtt_real time;
 #if MTT_WITH_CONTEST
     mtt_real q_floor;               /* this frame's lowest process-noise scale (ALGORITHMS.md §2.1) */
+    mtt_real nis_mean;              /* E[NIS] of a gated target detection, from PG: set once */
 #endif
     uint8_t have_time;
     uint32_t next_id;
