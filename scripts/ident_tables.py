@@ -43,7 +43,7 @@ import tempfile
 
 import numpy as np
 
-from mtt_sim import csvio, generate, metrics, runner, scenario
+from mtt_sim import csvio, gen, metrics, runner, scenario
 
 # name: (association, overrides)
 ROWS = {
@@ -92,9 +92,9 @@ GATES = ("intensity", "vmax")
 
 def track_run(scn, seed, exe):
     """Generate run `seed` of `scn`, track it with mtt-track: (run, tracks, scans, match distance)."""
-    run = generate.generate(scn, seed)
+    run = gen.generate(scn, seed)
     with tempfile.TemporaryDirectory(prefix="mtt_id_") as td:
-        paths = generate.write_run(run, td, "run")
+        paths = gen.write_run(run, td, "run")
         tp = os.path.join(td, "run.tracks.csv")
         runner.run_tracker(exe, paths["settings"], paths["det"], tp)
         tr = csvio.read_tracks(tp)

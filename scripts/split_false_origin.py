@@ -28,17 +28,17 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from mtt_sim import csvio, generate, metrics, runner  # noqa: E402
+from mtt_sim import csvio, gen, metrics, runner  # noqa: E402
 from mtt_sim import scenario as scnmod  # noqa: E402
 
 CLASSES = ("dup-parent", "dup-tracked", "untracked", "merged", "clutter")
 
 
 def one(scn, seed, exe):
-    run = generate.generate(scn, seed, "lm-ihpda")
+    run = gen.generate(scn, seed, "lm-ihpda")
     nscan = len(run["times"])
     with tempfile.TemporaryDirectory(prefix="sfo_") as td:
-        p = generate.write_run(run, td, "r")
+        p = gen.write_run(run, td, "r")
         runner.run_tracker(exe, p["settings"], p["det"], os.path.join(td, "t.csv"))
         tr = csvio.read_tracks(os.path.join(td, "t.csv"))
     md = float(scn["metrics"]["match_distance"])

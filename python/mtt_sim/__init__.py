@@ -3,7 +3,7 @@
 Host-side only (Python 3.11, numpy, matplotlib).  Modules:
 
 - ``scenario``  load and validate scenario JSON files (schema: scenarios/README.md)
-- ``generate``  draw one run (truth, detections) from a scenario and a seed
+- ``gen``       draw one run (truth, detections) from a scenario and a seed; its command
 - ``csvio``     read and write the CSV / JSON files of docs/FORMATS.md
 - ``assign``    exact linear assignment (Hungarian) and a brute-force reference
 - ``metrics``   pure scoring functions (matching, GOSPA, CLEAR-MOT, RMSE, ...)
@@ -12,4 +12,4 @@ Host-side only (Python 3.11, numpy, matplotlib).  Modules:
 - ``plots``     matplotlib (Agg) figures
 """
 
-__all__ = ["scenario", "generate", "csvio", "assign", "metrics", "runner", "report", "plots"]
+__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "runner", "report", "plots"]

@@ -32,7 +32,7 @@ import time
 
 import numpy as np
 
-from . import csvio, generate, metrics
+from . import csvio, gen, metrics
 from . import scenario as scnmod
 
 __all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_available", "track_in_process", "IN_PROCESS",
@@ -174,7 +174,7 @@ def run_tracker(exe: str, settings: str, det: str, tracks: str, timeout: float =
 def _track_process(run: dict, mode: str, exe: str, keep_dir: str | None, timeout: float):
     """One mtt-track process on the run's files; returns (tracks table, wall seconds)."""
     with tempfile.TemporaryDirectory(prefix="mtt_mc_") as td:
-        paths = generate.write_run(run, td, "run")
+        paths = gen.write_run(run, td, "run")
         tpath = os.path.join(td, "run.tracks.csv")
         elapsed = run_tracker(exe, paths["settings"], paths["det"], tpath, timeout)
         try:
@@ -201,7 +201,7 @@ def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir:
     res = {"mode": mode, "run": run_index, "seed": seed, "ok": False}
     try:
         # another tracker (a callable) ignores the association mode; the detections do not depend on it
-        run = generate.generate(scn, seed, None if callable(exe) else mode)
+        run = gen.generate(scn, seed, None if callable(exe) else mode)
         nscan = len(run["times"])
         if exe == IN_PROCESS or callable(exe):
             # run 0 is kept: every column as mtt-track would print it
@@ -209,7 +209,7 @@ def one_run(scn: dict, mode: str, run_index: int, seed: int, exe: str, keep_dir:
                                track_in_process(run, csvio.TRACKS_HEADER.split(",") if keep_dir else ("x", "y")))
             if keep_dir:
                 name = run["name"]
-                generate.write_run(run, keep_dir, name)
+                gen.write_run(run, keep_dir, name)
                 os.replace(os.path.join(keep_dir, f"{name}.settings.json"),
                            os.path.join(keep_dir, f"{name}.{mode}.settings.json"))
                 with open(os.path.join(keep_dir, f"{name}.{mode}.tracks.csv"), "w", encoding="utf-8") as f:

@@ -4,7 +4,7 @@
     PYTHONPATH=python python3 -m mtt_sim.stonesoup_mc --scenario scenarios/split_fast.json --runs 50 \\
         --out out/ss_fast
 
-Run r draws seed SEED0 + r with mtt_sim.generate exactly as mtt_sim.mc does
+Run r draws seed SEED0 + r with mtt_sim.gen exactly as mtt_sim.mc does
 (the same detections, handed over with the digits mtt-track reads from the
 detections file), tracks it with Stone Soup's MultiTargetMixtureTracker + JPDA
 and scores it with mtt_sim.metrics.score_run: OUT/report.txt (also printed)
