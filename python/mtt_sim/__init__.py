@@ -9,7 +9,7 @@ Host-side only (Python 3.11, numpy, matplotlib).  Modules:
 - ``metrics``   pure scoring functions (matching, GOSPA, CLEAR-MOT, RMSE, ...)
 - ``runner``    Monte Carlo runner around the ``mtt-track`` binary
 - ``report``    text tables in the papers' formats
-- ``plots``     matplotlib (Agg) figures
+- ``plot``      matplotlib (Agg) figures; its command
 """
 
-__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "runner", "report", "plots"]
+__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "runner", "report", "plot"]

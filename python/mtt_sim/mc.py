@@ -19,7 +19,7 @@ import json
 import os
 import sys
 
-from . import plots, report, runner, scenario
+from . import plot, report, runner, scenario
 
 
 def add_run_arguments(ap: argparse.ArgumentParser) -> None:
@@ -78,7 +78,7 @@ def main(argv=None):
         f.write(text)
     sys.stdout.write(text)
     if not a.no_plots and any(summary["results"][m]["runs_ok"] for m in modes):
-        paths = plots.plot_all(summary, a.out)
+        paths = plot.plot_all(summary, a.out)
         print("plots: " + ", ".join(os.path.relpath(p, a.out) for p in paths))
     failed = sum(summary["results"][m]["runs_failed"] for m in modes)
     return 1 if failed else 0
