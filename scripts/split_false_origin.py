@@ -28,7 +28,7 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from mtt_sim import csvio, gen, metrics, runner  # noqa: E402
+from mtt_sim import csvio, gen, mc, metrics  # noqa: E402
 from mtt_sim import scenario as scnmod  # noqa: E402
 
 CLASSES = ("dup-parent", "dup-tracked", "untracked", "merged", "clutter")
@@ -39,7 +39,7 @@ def one(scn, seed, exe):
     nscan = len(run["times"])
     with tempfile.TemporaryDirectory(prefix="sfo_") as td:
         p = gen.write_run(run, td, "r")
-        runner.run_tracker(exe, p["settings"], p["det"], os.path.join(td, "t.csv"))
+        mc.run_tracker(exe, p["settings"], p["det"], os.path.join(td, "t.csv"))
         tr = csvio.read_tracks(os.path.join(td, "t.csv"))
     md = float(scn["metrics"]["match_distance"])
     gate = 3.0 * float(max(scn["meas_sigma"]))
@@ -98,7 +98,7 @@ def main():
     ap.add_argument("--mtt-track", default=None)
     a = ap.parse_args()
     scn = scnmod.load(a.scenario, a.set)
-    exe = runner.find_mtt_track(a.mtt_track)
+    exe = mc.find_mtt_track(a.mtt_track)
     nc, fs = {}, {}
     tot = scans = 0
     for s in range(a.seed0, a.seed0 + a.runs):

@@ -7,9 +7,9 @@ Host-side only (Python 3.11, numpy, matplotlib).  Modules:
 - ``csvio``     read and write the CSV / JSON files of docs/FORMATS.md
 - ``assign``    exact linear assignment (Hungarian) and a brute-force reference
 - ``metrics``   pure scoring functions (matching, GOSPA, CLEAR-MOT, RMSE, ...)
-- ``runner``    Monte Carlo runner around the ``mtt-track`` binary
+- ``mc``        Monte Carlo runner around the tracker (in-process or ``mtt-track``); its command
 - ``report``    text tables in the papers' formats
 - ``plot``      matplotlib (Agg) figures; its command
 """
 
-__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "runner", "report", "plot"]
+__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "mc", "report", "plot"]

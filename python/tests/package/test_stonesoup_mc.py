@@ -34,7 +34,7 @@ def load(overrides):
 
 @pytest.mark.parametrize("min_points", [None, 3])
 def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
-    from mtt_sim import csvio, gen, runner
+    from mtt_sim import csvio, gen, mc
 
     scn = load(UNSEEDED)
     seed = 7
@@ -50,7 +50,7 @@ def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
         sel = det["scan"] == k
         assert np.array_equal(z, np.column_stack([det["x"][sel], det["y"][sel]]))
 
-    res = runner.one_run(scn, ssmc.MODE, 0, seed, trk)
+    res = mc.one_run(scn, ssmc.MODE, 0, seed, trk)
     assert res["ok"], res.get("error")
     sc = res["score"]
     c = scn["metrics"]["gospa_c"]
@@ -66,7 +66,7 @@ def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
 
 
 def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
-    from mtt_sim import gen, runner
+    from mtt_sim import gen, mc
 
     scn = load(ONE_TARGET)
     trk = ssmc.JpdaTracker(scn)
@@ -76,7 +76,7 @@ def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
     # scan 0: the given state [100, 300] updated with one detection of sigma 5 (prior P = R: halfway)
     d0 = np.hypot(tracks["x"][0] - 100.0, tracks["y"][0] - 300.0)
     assert 0.0 < d0 < 2 * SIGMA
-    res = runner.one_run(scn, ssmc.MODE, 0, 3, trk)
+    res = mc.one_run(scn, ssmc.MODE, 0, 3, trk)
     assert res["ok"] and res["score"]["seeded"]["failed"] is False
     assert res["score"]["gospa"][0] < 2 * SIGMA
 
