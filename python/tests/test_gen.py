@@ -1,4 +1,4 @@
-"""Generator: determinism, statistics, docs/FORMATS.md conformity, shipped scenarios."""
+"""mtt_sim.gen, the generator: determinism, statistics, docs/FORMATS.md conformity, shipped scenarios."""
 
 import copy
 import glob
