@@ -43,7 +43,7 @@ import tempfile
 
 import numpy as np
 
-from mtt_sim import csvio, generate, metrics, runner, scenario
+from mtt_sim import csvio, gen, mc, metrics, scenario
 
 # name: (association, overrides)
 ROWS = {
@@ -92,11 +92,11 @@ GATES = ("intensity", "vmax")
 
 def track_run(scn, seed, exe):
     """Generate run `seed` of `scn`, track it with mtt-track: (run, tracks, scans, match distance)."""
-    run = generate.generate(scn, seed)
+    run = gen.generate(scn, seed)
     with tempfile.TemporaryDirectory(prefix="mtt_id_") as td:
-        paths = generate.write_run(run, td, "run")
+        paths = gen.write_run(run, td, "run")
         tp = os.path.join(td, "run.tracks.csv")
-        runner.run_tracker(exe, paths["settings"], paths["det"], tp)
+        mc.run_tracker(exe, paths["settings"], paths["det"], tp)
         tr = csvio.read_tracks(tp)
     return run, tr, len(run["times"]), float(scn["metrics"]["match_distance"])
 
@@ -137,7 +137,7 @@ def approach_one(args):
 
 
 def approach(a):
-    exe = runner.find_mtt_track(a.mtt_track)
+    exe = mc.find_mtt_track(a.mtt_track)
     targets = scenario.expand_targets(scenario.load(a.scenario, a.set))
     items = [(a.scenario, tuple(a.set), g, s, exe) for g in GATES for s in range(a.seed0, a.seed0 + a.runs)]
     with multiprocessing.get_context("fork").Pool(a.jobs) as pool:
@@ -184,7 +184,7 @@ def targets_one(args):
 
 
 def targets(a):
-    exe = runner.find_mtt_track(a.mtt_track)
+    exe = mc.find_mtt_track(a.mtt_track)
     mode, sets = ROWS[a.row]
     sets = list(sets) + [f'tracker.association="{mode}"'] + a.set
     items = [(a.scenario, tuple(sets), s, exe) for s in range(a.seed0, a.seed0 + a.runs)]

@@ -28,18 +28,18 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from mtt_sim import csvio, generate, metrics, runner  # noqa: E402
+from mtt_sim import csvio, gen, mc, metrics  # noqa: E402
 from mtt_sim import scenario as scnmod  # noqa: E402
 
 CLASSES = ("dup-parent", "dup-tracked", "untracked", "merged", "clutter")
 
 
 def one(scn, seed, exe):
-    run = generate.generate(scn, seed, "lm-ihpda")
+    run = gen.generate(scn, seed, "lm-ihpda")
     nscan = len(run["times"])
     with tempfile.TemporaryDirectory(prefix="sfo_") as td:
-        p = generate.write_run(run, td, "r")
-        runner.run_tracker(exe, p["settings"], p["det"], os.path.join(td, "t.csv"))
+        p = gen.write_run(run, td, "r")
+        mc.run_tracker(exe, p["settings"], p["det"], os.path.join(td, "t.csv"))
         tr = csvio.read_tracks(os.path.join(td, "t.csv"))
     md = float(scn["metrics"]["match_distance"])
     gate = 3.0 * float(max(scn["meas_sigma"]))
@@ -98,7 +98,7 @@ def main():
     ap.add_argument("--mtt-track", default=None)
     a = ap.parse_args()
     scn = scnmod.load(a.scenario, a.set)
-    exe = runner.find_mtt_track(a.mtt_track)
+    exe = mc.find_mtt_track(a.mtt_track)
     nc, fs = {}, {}
     tot = scans = 0
     for s in range(a.seed0, a.seed0 + a.runs):

@@ -3,13 +3,13 @@
 Host-side only (Python 3.11, numpy, matplotlib).  Modules:
 
 - ``scenario``  load and validate scenario JSON files (schema: scenarios/README.md)
-- ``generate``  draw one run (truth, detections) from a scenario and a seed
+- ``gen``       draw one run (truth, detections) from a scenario and a seed; its command
 - ``csvio``     read and write the CSV / JSON files of docs/FORMATS.md
 - ``assign``    exact linear assignment (Hungarian) and a brute-force reference
 - ``metrics``   pure scoring functions (matching, GOSPA, CLEAR-MOT, RMSE, ...)
-- ``runner``    Monte Carlo runner around the ``mtt-track`` binary
+- ``mc``        Monte Carlo runner around the tracker (in-process or ``mtt-track``); its command
 - ``report``    text tables in the papers' formats
-- ``plots``     matplotlib (Agg) figures
+- ``plot``      matplotlib (Agg) figures; its command
 """
 
-__all__ = ["scenario", "generate", "csvio", "assign", "metrics", "runner", "report", "plots"]
+__all__ = ["scenario", "gen", "csvio", "assign", "metrics", "mc", "report", "plot"]

@@ -4,7 +4,7 @@
     PYTHONPATH=python python3 -m mtt_sim.stonesoup_mc --scenario scenarios/split_fast.json --runs 50 \\
         --out out/ss_fast
 
-Run r draws seed SEED0 + r with mtt_sim.generate exactly as mtt_sim.mc does
+Run r draws seed SEED0 + r with mtt_sim.gen exactly as mtt_sim.mc does
 (the same detections, handed over with the digits mtt-track reads from the
 detections file), tracks it with Stone Soup's MultiTargetMixtureTracker + JPDA
 and scores it with mtt_sim.metrics.score_run: OUT/report.txt (also printed)
@@ -48,7 +48,7 @@ import time
 
 import numpy as np
 
-from . import mc, report, runner, scenario
+from . import mc, report, scenario
 
 MODE = "stonesoup-jpda"
 T0 = datetime.datetime(2000, 1, 1)
@@ -77,7 +77,7 @@ def mean_clutter(scn: dict) -> float:
 
 
 class JpdaTracker:
-    """A callable for runner.one_run: ``tracker(run) -> (tracks table, seconds)``.
+    """A callable for mc.one_run: ``tracker(run) -> (tracks table, seconds)``.
 
     ``min_points``: updates a candidate needs to become a track; ``deleter``:
     "steps:N" (UpdateTimeStepsDeleter, no detection in the last N scans),
@@ -184,7 +184,7 @@ class JpdaTracker:
         """Per scan, the (n, 2) detections as mtt-track reads them from the run's file (%.10g), in file order."""
         det = run["det"]
         scans = np.asarray(det["scan"], int)
-        xy = np.column_stack([runner.text_values(det["x"], 10), runner.text_values(det["y"], 10)])
+        xy = np.column_stack([mc.text_values(det["x"], 10), mc.text_values(det["y"], 10)])
         return [xy[scans == k] for k in range(len(run["times"]))]
 
     @staticmethod
@@ -201,7 +201,7 @@ class JpdaTracker:
     def __call__(self, run: dict):
         from stonesoup.types.detection import Detection
 
-        times = runner.text_values(run["times"], 10)
+        times = mc.text_values(run["times"], 10)
         dt = float(times[1] - times[0]) if len(times) > 1 else 1.0
         per_scan = self.detections(run)
         tracker = self._components()  # outside the timing: the first run of a process imports Stone Soup here
@@ -220,7 +220,7 @@ class JpdaTracker:
                 _, live = tracker.update_tracker(t, dets)
                 self._record(k, live, ids, rows)
         except (np.linalg.LinAlgError, ValueError) as e:
-            raise runner.TrackerError(f"Stone Soup: {e}") from None
+            raise mc.TrackerError(f"Stone Soup: {e}") from None
         elapsed = time.perf_counter() - t_start
         rows.sort(key=lambda r: (r[0], r[1]))
         a = np.array(rows, float).reshape(-1, 9)
@@ -266,12 +266,12 @@ def main(argv=None):
         print(f"stonesoup_mc.py: {e}", file=sys.stderr)
         return 2
     os.makedirs(a.out, exist_ok=True)
-    res = runner.monte_carlo(scn, [MODE], a.runs, trk, a.jobs, a.seed0,
-                            keep_root=os.path.join(a.out, "run0"))
+    res = mc.monte_carlo(scn, [MODE], a.runs, trk, a.jobs, a.seed0,
+                         keep_root=os.path.join(a.out, "run0"))
     label = (f"Stone Soup {version} {'JPDA' if a.associator == 'jpda' else 'JPDAwithEHM'} (min_points "
              f"{a.min_points}, deleter {a.deleter}, vel_std {trk.cfg['vel_std']:.4g}, init_gate "
              f"{trk.cfg['init_gate']:.4g}, hold {a.hold})")
-    summary = runner.build_summary(scn, a.scenario, a.set, [MODE], a.runs, a.seed0, label, res)
+    summary = mc.build_summary(scn, a.scenario, a.set, [MODE], a.runs, a.seed0, label, res)
     summary["stonesoup"] = {"version": version, "min_points": a.min_points, "deleter": a.deleter,
                             "hold": a.hold, "associator": a.associator, "config": trk.cfg}
     with open(os.path.join(a.out, "summary.json"), "w", encoding="utf-8") as f:

@@ -7,7 +7,7 @@ import unittest
 
 import numpy as np
 
-from mtt_sim import assign, csvio, metrics, report, runner
+from mtt_sim import assign, csvio, mc, metrics, report
 
 
 class TestAssignment(unittest.TestCase):
@@ -265,7 +265,7 @@ class TestRmseLegs(unittest.TestCase):
         res = {"ok": True, "run": 0, "seed": 0, "score": sc, "time_per_frame": 0.001}
         summaries = {}
         for name, windows in (("turns", {0: [(1, 1)]}), ("straight", None)):
-            agg = runner.Aggregate(3, windows)
+            agg = mc.Aggregate(3, windows)
             agg.add(res)
             summaries[name] = {"modes": ["m"], "results": {"m": agg.result()}, "metrics": {"gospa_c": 10.0}}
         tot = summaries["turns"]["results"]["m"]["totals"]
@@ -323,7 +323,7 @@ class TestSplitOutcome(unittest.TestCase):
     def test_aggregate_quantiles(self):
         # delays 1, 2, 3, 8 and one child never confirmed: median 3, 90th
         # percentile (inverted cdf over 5) the never one, within 3 scans 3 of 5
-        agg = runner.Aggregate(6)
+        agg = mc.Aggregate(6)
         truth, tracks = self.case()
         sc = metrics.score_run(truth, tracks, 6, 10.0, 10.0, splits=[(1, 0, 2)])
         for d in ([1], [2], [3], [8], [None]):

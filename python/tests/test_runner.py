@@ -8,7 +8,7 @@ import sys
 import tempfile
 import unittest
 
-from mtt_sim import runner
+from mtt_sim import mc
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -104,7 +104,7 @@ class TestRunnerWithMttTrack(unittest.TestCase):
     """Two runs of the tiny scenario through the real mtt-track, if one is built."""
 
     def test_end_to_end_real_binary(self):
-        exe = runner.find_mtt_track()
+        exe = mc.find_mtt_track()
         if exe is None:
             self.skipTest("no mtt-track binary: set MTT_TRACK or build build/host-float/cli/mtt-track")
         out = tmpdir(self, "mtt_mc_real_")

@@ -56,7 +56,7 @@ def run_mtt_track(exe, settings, det, tracks, *extra):
 def scenario_run(tmp_path_factory):
     """scenario_run(name, seed, association=None) -> (run dict, files dict): one
     drawn run of scenarios/<name>.json written to det/truth/settings files."""
-    from mtt_sim import generate, scenario
+    from mtt_sim import gen, scenario
 
     cache = {}
     base = tmp_path_factory.mktemp("runs")
@@ -65,9 +65,9 @@ def scenario_run(tmp_path_factory):
         key = (name, seed, association)
         if key not in cache:
             scn = scenario.load(os.path.join(REPO, "scenarios", f"{name}.json"))
-            run = generate.generate(scn, seed, association)
+            run = gen.generate(scn, seed, association)
             stem = f"{name}_{seed}_{association or 'default'}"
-            cache[key] = (scn, run, generate.write_run(run, str(base), stem))
+            cache[key] = (scn, run, gen.write_run(run, str(base), stem))
         return cache[key]
 
     return get

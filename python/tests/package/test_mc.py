@@ -31,13 +31,13 @@ def same(a, b, path="score"):
     ("crossing3", "lm-ipda", 5), ("crossing3", "lm-ihpda", 6), ("coalesce3", "ipda", 1),
     ("split", "lm-ipda", 2), ("formations", "jpda", 1)])
 def test_in_process_run_equals_mtt_track_run(name, mode, seed, mtt_track, tmp_path):
-    from mtt_sim import csvio, runner, scenario
+    from mtt_sim import csvio, mc, scenario
 
-    assert runner.find_tracker("auto") == runner.IN_PROCESS
-    assert runner.find_tracker("mtt-track", mtt_track) == os.path.abspath(mtt_track)
+    assert mc.find_tracker("auto") == mc.IN_PROCESS
+    assert mc.find_tracker("mtt-track", mtt_track) == os.path.abspath(mtt_track)
     scn = scenario.load(os.path.join(REPO, "scenarios", f"{name}.json"))
-    a = runner.one_run(scn, mode, 0, seed, runner.IN_PROCESS, keep_dir=str(tmp_path / "a"))
-    b = runner.one_run(scn, mode, 0, seed, mtt_track, keep_dir=str(tmp_path / "b"))
+    a = mc.one_run(scn, mode, 0, seed, mc.IN_PROCESS, keep_dir=str(tmp_path / "a"))
+    b = mc.one_run(scn, mode, 0, seed, mtt_track, keep_dir=str(tmp_path / "b"))
     assert a["ok"] and b["ok"], (a.get("error"), b.get("error"))
     same(a["score"], b["score"])
     # the kept tracks files hold the same tracks
@@ -48,13 +48,13 @@ def test_in_process_run_equals_mtt_track_run(name, mode, seed, mtt_track, tmp_pa
 
 
 def test_in_process_forced_and_errors(tmp_path):
-    from mtt_sim import runner, scenario
+    from mtt_sim import mc, scenario
 
     with pytest.raises(ValueError):
-        runner.find_tracker("fast")
+        mc.find_tracker("fast")
     scn = scenario.load(os.path.join(REPO, "scenarios", "crossing3.json"), ["tracker.pd=1.5"])
-    r = runner.one_run(scn, "lm-ipda", 0, 1, runner.IN_PROCESS)
+    r = mc.one_run(scn, "lm-ipda", 0, 1, mc.IN_PROCESS)
     assert not r["ok"] and "key 'pd'" in r["error"]
-    mc = runner.monte_carlo(scenario.load(os.path.join(REPO, "scenarios", "crossing3.json")),
-                            ["lm-ipda"], 2, runner.IN_PROCESS, jobs=1, progress=None)
-    assert mc["results"]["lm-ipda"]["runs_ok"] == 2
+    res = mc.monte_carlo(scenario.load(os.path.join(REPO, "scenarios", "crossing3.json")),
+                         ["lm-ipda"], 2, mc.IN_PROCESS, jobs=1, progress=None)
+    assert res["results"]["lm-ipda"]["runs_ok"] == 2

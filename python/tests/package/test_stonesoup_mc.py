@@ -34,7 +34,7 @@ def load(overrides):
 
 @pytest.mark.parametrize("min_points", [None, 3])
 def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
-    from mtt_sim import csvio, generate, runner
+    from mtt_sim import csvio, gen, mc
 
     scn = load(UNSEEDED)
     seed = 7
@@ -42,15 +42,15 @@ def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
     trk = ssmc.JpdaTracker(scn) if min_points is None else ssmc.JpdaTracker(scn, min_points=min_points)
     n0 = (min_points or 5) - 1  # scans before the first track
     # the detections Stone Soup consumes are those of the file mtt-track reads for this seed
-    run = generate.generate(scn, seed)
-    det, _times = csvio.read_det(generate.write_run(run, str(tmp_path), "r")["det"])
+    run = gen.generate(scn, seed)
+    det, _times = csvio.read_det(gen.write_run(run, str(tmp_path), "r")["det"])
     mine = trk.detections(run)
     assert len(mine) == 30 and sum(len(z) for z in mine) == 30  # PD 1, no clutter: one per scan
     for k, z in enumerate(mine):
         sel = det["scan"] == k
         assert np.array_equal(z, np.column_stack([det["x"][sel], det["y"][sel]]))
 
-    res = runner.one_run(scn, ssmc.MODE, 0, seed, trk)
+    res = mc.one_run(scn, ssmc.MODE, 0, seed, trk)
     assert res["ok"], res.get("error")
     sc = res["score"]
     c = scn["metrics"]["gospa_c"]
@@ -66,17 +66,17 @@ def test_one_target_tracked_on_mc_detections(ssmc, tmp_path, min_points):
 
 
 def test_seeded_track_is_track_zero_from_scan_zero(ssmc):
-    from mtt_sim import generate, runner
+    from mtt_sim import gen, mc
 
     scn = load(ONE_TARGET)
     trk = ssmc.JpdaTracker(scn)
-    tracks, _ = trk(generate.generate(scn, 3))
+    tracks, _ = trk(gen.generate(scn, 3))
     assert set(tracks["track"]) == {0}  # the seeded track follows the target; nothing else starts
     assert list(tracks["scan"]) == list(range(30))
     # scan 0: the given state [100, 300] updated with one detection of sigma 5 (prior P = R: halfway)
     d0 = np.hypot(tracks["x"][0] - 100.0, tracks["y"][0] - 300.0)
     assert 0.0 < d0 < 2 * SIGMA
-    res = runner.one_run(scn, ssmc.MODE, 0, 3, trk)
+    res = mc.one_run(scn, ssmc.MODE, 0, 3, trk)
     assert res["ok"] and res["score"]["seeded"]["failed"] is False
     assert res["score"]["gospa"][0] < 2 * SIGMA
 

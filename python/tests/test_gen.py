@@ -1,4 +1,4 @@
-"""Generator: determinism, statistics, docs/FORMATS.md conformity, shipped scenarios."""
+"""mtt_sim.gen, the generator: determinism, statistics, docs/FORMATS.md conformity, shipped scenarios."""
 
 import copy
 import glob
@@ -13,7 +13,7 @@ import unittest
 
 import numpy as np
 
-from mtt_sim import csvio, generate, scenario
+from mtt_sim import csvio, gen, scenario
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -40,15 +40,15 @@ def make(overrides=None, **top):
 class TestDeterminism(unittest.TestCase):
     def test_same_seed_same_bytes(self):
         scn = make()
-        a, b, c = generate.generate(scn, 5), generate.generate(scn, 5), generate.generate(scn, 6)
+        a, b, c = gen.generate(scn, 5), gen.generate(scn, 5), gen.generate(scn, 6)
         self.assertEqual(csvio.format_det(a["det"], a["times"]), csvio.format_det(b["det"], b["times"]))
         self.assertEqual(csvio.format_truth(a["truth"]), csvio.format_truth(b["truth"]))
         self.assertNotEqual(csvio.format_det(a["det"], a["times"]), csvio.format_det(c["det"], c["times"]))
 
     def test_clutter_change_keeps_target_detections(self):
         # independent streams: more clutter must not move the target detections
-        a = generate.generate(make(), 3)
-        b = generate.generate(make(["clutter.density=0.01"]), 3)
+        a = gen.generate(make(), 3)
+        b = gen.generate(make(["clutter.density=0.01"]), 3)
         ta = a["det"]["origin"] >= 0
         tb = b["det"]["origin"] >= 0
         ka = np.lexsort((a["det"]["x"][ta], a["det"]["scan"][ta]))
@@ -65,7 +65,7 @@ class TestStatistics(unittest.TestCase):
         # sqrt(2*10^2/2000) = 0.32 (+ the 4th cumulant term, ~0.07): tolerance 1.5.
         # Uniform x on [0, 100]: mean 50, SE 28.9/sqrt(20000) = 0.2: tolerance 1.
         scn = make(["scans.count=2000", "pd=0"])
-        run = generate.generate(scn, 11)
+        run = gen.generate(scn, 11)
         clut = run["det"]["origin"] == -1
         counts = np.bincount(run["det"]["scan"][clut], minlength=2000)
         self.assertLess(abs(counts.mean() - 10.0), 0.3)
@@ -83,7 +83,7 @@ class TestStatistics(unittest.TestCase):
         # Noise sample std SE ~ sigma/sqrt(2*2100) = 1.5 %: tolerance 6 %.
         # Target amplitude Exp(mean 1 + rho = 4): SE 4/sqrt(2100) = 0.087: tolerance 0.35.
         scn = make(["scans.count=3000", "pd=0.7", "clutter.density=0", "targets.0.vx=0"])
-        run = generate.generate(scn, 4)
+        run = gen.generate(scn, 4)
         d = run["det"]
         self.assertTrue(np.all(d["origin"] == 0))
         self.assertEqual(len(run["truth"]["x"]), 3000)
@@ -98,24 +98,24 @@ class TestStatistics(unittest.TestCase):
     def test_binomial_clutter_bounded(self):
         # Binomial(3, 0.3): never more than 3 per scan, mean 0.9 (SE 0.8/sqrt(2000) = 0.018)
         scn = make(["scans.count=2000", "pd=0", "clutter={\"model\": \"binomial\", \"n\": 3, \"p\": 0.3}"])
-        run = generate.generate(scn, 2)
+        run = gen.generate(scn, 2)
         counts = np.bincount(run["det"]["scan"], minlength=2000)
         self.assertLessEqual(counts.max(), 3)
         self.assertLess(abs(counts.mean() - 0.9), 0.08)
 
     def test_truth_process_noise(self):
         # exact CV without noise: x = 10 + 2 * (t - 2) (t_ref = t0 = 2)
-        run = generate.generate(make(["clutter.density=0"]), 1)
+        run = gen.generate(make(["clutter.density=0"]), 1)
         t = run["truth"]
         np.testing.assert_allclose(t["x"], 10 + 2 * (t["time"] - 2.0))
         np.testing.assert_allclose(t["y"], 25.0)
-        noisy = generate.generate(make(["clutter.density=0", "truth_process_psd=0.5"]), 1)
+        noisy = gen.generate(make(["clutter.density=0", "truth_process_psd=0.5"]), 1)
         self.assertGreater(np.abs(noisy["truth"]["y"] - 25.0).max(), 0.01)
 
     def test_area_and_lifetime(self):
         # target leaves the 100-wide area: x = 10 + 20 * (t - 2) > 100 after t = 6.5 (scan 9).
         # first_scan 2, last_scan 30 (beyond the run): rows for scans 2..9 only.
-        run = generate.generate(make(["targets.0.vx=20", "targets.0.first_scan=2", "targets.0.last_scan=30"]), 1)
+        run = gen.generate(make(["targets.0.vx=20", "targets.0.first_scan=2", "targets.0.last_scan=30"]), 1)
         self.assertEqual(run["truth"]["scan"].tolist(), list(range(2, 10)))
 
     def test_split_and_resolution(self):
@@ -123,7 +123,7 @@ class TestStatistics(unittest.TestCase):
         # separation 2 * 1 * 0.5 * (k - 5) = k - 5: below 3 (resolution) until scan 8.
         scn = make(["clutter.density=0", "pd=1", "meas_sigma=[0.01, 0.01]", "resolution=3",
                     "splits=[{\"parent\": 0, \"child\": 1, \"scan\": 5, \"dv_parent\": [0, -1], \"dv_child\": [0, 1]}]"])
-        run = generate.generate(scn, 1)
+        run = gen.generate(scn, 1)
         t = run["truth"]
         self.assertEqual(t["scan"][t["target"] == 1].min(), 5)
         k5 = t["scan"] == 5
@@ -139,8 +139,8 @@ class TestFormats(unittest.TestCase):
     def write(self, scn, seed=0):
         td = tempfile.mkdtemp(prefix="mtt_gen_test_")
         self.addCleanup(shutil.rmtree, td, ignore_errors=True)
-        run = generate.generate(scn, seed)
-        return run, generate.write_run(run, td)
+        run = gen.generate(scn, seed)
+        return run, gen.write_run(run, td)
 
     def test_det_file(self):
         run, p = self.write(make(["pd=0.5", "clutter.density=0.0002"]))  # mean 1 clutter: P(empty scan) = 0.18
@@ -198,7 +198,7 @@ class TestFormats(unittest.TestCase):
         with open(p["settings"]) as f:
             s = json.load(f)
         self.assertEqual(s, {"association": "lm-ihpda", "meas_sigma": [2.0, 1.0]})
-        self.assertEqual(generate.generate(make(), 0, "ipda")["settings"]["association"], "ipda")
+        self.assertEqual(gen.generate(make(), 0, "ipda")["settings"]["association"], "ipda")
 
 
 class TestManoeuvres(unittest.TestCase):
@@ -207,7 +207,7 @@ class TestManoeuvres(unittest.TestCase):
     def turn_run(self, man, **kw):
         scn = make(area={"x": [-5000, 5000], "y": [-5000, 5000]}, scans={"count": 12, "dt": 1.0},
                    targets=[dict({"id": 0, "x": 0.0, "y": 0.0, "vx": 100.0, "vy": 0.0, "manoeuvres": man}, **kw)])
-        return scn, generate.generate(scn, 0)["truth"]
+        return scn, gen.generate(scn, 0)["truth"]
 
     def test_coordinated_turn_geometry(self):
         # 2 g left at 100 m/s from scan 2 for 5 scans: w = 2 G0 / 100 = 0.196 rad/s,
@@ -234,8 +234,8 @@ class TestManoeuvres(unittest.TestCase):
         self.assertTrue(np.all(t["y"][1:] < 0))
 
     def test_no_manoeuvre_same_bytes(self):
-        a = generate.generate(make(), 4)
-        b = generate.generate(make(["targets.0.manoeuvres=[]"]), 4)
+        a = gen.generate(make(), 4)
+        b = gen.generate(make(["targets.0.manoeuvres=[]"]), 4)
         self.assertEqual(csvio.format_det(a["det"], a["times"]), csvio.format_det(b["det"], b["times"]))
         self.assertEqual(csvio.format_truth(a["truth"]), csvio.format_truth(b["truth"]))
 
@@ -261,7 +261,7 @@ class TestManoeuvres(unittest.TestCase):
         # scenarios/manoeuvre.json without truth noise: constant speeds, the
         # crossings of its _comment_targets (40 m apart at scans 33, 36, 75).
         scn = scenario.load(os.path.join(REPO, "scenarios", "manoeuvre.json"), ["truth_process_psd=0"])
-        t = generate.generate(scn, 0)["truth"]
+        t = gen.generate(scn, 0)["truth"]
         self.assertEqual(len(t["x"]), 4 * 90)
         pos = {i: np.column_stack([t["x"][t["target"] == i], t["y"][t["target"] == i]]) for i in range(4)}
         for i, v in enumerate([200.0, 180.0, 160.0, math.hypot(170.0, 100.0)]):
@@ -288,7 +288,7 @@ class TestScenarioFiles(unittest.TestCase):
                 self.assertTrue(set(raw["tracker"]) <= scenario.TRACKER_KEYS, set(raw["tracker"]) - scenario.TRACKER_KEYS)
                 scn = scenario.load(path)
                 self.assertEqual(scn["name"], os.path.basename(path)[:-5])
-                run = generate.generate(scn, 0)
+                run = gen.generate(scn, 0)
                 self.assertGreater(len(run["truth"]["x"]), 0)
                 self.assertGreater(len(run["det"]["x"]), 0)
 
@@ -296,7 +296,7 @@ class TestScenarioFiles(unittest.TestCase):
         # [S0]: 14 targets appear at frame 6; the x-extents of the two
         # formations overlap exactly in frames 13-15.
         scn = scenario.load(os.path.join(REPO, "scenarios", "formations.json"))
-        t = generate.generate(scn, 0)["truth"]
+        t = gen.generate(scn, 0)["truth"]
         self.assertEqual(t["scan"].min(), 6)
         self.assertEqual(len(set(t["target"][t["scan"] == 6].tolist())), 14)
         overlap = []
@@ -311,7 +311,7 @@ class TestScenarioFiles(unittest.TestCase):
     def test_crossing3_geometry(self):
         # [S4]: three targets at 15 m/s meet at t = 40 s (scan 39) inside 1600 x 400.
         scn = scenario.load(os.path.join(REPO, "scenarios", "crossing3.json"), ["truth_process_psd=0"])
-        t = generate.generate(scn, 0)["truth"]
+        t = gen.generate(scn, 0)["truth"]
         np.testing.assert_allclose(np.hypot(t["vx"], t["vy"]), 15.0)
         m = t["time"] == 40.0
         np.testing.assert_allclose(t["x"][m], 800.0)
@@ -326,7 +326,7 @@ class TestScenarioFiles(unittest.TestCase):
 
     def test_dense_count_override(self):
         scn = scenario.load(os.path.join(REPO, "scenarios", "dense.json"), ["random_targets.count=7"])
-        self.assertEqual(len(set(generate.generate(scn, 0)["truth"]["target"].tolist())), 7)
+        self.assertEqual(len(set(gen.generate(scn, 0)["truth"]["target"].tolist())), 7)
 
 
 if __name__ == "__main__":
