@@ -41,44 +41,9 @@ find_script() {
   echo "figures.sh: $1 not found in tools/ci/ or scripts/" >&2
   return 1
 }
-mode="${1:-}"
-[[ -n "$mode" ]] || { sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
-shift
-STORE=docs/reports/figures.tsv
-case "$mode" in
-  --check|--update|--list)
-    exec python3 - "$STORE" "$mode" "$@" < <(sed -n '/^#@PY$/,$p' "$0" | tail -n +2) ;;
-  --measure)
-    what=() log=""
-    while [[ $# -gt 0 ]]; do
-      case "$1" in
-        fw|sizes) what+=("$1") ;;
-        --log) log="$2"; shift ;;
-        *) echo "figures.sh: unknown argument $1" >&2; exit 2 ;;
-      esac
-      shift
-    done
-    [[ ${#what[@]} -gt 0 ]] || what=(fw sizes)
-    tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-    args=()
-    for w in "${what[@]}"; do
-      case "$w" in
-        fw)
-          if [[ -z "$log" ]]; then
-            log="$tmp/fw.log"
-            bash "$(find_script ci-firmware.sh)" 2>&1 | tee "$log" || true
-          fi
-          args+=(--fw "$log") ;;
-        sizes)
-          bash "$(find_script sizes.sh)" > "$tmp/sizes.log"
-          args+=(--sizes "$tmp/sizes.log") ;;
-      esac
-    done
-    exec python3 - "$STORE" --measure "${args[@]}" < <(sed -n '/^#@PY$/,$p' "$0" | tail -n +2) ;;
-  *) echo "figures.sh: unknown mode $mode (--check, --update, --measure, --list)" >&2; exit 2 ;;
-esac
-exit 0
-#@PY
+# the checker, updater and parser (Python 3, standard library only)
+py() {
+  python3 - "$@" <<'PY'
 import decimal, os, re, subprocess, sys
 
 store_path, mode, args = sys.argv[1], sys.argv[2], sys.argv[3:]
@@ -291,3 +256,42 @@ if mode == "--list":
         print(f"{k}\t{rows[k][0]}")
     sys.exit(0)
 sys.exit(measure() if mode == "--measure" else check_or_update(mode == "--update"))
+PY
+}
+
+mode="${1:-}"
+[[ -n "$mode" ]] || { sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+shift
+STORE=docs/reports/figures.tsv
+case "$mode" in
+  --check|--update|--list)
+    py "$STORE" "$mode" "$@" ;;
+  --measure)
+    what=() log=""
+    while [[ $# -gt 0 ]]; do
+      case "$1" in
+        fw|sizes) what+=("$1") ;;
+        --log) log="$2"; shift ;;
+        *) echo "figures.sh: unknown argument $1" >&2; exit 2 ;;
+      esac
+      shift
+    done
+    [[ ${#what[@]} -gt 0 ]] || what=(fw sizes)
+    tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+    args=()
+    for w in "${what[@]}"; do
+      case "$w" in
+        fw)
+          if [[ -z "$log" ]]; then
+            log="$tmp/fw.log"
+            bash "$(find_script ci-firmware.sh)" 2>&1 | tee "$log" || true
+          fi
+          args+=(--fw "$log") ;;
+        sizes)
+          bash "$(find_script sizes.sh)" > "$tmp/sizes.log"
+          args+=(--sizes "$tmp/sizes.log") ;;
+      esac
+    done
+    py "$STORE" --measure "${args[@]}" ;;
+  *) echo "figures.sh: unknown mode $mode (--check, --update, --measure, --list)" >&2; exit 2 ;;
+esac
