@@ -37,7 +37,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_run_arguments(ap)
     ap.add_argument("--mtt-track", dest="mtt_track",
-                    help="mtt-track binary (default: $MTT_TRACK, then build/host-float/cli/mtt-track)")
+                    help="mtt-track binary (default: $MTT_TRACK, then build/host-float/tools/track/mtt-track)")
     ap.add_argument("--tracker", choices=("auto", "in-process", "mtt-track"), default="auto",
                     help="auto (default): the mtt package in-process when it is installed, else "
                          "mtt-track; in-process / mtt-track: that one only")

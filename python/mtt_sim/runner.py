@@ -39,7 +39,7 @@ __all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_availabl
            "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate"]
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "cli", "mtt-track")
+DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "tools", "track", "mtt-track")
 
 
 class TrackerError(RuntimeError):
@@ -47,7 +47,7 @@ class TrackerError(RuntimeError):
 
 
 def find_mtt_track(explicit: str | None = None) -> str | None:
-    """The mtt-track binary: ``explicit``, else $MTT_TRACK, else build/host-float/cli/mtt-track."""
+    """The mtt-track binary: ``explicit``, else $MTT_TRACK, else build/host-float/tools/track/mtt-track."""
     for cand in (explicit, os.environ.get("MTT_TRACK"), DEFAULT_BINARY):
         if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
             return os.path.abspath(cand)
