@@ -161,8 +161,8 @@ fixed_cppcheck() {
   cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
     --inline-suppr --quiet --suppress=variableScope \
     --template='{file}:{line}: {severity}: {id}: {message}' \
-    -I include -I src -UMTT_USER_CONFIG -DMTT_REAL_FIXED -DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 \
-    -DMTT_MAX_PAIRS=256 "${files[@]}"
+    -I include -I src -DMTT_REAL_FIXED "-DMTT_USER_CONFIG=\"$ROOT/configs/firmware_fixed.h\"" \
+    "${files[@]}"
 }
 fixed() {
   local b="$ROOT/build/$FIXED_PRESET"

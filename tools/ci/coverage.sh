@@ -14,11 +14,11 @@
 #   float     the default configuration: preset host-float (float, default
 #             bounds, baselines built)
 #   firmware  the firmware configuration: preset host-float-small
-#             (MTT_MAX_TRACKS=16, MTT_MAX_MEAS=64, MTT_MAX_PAIRS=256,
-#             MTT_WITH_BASELINES=0; MTT_WITH_IMM=0 where config.h has that
-#             switch), with the host tools built too so that the cli tests
-#             run it; cli.cfg_unsupported_association is left out there (it
-#             expects the jpda baseline, which this configuration leaves out)
+#             (configs/firmware.h: 16 tracks, 64 measurements, 256 pairs,
+#             no baselines, IMM or contest variant), with the host tools
+#             built too so that the cli tests run it;
+#             cli.cfg_unsupported_association is left out there (it expects
+#             the jpda baseline, which this configuration leaves out)
 #
 # The double build is not measured here: its tests, the differential test
 # among them, run in `./tools/ci/dev.sh test` (workflow test-double).
@@ -76,7 +76,7 @@ below=0
 summary=()
 
 run_config() {
-  local cfg="$1" preset defs="" tools=ON exclude='^(symbols\.no_malloc_no_stdio|package\.consumer)$' what
+  local cfg="$1" preset tools=ON exclude='^(symbols\.no_malloc_no_stdio|package\.consumer)$' what
   local bdir="$ROOT/build/cov-$cfg" html="$ROOT/out/coverage/$cfg" log
   case "$cfg" in
     float)
@@ -85,15 +85,11 @@ run_config() {
       ;;
     firmware)
       preset=host-float-small
-      defs="MTT_MAX_TRACKS=16;MTT_MAX_MEAS=64;MTT_MAX_PAIRS=256;MTT_WITH_BASELINES=0"
-      if grep -q 'MTT_WITH_IMM' include/mtt/config.h; then
-        defs="$defs;MTT_WITH_IMM=0"
-      fi
       # Host-tool checks of the full settings table (every key, the IMM
       # keys, a run with split, docs/FORMATS.md's table) and the
       # baseline-mode refusal case describe the default build, not this one.
       exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table)$'
-      what="host-float-small: float, ${defs//;/ }"
+      what="host-float-small: float, configs/firmware.h"
       ;;
   esac
   log="$(mktemp "${TMPDIR:-/tmp}/mtt-cov.XXXXXX")"
@@ -103,9 +99,6 @@ run_config() {
                   "-DCMAKE_C_FLAGS_RELEASE=-O0 -DNDEBUG"
                   -DCMAKE_EXE_LINKER_FLAGS=--coverage
                   -DCMAKE_SHARED_LINKER_FLAGS=--coverage)
-  if [[ "$cfg" == firmware ]]; then
-    cache+=("-DMTT_EXTRA_DEFINITIONS=$defs")
-  fi
   if ! { cmake --preset "$preset" -B "$bdir" "${cache[@]}" >"$log" 2>&1 &&
          cmake --build "$bdir" -j2 >>"$log" 2>&1; }; then
     tail -n 40 "$log"

@@ -43,8 +43,7 @@ qemu-system-arm -machine mps2-an385 -semihosting-config enable=on,target=native 
   tee "$OUT/fx-cost.txt" | awk '/^C / { printf "%-32s %8.1f\n", $2, $3 / 10 } /^END/ { print }'
 
 echo "== the prediction stage per track (predict + innovation; instructions per track, 32 tracks)"
-DEFS=(-DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 -DMTT_MAX_PAIRS=256 -DMTT_WITH_BASELINES=0
-      -DMTT_WITH_IMM=0 -DMTT_WITH_CONTEST=0)
+DEFS=("-DMTT_USER_CONFIG=\"$ROOT/configs/firmware.h\"") # the firmware configuration
 for build in float fixed; do
   if [[ "$build" == fixed ]]; then
     extra=(-DMTT_REAL_FIXED "$ROOT/src/fx_cov.c" "$ROOT/src/fx_math.c")

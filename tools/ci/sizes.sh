@@ -17,11 +17,20 @@ int main(void)
     return 0;
 }
 C
+# The small rows: the bounds of configs/firmware.h, with the contest variant
+# (as README.md's table; the firmware presets leave it out), the first with
+# the baselines too.  The header's values are defaults, so -D overrides them.
+fw="-DMTT_USER_CONFIG=\"$PWD/configs/firmware.h\""
 for real in "" "-DMTT_REAL_DOUBLE"; do
-  for bounds in "" "-DMTT_WITH_IMM=0" "-DMTT_WITH_BASELINES=0 -DMTT_WITH_IMM=0" \
-      "-DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 -DMTT_MAX_PAIRS=256 -DMTT_WITH_IMM=0" \
-      "-DMTT_MAX_TRACKS=16 -DMTT_MAX_MEAS=64 -DMTT_MAX_PAIRS=256 -DMTT_WITH_BASELINES=0 -DMTT_WITH_IMM=0"; do
+  for row in default no-imm no-baselines small-baselines small; do
+    case "$row" in
+      default) bounds=() ;;
+      no-imm) bounds=(-DMTT_WITH_IMM=0) ;;
+      no-baselines) bounds=(-DMTT_WITH_BASELINES=0 -DMTT_WITH_IMM=0) ;;
+      small-baselines) bounds=("$fw" -DMTT_WITH_BASELINES=1 -DMTT_WITH_CONTEST=1) ;;
+      small) bounds=("$fw" -DMTT_WITH_CONTEST=1) ;;
+    esac
     # shellcheck disable=SC2086
-    "$cc" -std=c99 -Iinclude $real $bounds "$tmp/s.c" -o "$tmp/s" && "$tmp/s"
+    "$cc" -std=c99 -Iinclude $real "${bounds[@]}" "$tmp/s.c" -o "$tmp/s" && "$tmp/s"
   done
 done
