@@ -3,9 +3,11 @@
 #
 #   ./tools/ci/dev.sh deps    install what the build needs (idempotent)
 #   ./tools/ci/dev.sh test    deps, then the workflows test-float, test-double,
-#                            test-float-small, test-fixed (configure + build +
-#                            ctest each; test-fixed: the stages converted to
-#                            fixed point so far, docs/FIXED_POINT.md),
+#                            test-float-small, test-imm-nosplit, test-fixed
+#                            (configure + build + ctest each; test-imm-nosplit:
+#                            the IMM without the split models, configs/imm_nosplit.h;
+#                            test-fixed: the stages converted to fixed point
+#                            so far, docs/FIXED_POINT.md),
 #                            then the Python package (python-package below),
 #                            then tools/ci/coverage.sh --check (gcov builds of
 #                            the default and the firmware configuration; prints
@@ -33,7 +35,7 @@ cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
 PY_MODULES=(numpy matplotlib)
-WORKFLOWS=(test-float test-double test-float-small test-fixed)
+WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
 die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }
