@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/bench/bench.sh - the performance figures (docs/PERFORMANCE.md), from one command.
 #
-#   ./bench/bench.sh [--frames N] [--quick]
+#   ./tools/bench/bench.sh [--frames N] [--quick]
 #
 # 1. builds the `bench` preset (Release -O2, float, bounds for 256 targets);
 # 2. generates the formations scenario (seed 0) and replays its busiest frame;
