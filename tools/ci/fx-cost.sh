@@ -18,7 +18,7 @@ CC=arm-none-eabi-gcc
 CPU=(-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft)
 CFLAGS=("${CPU[@]}" -std=c99 -Os -ffunction-sections -fdata-sections
         -Wall -Wextra -Wpedantic -Wconversion -Werror -Wno-type-limits
-        -DMTT_FX_KERNELS -I"$ROOT/include" -I"$ROOT/firmware")
+        -DMTT_FX_KERNELS -I"$ROOT/include" -I"$ROOT/examples/firmware")
 
 "$CC" "${CFLAGS[@]}" -c "$ROOT/src/fx_math.c" -o "$OUT/fx_math.o"
 echo "== .text per kernel (bytes, -Os, Thumb-1; tables are .rodata)"
@@ -51,7 +51,7 @@ for build in float fixed; do
     extra=(-DMTT_SMALL_LOG=1)
   fi
   "$CC" "${CPU[@]}" -std=c99 -Os -ffunction-sections -fdata-sections -Wall -Wextra -Wconversion -Werror \
-    -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/firmware" "${DEFS[@]}" \
+    -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/examples/firmware" "${DEFS[@]}" \
     -specs=nano.specs -nostartfiles -Wl,--gc-sections -T"$ROOT/examples/firmware/mps2.ld" \
     "$ROOT/examples/firmware/startup.c" "$ROOT/examples/firmware/semihost.c" "$ROOT/examples/firmware/fmt.c" \
     "$ROOT/tools/fw-measure/fx_stage_cost.c" "$ROOT/src/kalman.c" "$ROOT/src/motion_cv.c" "$ROOT/src/gate.c" "${extra[@]}" -lm \
