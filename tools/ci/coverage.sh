@@ -76,7 +76,7 @@ below=0
 summary=()
 
 run_config() {
-  local cfg="$1" preset tools=ON exclude='^(symbols\.no_malloc_no_stdio|package\.consumer)$' what
+  local cfg="$1" preset tools=ON gcov_exclude=() exclude='^(symbols\.no_malloc_no_stdio|package\.consumer)$' what
   local bdir="$ROOT/build/cov-$cfg" html="$ROOT/out/coverage/$cfg" log
   case "$cfg" in
     float)
@@ -90,6 +90,9 @@ run_config() {
       # baseline-mode refusal case describe the default build, not this one.
       exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table)$'
       what="host-float-small: float, configs/firmware.h"
+      # src/contest.c is compiled in every build, but with MTT_WITH_CONTEST=0
+      # nothing calls it (MTT_CONTEST_ON is 0): not code of this configuration.
+      gcov_exclude=(--exclude '^src/contest\.c$')
       ;;
   esac
   log="$(mktemp "${TMPDIR:-/tmp}/mtt-cov.XXXXXX")"
@@ -120,7 +123,7 @@ run_config() {
   rm -rf "$html"
   mkdir -p "$html"
   local json="$bdir/coverage-summary.json"
-  "$GCOVR" --root "$ROOT" --filter '^src/' "$bdir/CMakeFiles/mtt.dir" \
+  "$GCOVR" --root "$ROOT" --filter '^src/' "${gcov_exclude[@]}" "$bdir/CMakeFiles/mtt.dir" \
     --json-summary "$json" --html-details "$html/index.html" \
     --html-title "mtt src/ coverage ($what)" >/dev/null
   local pct
