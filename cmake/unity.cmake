@@ -5,10 +5,10 @@
 #   (a) -DUNITY_SOURCE_DIR=<dir> holding unity.c (directly or in src/);
 #   (b) an installed Unity: find_package(unity CONFIG) (target unity::framework),
 #       else unity_internals.h + libunity found by find_path/find_library;
-#   (c) <mtt source>/.deps/unity, filled by scripts/setup-unity.sh (gitignored);
+#   (c) <mtt source>/.deps/unity, filled by tools/ci/setup-unity.sh (gitignored);
 #   (d) if MTT_FETCH_UNITY (default ON): download of the upstream release
 #       (MTT_UNITY_URL, v2.6.0) with a 20 s timeout.  If that fails the
-#       configure stops with a message naming scripts/setup-unity.sh.
+#       configure stops with a message naming tools/ci/setup-unity.sh.
 #
 # Tests link `mtt_unity`; it carries UNITY_INCLUDE_DOUBLE (double asserts) and
 # puts unity.h on the include path as a system header.  An installed Unity
@@ -106,17 +106,17 @@ if(MTT_UNITY_INCLUDE_DIR AND EXISTS "${MTT_UNITY_INCLUDE_DIR}/unity.h")
   endif()
 endif()
 
-# (c) .deps/unity from scripts/setup-unity.sh ----------------------------------
+# (c) .deps/unity from tools/ci/setup-unity.sh ----------------------------------
 _mtt_unity_src_in("${mtt_SOURCE_DIR}/.deps/unity" _src)
 if(_src)
-  _mtt_unity_from_sources("${_src}" "scripts/setup-unity.sh")
+  _mtt_unity_from_sources("${_src}" "tools/ci/setup-unity.sh")
   return()
 endif()
 
 # (d) download the upstream release -------------------------------------------
 set(_mtt_unity_help
   "Unity (the C test framework) was not found.  Either\n"
-  "  - run scripts/setup-unity.sh (as root: takes Unity from Debian's cjson source package into .deps/unity), or\n"
+  "  - run tools/ci/setup-unity.sh (as root: takes Unity from Debian's cjson source package into .deps/unity), or\n"
   "  - pass -DUNITY_SOURCE_DIR=<dir containing unity.c or src/unity.c>, or\n"
   "  - configure with -DMTT_BUILD_TESTS=OFF to build without tests.")
 if(NOT MTT_FETCH_UNITY)

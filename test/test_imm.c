@@ -2,7 +2,7 @@
  * mixing, mode-probability update, combination, the model-mixed likelihood
  * and the split of an association result into per-model quantities.
  * Expected numbers: docs/TEST_VECTORS.md TV14, and the output of
- * `python3 scripts/imm_vectors.py` (sections "IMM mixing", "IMM-IPDA",
+ * `python3 tools/ci/imm_vectors.py` (sections "IMM mixing", "IMM-IPDA",
  * "IMM-IHPDA"), which derives them independently (numpy, the textbook
  * full-dimensional forms). */
 #include <string.h>
@@ -165,7 +165,7 @@ static void test_bad_arguments(void)
     TV_ASSERT_REAL(0.0, muk[0]);
 }
 
-/* ---- CV (4) and CA (6) mixed: scripts/imm_vectors.py "IMM mixing" ---- */
+/* ---- CV (4) and CA (6) mixed: tools/ci/imm_vectors.py "IMM mixing" ---- */
 
 static void test_mix_cv_ca(void)
 {
@@ -231,7 +231,7 @@ static void test_mix_cv_ca(void)
     TV_ASSERT_MAT4(Pc_e, Pc);
 }
 
-/* ---- association split: scripts/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
+/* ---- association split: tools/ci/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
 
 static const mtt_real g_cb[2] = {MTT_R(0.78), MTT_R(0.22)};
 static const mtt_real g_pd[2] = {MTT_R(0.9), MTT_R(0.9)};

@@ -1,4 +1,4 @@
-/* test_io_fixed.c - the host boundary of io/ (libmtt_io): the one
+/* test_io_fixed.c - the host boundary of tools/io/ (libmtt_io): the one
  * conversion of the files' doubles into mtt_real (mtt_io_to_real) and back
  * (mtt_io_from_real), as the detections, settings and initial tracks use
  * it (docs/FIXED_POINT.md §3).

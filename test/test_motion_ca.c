@@ -1,5 +1,5 @@
 /* test_motion_ca.c - nearly constant acceleration model (motion_ca.c):
- * F and Q in closed form against `python3 scripts/imm_vectors.py`
+ * F and Q in closed form against `python3 tools/ci/imm_vectors.py`
  * (section "CA model": F = expm(A T) by its power series, Q by quadrature
  * of the continuous white-noise-jerk integral). */
 #include <string.h>

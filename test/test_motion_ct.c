@@ -1,5 +1,5 @@
 /* test_motion_ct.c - coordinated-turn model (motion_ct.c): the transition
- * f(x) and its Jacobian against `python3 scripts/imm_vectors.py` (section
+ * f(x) and its Jacobian against `python3 tools/ci/imm_vectors.py` (section
  * "CT model": closed form, Jacobian by complex-step differentiation; the
  * w = 0 case by the first-order expansion), both branches of the turn
  * coefficients (|wT| = 0, 0.04 by series; 0.15, 0.25 in closed form).

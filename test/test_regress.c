@@ -133,7 +133,7 @@ void test_meas_sigma_bounds(void)
  * cancelled and a variance came out negative (P[1][1] = -65535 in
  * adaptive-jpda).  The update now forms I - K H from R S^-1 and the spread
  * as a sum of positive terms.  The exact fuzzer input, which fails on the
- * old update, is fuzz/regress/tracker/f4-long-gap-adaptive-jpda.bin
+ * old update, is tools/fuzz/regress/tracker/f4-long-gap-adaptive-jpda.bin
  * (ctest fuzz.replay.tracker); this test runs the same kind of frame --
  * two seeded tracks on one state, a 1e6 gap -- through every mode. */
 void test_long_gap_update_keeps_covariance_positive(void)

@@ -2,7 +2,7 @@
  * split", model 6 "split" (joint events, coupled update, likelihood), the
  * decoupling test and the conversion into two track states.
  *
- * Expected numbers: the output of `python3 scripts/split_vectors.py`
+ * Expected numbers: the output of `python3 tools/ci/split_vectors.py`
  * (an independent numpy implementation with brute-force event enumeration),
  * pasted below as ref*; the inputs are the literals of that script.
  * Properties: joint event probabilities sum to 1, symmetric positive
@@ -20,7 +20,7 @@ void tearDown(void) {}
 
 #if MTT_WITH_SPLIT
 
-/* ---- inputs (scripts/split_vectors.py: R, XP, PP, Z5, B5, XPS, P22, P12, Z6;
+/* ---- inputs (tools/ci/split_vectors.py: R, XP, PP, Z5, B5, XPS, P22, P12, Z6;
  * Z5, Z6 not const: the split functions take measurements as mtt_real[][2]) ---- */
 static const mtt_real R[3] = {MTT_R(9.0), MTT_R(1.5), MTT_R(12.0)};
 static const mtt_real XP[MTT_MAX_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(10.0), MTT_R(-5.0)};
@@ -41,7 +41,7 @@ static mtt_split_work wk;
 #define PG6 MTT_R(0.99)
 #define GAMMA MTT_R(9.210340371976182)
 
-/* ---- expected: python3 scripts/split_vectors.py ---- */
+/* ---- expected: python3 tools/ci/split_vectors.py ---- */
 static const double ref5_V = 1094.478992;
 static const int ref5_cluster[5] = {0, 1, 0, 1, 0};
 static const double ref5_beta_n[5] = {0.5357142857, 0.6470588235, 0.3214285714, 0.3529411765, 0.1428571429};
@@ -316,7 +316,7 @@ static void test_just_split_two(void)
 
 /* ---- model 5, a split of known speed (split_known_speed) ---- */
 
-/* python3 scripts/split_vectors.py, "a split of known speed": on model 5's
+/* python3 tools/ci/split_vectors.py, "a split of known speed": on model 5's
  * clusters of test_just_split_reference, dt 1 */
 static const struct {
     double dv;

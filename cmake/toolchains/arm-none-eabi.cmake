@@ -8,7 +8,7 @@
 #        referenced is linked, so image sizes measure what a caller pays;
 #   -fstack-usage -fcallgraph-info=su: per-function frames (.su) and the
 #        call graph with frames (.ci) next to each object, for the
-#        worst-case stack sum of mtt_tracker_step (firmware/fwcheck.py).
+#        worst-case stack sum of mtt_tracker_step (tools/fw-measure/fwcheck.py).
 # Optimisation comes from the preset (CMAKE_C_FLAGS_RELEASE = -Os).
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)

@@ -1,6 +1,6 @@
 """The settings of docs/FORMATS.md (a dict, or a JSON file) into a parameter set.
 
-The rules and the messages are mtt-track's (io/settings.c): every key is a
+The rules and the messages are mtt-track's (tools/io/settings.c): every key is a
 row of the library's parameter table (``mtt_params_info``), type-checked
 here and range-checked by ``mtt_params_set``; ``mtt_params_check`` judges the
 keys together at the end; ``initial_tracks`` is read as mtt-track reads it.
@@ -119,7 +119,7 @@ def _c_g(v: float, prec: int = 6) -> str:
 
 
 def _format_bound(v: float) -> str:
-    """A bound as a person writes it: "0", "1e-9", "1e6" (io/settings.c format_bound)."""
+    """A bound as a person writes it: "0", "1e-9", "1e6" (tools/io/settings.c format_bound)."""
     s = _c_g(v)
     m = re.match(r"^(.*e)([+-]?)0*(\d+)$", s)
     if m:
@@ -234,7 +234,7 @@ class _Reader:
 
     def models(self, r: _Row, v, key) -> list:
         """imm_models: 2 to count objects {"model": M, "process_psd": q}, with "turn_psd": w
-        for M = ct and for ct only (io/settings.c parse_models)."""
+        for M = ct and for ct only (tools/io/settings.c parse_models)."""
         n = len(v) if _is_sequence(v) else -1
         if n < 2 or n > r.count:
             found = _json_type(v) if n < 0 else ("fewer" if n < 2 else "more")
@@ -276,7 +276,7 @@ class _Reader:
         return vals
 
     def per_model(self, r: _Row, v, key) -> list:
-        """r numbers, or r rows of r numbers, into the MAX_MODELS slots (io/settings.c parse_per_model)."""
+        """r numbers, or r rows of r numbers, into the MAX_MODELS slots (tools/io/settings.c parse_per_model)."""
         mm = _core.MAX_MODELS
         n = len(v) if _is_sequence(v) else -1
         if n < 1 or n > mm:
@@ -407,7 +407,7 @@ class _Reader:
         return next(r for r in params_table() if r.key == key)
 
     def default_models(self, settings: dict):
-        """imm_models not given: the default follows process_psd (io/settings.c default_models)."""
+        """imm_models not given: the default follows process_psd (tools/io/settings.c default_models)."""
         if "imm_models" in settings:
             return
         row = self._row("imm_models")

@@ -56,7 +56,7 @@ __all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_availabl
            "add_run_arguments", "main"]
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "cli", "mtt-track")
+DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "tools", "track", "mtt-track")
 
 
 class TrackerError(RuntimeError):
@@ -64,7 +64,7 @@ class TrackerError(RuntimeError):
 
 
 def find_mtt_track(explicit: str | None = None) -> str | None:
-    """The mtt-track binary: ``explicit``, else $MTT_TRACK, else build/host-float/cli/mtt-track."""
+    """The mtt-track binary: ``explicit``, else $MTT_TRACK, else build/host-float/tools/track/mtt-track."""
     for cand in (explicit, os.environ.get("MTT_TRACK"), DEFAULT_BINARY):
         if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
             return os.path.abspath(cand)
@@ -497,7 +497,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_run_arguments(ap)
     ap.add_argument("--mtt-track", dest="mtt_track",
-                    help="mtt-track binary (default: $MTT_TRACK, then build/host-float/cli/mtt-track)")
+                    help="mtt-track binary (default: $MTT_TRACK, then build/host-float/tools/track/mtt-track)")
     ap.add_argument("--tracker", choices=("auto", "in-process", "mtt-track"), default="auto",
                     help="auto (default): the mtt package in-process when it is installed, else "
                          "mtt-track; in-process / mtt-track: that one only")

@@ -106,7 +106,7 @@ class TestRunnerWithMttTrack(unittest.TestCase):
     def test_end_to_end_real_binary(self):
         exe = mc.find_mtt_track()
         if exe is None:
-            self.skipTest("no mtt-track binary: set MTT_TRACK or build build/host-float/cli/mtt-track")
+            self.skipTest("no mtt-track binary: set MTT_TRACK or build build/host-float/tools/track/mtt-track")
         out = tmpdir(self, "mtt_mc_real_")
         p = run_mc(exe, out)
         self.assertEqual(p.returncode, 0, p.stdout + p.stderr)

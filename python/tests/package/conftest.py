@@ -1,9 +1,9 @@
 """Shared fixtures of the package tests (pytest): the repository, mtt-track, runs of the scenarios.
 
 These tests import the INSTALLED packages mtt and mtt_sim (`pip install .[stonesoup,test]`;
-scripts/dev.sh test does it in a venv under build/).  The comparisons with
+tools/ci/dev.sh test does it in a venv under build/).  The comparisons with
 mtt-track need the binary of the same configuration (float, default bounds):
-$MTT_TRACK, else build/host-float/{cli,tools}/mtt-track.  With MTT_REQUIRE_ALL=1
+$MTT_TRACK, else build/host-float/tools/track/mtt-track.  With MTT_REQUIRE_ALL=1
 (CI) a missing binary or Stone Soup fails instead of skipping.
 """
 
@@ -28,7 +28,7 @@ def missing(what: str):
 
 def find_mtt_track():
     cands = [os.environ.get("MTT_TRACK")]
-    cands += [os.path.join(REPO, "build", "host-float", d, "mtt-track") for d in ("cli", "tools")]
+    cands.append(os.path.join(REPO, "build", "host-float", "tools", "track", "mtt-track"))
     for c in cands:
         if c and os.path.isfile(c) and os.access(c, os.X_OK):
             return c

@@ -16,7 +16,7 @@ from mtt import _core
 from conftest import REPO, run_mtt_track
 
 REAL_FMT = "%.9g" if mtt.REAL == "float" else "%.17g"
-CLI_TESTS = next((d for d in (os.path.join(REPO, "cli", "tests"), os.path.join(REPO, "tools", "cli_tests"))
+CLI_TESTS = next((d for d in (os.path.join(REPO, "tools", "track", "tests"),)
                   if os.path.isdir(d)), None)
 
 

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# tools/ci/fx-mc.sh - float against fixed point on the same detections
+# (docs/FIXED_POINT.md §7, "Float against fixed"): the Monte Carlo of
+# python/mtt_sim (python3 -m mtt_sim.mc) with the float mtt-track and the
+# fixed-point mtt-track, same scenarios, seeds and modes, and the table of
+# GOSPA, track fraction, false tracks and ID switches side by side.
+#
+#   tools/ci/fx-mc.sh [RUNS] [SCENARIO...]     (default 200; crossing3 formations dim)
+#
+# The fixed side is build/host-fixed's mtt-track (cmake --workflow --preset
+# test-fixed, or configure + build the preset); the float side is the same
+# configuration in float, built here into build/fx-float (the host-float-small
+# preset with the tools on): the same bounds (MTT_MAX_TRACKS 16, ...), so the
+# tables compare the arithmetic alone.  Both run lm_ihpda_variant s0 (the
+# fixed-point build has no contest variant).  Output under build/fx-mc/; the
+# table (Markdown) on stdout.  GOSPA goal: fixed within 3 % of float.
+# FX_MC_TABLE_ONLY=1 prints the table of the runs already under build/fx-mc/.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+cd "$ROOT"
+RUNS="${1:-200}"
+shift || true
+SCENARIOS=("$@")
+((${#SCENARIOS[@]})) || SCENARIOS=(crossing3 formations dim)
+MODES=(lm-ihpda ihpda lm-ipda ipda)
+OUT="$ROOT/build/fx-mc"
+JOBS="${JOBS:-2}"
+declare -A BIN=([float]="$ROOT/build/fx-float/tools/track/mtt-track" [fixed]="$ROOT/build/host-fixed/tools/track/mtt-track")
+
+cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \
+  -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
+cmake --build "$ROOT/build/fx-float" -j2 --target mtt-track >/dev/null
+mkdir -p "$OUT"
+for b in float fixed; do
+  [[ -x "${BIN[$b]}" ]] || { echo "fx-mc: ${BIN[$b]} missing (build the host-$b preset)" >&2; exit 2; }
+done
+for scn in "${SCENARIOS[@]}"; do
+  for b in float fixed; do
+    [[ -n "${FX_MC_TABLE_ONLY:-}" ]] && continue # the table of the runs already made
+    echo "fx-mc: $scn $b ($RUNS runs)" >&2
+    PYTHONPATH=python nice -n 10 python3 -m mtt_sim.mc --scenario "scenarios/$scn.json" --runs "$RUNS" \
+      --out "$OUT/$scn-$b" --mtt-track "${BIN[$b]}" --tracker mtt-track --assoc "${MODES[@]}" \
+      --set tracker.lm_ihpda_variant=s0 --no-plots --jobs "$JOBS" >/dev/null 2>"$OUT/$scn-$b.log"
+  done
+done
+
+python3 - "$OUT" "$RUNS" "${SCENARIOS[@]}" <<'PY'
+import json, sys
+out, runs, scns = sys.argv[1], sys.argv[2], sys.argv[3:]
+print(f"| scenario | mode | GOSPA float | GOSPA fixed | fixed/float | track fraction float / fixed "
+      f"| false tracks per scan float / fixed | ID switches per run float / fixed | runs ok float / fixed |")
+print("|---|---|---|---|---|---|---|---|---|")
+worst = 0.0
+for scn in scns:
+    s = {b: json.load(open(f"{out}/{scn}-{b}/summary.json")) for b in ("float", "fixed")}
+    for mode in s["float"]["modes"]:
+        t = {b: s[b]["results"][mode]["totals"] for b in s}
+        ok = {b: s[b]["results"][mode]["runs_ok"] for b in s}
+        g0, g1 = t["float"]["gospa_mean"], t["fixed"]["gospa_mean"]
+        r = g1 / g0 if g0 else float("nan")
+        worst = max(worst, r)
+        print(f"| {scn} | {mode} | {g0:.3f} | {g1:.3f} | **{r:.3f}** | "
+              f"{t['float']['confirmed_true_fraction']:.3f} / {t['fixed']['confirmed_true_fraction']:.3f} | "
+              f"{t['float']['confirmed_false_per_scan']:.4f} / {t['fixed']['confirmed_false_per_scan']:.4f} | "
+              f"{t['float']['idsw_per_run']:.2f} / {t['fixed']['idsw_per_run']:.2f} | "
+              f"{ok['float']} / {ok['fixed']} |")
+print(f"\n{runs} runs per scenario and mode (seeds 0..{int(runs) - 1}, the same detections for both builds); "
+      f"largest GOSPA ratio fixed/float {worst:.3f}: goal (<= 1.03) {'met' if worst <= 1.03 else 'NOT met'}")
+PY

@@ -1,0 +1,85 @@
+/* tools/fuzz/fuzz_detections.c - libFuzzer harness: the detections CSV reader of
+ * mtt-track, mtt_io_read_detections (tools/io/detections.c), on arbitrary bytes.
+ *
+ * Beyond "no crash, no leak, no undefined behaviour" (ASan+UBSan), what the
+ * reader accepts must be what docs/FORMATS.md promises and what the tracker
+ * takes: scans in file order partition the detections, scan numbers never
+ * decrease, times and tracker times strictly increase, every coordinate is
+ * finite, every amplitude finite and >= 0; and stepping a default tracker
+ * over the first scans returns MTT_OK every time (as mtt-track does). */
+#include "fuzz_io_common.h"
+
+#include <stdint.h>
+
+#include "mtt/mtt.h"
+#include "mtt_io.h"
+
+#define MAX_STEPPED_SCANS 64
+
+static mtt_tracker trk;
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc;
+    (void)argv;
+    mtt_io_progname = "fuzz_detections";
+    fuzz_io_setup();
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    mtt_io_detections d;
+    mtt_params p;
+    const char *path = fuzz_io_file(data, size);
+    size_t k, next = 0;
+    int rc = mtt_io_read_detections(path, &d);
+
+    if (rc != MTT_IO_OK) {
+        if (rc != MTT_IO_EINPUT)
+            FUZZ_FAIL("fuzz_detections", "reader returned %d (not EINPUT) on bad input", rc);
+        return 0;
+    }
+    for (k = 0; k < d.n_scans; ++k) {
+        const mtt_io_scan *sc = &d.scans[k];
+        size_t j;
+        if (sc->first != next && sc->count != 0)
+            FUZZ_FAIL("fuzz_detections", "scan %zu starts at %zu, expected %zu", k, sc->first, next);
+        if (sc->first + sc->count > d.n_meas)
+            FUZZ_FAIL("fuzz_detections", "scan %zu overruns the detections", k);
+        next = sc->first + sc->count;
+        if (k > 0) {
+            const mtt_io_scan *pr = &d.scans[k - 1];
+            if (sc->scan < pr->scan)
+                FUZZ_FAIL("fuzz_detections", "scan numbers decrease at %zu", k);
+            if (!(sc->time > pr->time) || !(sc->rtime > pr->rtime))
+                FUZZ_FAIL("fuzz_detections", "times do not increase at scan %zu (%.17g, %.9g)",
+                          k, sc->time, (double)sc->rtime);
+        }
+        if (!mtt_isfinite(sc->rtime) || sc->time != sc->time)
+            FUZZ_FAIL("fuzz_detections", "scan %zu: time not finite", k);
+        for (j = sc->first; j < sc->first + sc->count; ++j) {
+            const mtt_meas *m = &d.meas[j];
+            if (!mtt_isfinite(m->x) || !mtt_isfinite(m->y))
+                FUZZ_FAIL("fuzz_detections", "detection %zu: coordinate not finite", j);
+            if (m->has_amplitude && (!mtt_isfinite(m->amplitude) || !(m->amplitude >= MTT_R(0.0))))
+                FUZZ_FAIL("fuzz_detections", "detection %zu: bad amplitude accepted", j);
+        }
+    }
+    if (next != d.n_meas)
+        FUZZ_FAIL("fuzz_detections", "scans cover %zu of %zu detections", next, d.n_meas);
+    if (mtt_params_default(&p) != MTT_OK || mtt_tracker_init(&trk, &p) != MTT_OK)
+        abort();
+    for (k = 0; k < d.n_scans && k < MAX_STEPPED_SCANS; ++k) {
+        const mtt_io_scan *sc = &d.scans[k];
+        mtt_status st = mtt_tracker_step(&trk, sc->rtime, sc->count != 0 ? &d.meas[sc->first] : NULL,
+                                         sc->count);
+        if (st != MTT_OK)
+            FUZZ_FAIL("fuzz_detections", "scan %zu: mtt_tracker_step returned %d", k, (int)st);
+    }
+    mtt_io_free_detections(&d);
+    return 0;
+}

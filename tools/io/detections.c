@@ -1,0 +1,280 @@
+/* tools/io/detections.c - the detections file (*.det.csv) of docs/FORMATS.md: read whole and
+ * validated row by row; the first problem is reported with its line and field,
+ * and a bad file gives nothing.
+ */
+#include "mtt_io.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS };
+
+#ifdef MTT_REAL_FIXED
+#define MTT_IO_SATURATES 1 /* out of the format: saturated, skipped by the tracker */
+#else
+#define MTT_IO_SATURATES 0
+#endif
+static const char *const det_cols[N_COLS] = {"scan", "time", "x", "y", "amplitude"};
+
+/* Report a field that failed to parse; always MTT_IO_EINPUT. */
+static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *what)
+{
+    const char *s = c->fields[col];
+    switch (why) {
+    case MTT_IO_NUM_EMPTY:
+        mtt_io_error_at(c->path, c->line, det_cols[col], "missing value: expected %s", what);
+        break;
+    case MTT_IO_NUM_NONFINITE:
+        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is not allowed: expected %s", s,
+                        what);
+        break;
+    case MTT_IO_NUM_RANGE:
+        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is out of range: expected %s", s,
+                        what);
+        break;
+    default:
+        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is not %s", s, what);
+        break;
+    }
+    return MTT_IO_EINPUT;
+}
+
+/* Parse a finite number into mtt_real of format fmt (mtt_io_to_real).
+ * In the fixed-point build a coordinate or amplitude outside its format
+ * is not an error of the file: it takes the saturation value, which the
+ * tracker skips and counts in meas_bad like a NaN in float
+ * (docs/FIXED_POINT.md §3); only the time must fit.  Float and double: a
+ * value that overflows mtt_real is an error. */
+static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r)
+{
+    mtt_io_num e = mtt_io_parse_double(c->fields[col], d);
+    if (e != MTT_IO_NUM_OK)
+        return bad_number(c, col, e, "a finite number");
+#ifdef MTT_REAL_FIXED
+    if (col == COL_TIME)
+        return MTT_IO_OK; /* only time - time0 is converted (below) */
+#endif
+    if (!mtt_io_to_real(*d, fmt, r) && !MTT_IO_SATURATES) {
+        mtt_io_error_at(c->path, c->line, det_cols[col],
+                        "'%s' does not fit the tracker's real type (mtt_real=" MTT_IO_REAL_NAME ")",
+                        c->fields[col]);
+        return MTT_IO_EINPUT;
+    }
+    return MTT_IO_OK;
+}
+
+/* A scan's time as the tracker takes it: counted from the first scan's.
+ * Fixed point: Q16 of the file's time unit modulo 2^32, as the tracker
+ * compares times (docs/FIXED_POINT.md §3), so a file may be of any length
+ * (each step below 32768 units, checked with the order of the scans);
+ * float and double: mtt_io_to_real. */
+static int time_from0(double t, mtt_real *out)
+{
+#ifdef MTT_REAL_FIXED
+    const double s = t * (double)(1L << MTT_IO_TIME);
+    unsigned long long q;
+    uint32_t u;
+    if (!(s >= 0.0 && s < 9007199254740992.0)) /* 2^53: exact in a double */
+        return 0;
+    q = (unsigned long long)(s + 0.5);
+    u = (uint32_t)(q & 0xFFFFFFFFull);
+    *out = (u <= (uint32_t)INT32_MAX) ? (int32_t)u : -(int32_t)(~u) - 1; /* two's complement */
+    return 1;
+#else
+    return mtt_io_to_real(t, MTT_IO_TIME, out);
+#endif
+}
+
+static void *grow(void *p, size_t *cap, size_t elem)
+{
+    size_t n = *cap != 0 ? 2 * *cap : 64;
+    void *q;
+    if (n > ((size_t)-1) / elem)
+        return NULL;
+    q = realloc(p, n * elem);
+    if (q != NULL)
+        *cap = n;
+    return q;
+}
+
+void mtt_io_free_detections(mtt_io_detections *d)
+{
+    free(d->meas);
+    free(d->scans);
+    memset(d, 0, sizeof *d);
+}
+
+/* Validate and store one data row. */
+static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empty_row)
+{
+    unsigned long scan;
+    double time, x = 0, y = 0, amp = 0;
+    mtt_meas m;
+    mtt_real rtime;
+    mtt_io_num e;
+    int empty, rc;
+    char t0[32], t1[32];
+    mtt_io_scan *prev = d->n_scans != 0 ? &d->scans[d->n_scans - 1] : NULL;
+
+    if (c->n_fields < N_COLS) {
+        mtt_io_error_at(c->path, c->line, det_cols[c->n_fields],
+                        "missing: the row has %lu fields, expected %d (scan,time,x,y,amplitude)",
+                        (unsigned long)c->n_fields, N_COLS);
+        return MTT_IO_EINPUT;
+    }
+    if (c->n_fields > N_COLS) {
+        mtt_io_error_at(c->path, c->line, NULL,
+                        "the row has %lu fields, expected %d (scan,time,x,y,amplitude)",
+                        (unsigned long)c->n_fields, N_COLS);
+        return MTT_IO_EINPUT;
+    }
+
+    e = mtt_io_parse_count(c->fields[COL_SCAN], &scan);
+    if (e != MTT_IO_NUM_OK)
+        return bad_number(c, COL_SCAN, e, "a non-negative integer");
+    memset(&m, 0, sizeof m);
+    if ((rc = field_real(c, COL_TIME, MTT_IO_TIME, &time, &rtime)) != MTT_IO_OK)
+        return rc;
+    if (prev == NULL)
+        d->time0 = time;
+    if (!time_from0(time - d->time0, &rtime)) {
+        mtt_io_error_at(c->path, c->line, "time", "'%s' is too far from the first scan's time",
+                        c->fields[COL_TIME]);
+        return MTT_IO_EINPUT;
+    }
+    empty = c->fields[COL_X][0] == '\0' && c->fields[COL_Y][0] == '\0';
+    if (empty) {
+        if (c->fields[COL_AMP][0] != '\0') {
+            mtt_io_error_at(c->path, c->line, "amplitude",
+                            "must be empty on an empty-scan row (x and y empty)");
+            return MTT_IO_EINPUT;
+        }
+    } else {
+        if ((rc = field_real(c, COL_X, MTT_IO_POS, &x, &m.x)) != MTT_IO_OK ||
+            (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y)) != MTT_IO_OK)
+            return rc;
+        if (c->fields[COL_AMP][0] != '\0') {
+            if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
+                return rc;
+            if (!(amp >= 0.0)) {
+                mtt_io_error_at(c->path, c->line, "amplitude", "'%s' is negative: must be >= 0",
+                                c->fields[COL_AMP]);
+                return MTT_IO_EINPUT;
+            }
+            m.has_amplitude = 1;
+        }
+    }
+
+    if (prev != NULL && scan == prev->scan) {
+        if (time != prev->time) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' differs from the time %s of scan %lu (line %ld): all rows of "
+                            "a scan must have the same time",
+                            c->fields[COL_TIME], t0, scan, prev->line);
+            return MTT_IO_EINPUT;
+        }
+        if (empty || *scan_has_empty_row) {
+            mtt_io_error_at(c->path, c->line, "x",
+                            "scan %lu has both detections and an empty-scan row (x and y "
+                            "empty): an empty scan is a single row",
+                            scan);
+            return MTT_IO_EINPUT;
+        }
+    } else {
+        if (prev != NULL && scan < prev->scan) {
+            mtt_io_error_at(c->path, c->line, "scan",
+                            "%lu after scan %lu (line %ld): scan numbers must not decrease", scan,
+                            prev->scan, prev->line);
+            return MTT_IO_EINPUT;
+        }
+        if (prev != NULL && !(time > prev->time)) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' is not later than the time %s of scan %lu (line %ld): time "
+                            "must increase with scan",
+                            c->fields[COL_TIME], t0, prev->scan, prev->line);
+            return MTT_IO_EINPUT;
+        }
+#ifdef MTT_REAL_FIXED
+        if (prev != NULL && !((time - prev->time) * (double)(1L << MTT_IO_TIME) < 2147483647.0)) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' is too far after the time %s of scan %lu: a step of the "
+                            "fixed-point tracker is below 32768 time units",
+                            c->fields[COL_TIME], t0, prev->scan);
+            return MTT_IO_EINPUT;
+        }
+#endif
+        if (prev != NULL && !MTT_TIME_AFTER(rtime, prev->rtime)) {
+            mtt_io_format_double(prev->time, t0, sizeof t0);
+            mtt_io_format_double(d->time0, t1, sizeof t1);
+            mtt_io_error_at(c->path, c->line, "time",
+                            "'%s' cannot be told from the time %s of scan %lu in the tracker's "
+                            "precision (mtt_real=" MTT_IO_REAL_NAME ", time counted from %s)",
+                            c->fields[COL_TIME], t0, prev->scan, t1);
+            return MTT_IO_EINPUT;
+        }
+        if (d->n_scans == d->cap_scans) {
+            mtt_io_scan *s = grow(d->scans, &d->cap_scans, sizeof *s);
+            if (s == NULL)
+                goto oom;
+            d->scans = s;
+        }
+        prev = &d->scans[d->n_scans++];
+        prev->scan = scan;
+        prev->time = time;
+        prev->rtime = rtime;
+        prev->first = d->n_meas;
+        prev->count = 0;
+        prev->line = c->line;
+        *scan_has_empty_row = 0;
+    }
+
+    if (empty) {
+        *scan_has_empty_row = 1;
+        return MTT_IO_OK;
+    }
+    if (d->n_meas == d->cap_meas) {
+        mtt_meas *p = grow(d->meas, &d->cap_meas, sizeof *p);
+        if (p == NULL)
+            goto oom;
+        d->meas = p;
+    }
+    d->meas[d->n_meas++] = m;
+    prev->count++;
+    return MTT_IO_OK;
+oom:
+    mtt_io_error("out of memory reading %s", c->path);
+    return MTT_IO_ESYS;
+}
+
+int mtt_io_read_detections(const char *path, mtt_io_detections *d)
+{
+    mtt_io_csv c;
+    int rc, got, scan_has_empty_row = 0;
+
+    memset(d, 0, sizeof *d);
+    if ((rc = mtt_io_csv_open(&c, path)) != MTT_IO_OK)
+        return rc;
+    if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK)
+        goto done;
+    if (!got) {
+        mtt_io_error_at(path, 0, NULL, "empty file: expected the header 'scan,time,x,y,amplitude'");
+        rc = MTT_IO_EINPUT;
+        goto done;
+    }
+    if ((rc = mtt_io_csv_expect_header(&c, det_cols, N_COLS)) != MTT_IO_OK)
+        goto done;
+    for (;;) {
+        if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK || !got)
+            break;
+        if ((rc = det_row(d, &c, &scan_has_empty_row)) != MTT_IO_OK)
+            break;
+    }
+done:
+    mtt_io_csv_close(&c);
+    if (rc != MTT_IO_OK)
+        mtt_io_free_detections(d);
+    return rc;
+}
