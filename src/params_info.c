@@ -78,12 +78,17 @@ mtt_status mtt_params_find(const char *key, size_t *i)
 /* The arguments of mtt_params_set / get: *r the row of key, which must
  * have n values. */
 static mtt_status row_of(const void *p, const char *key, const void *v, size_t n,
-                         const info_row **r)
+                         size_t params_size, uint32_t config_id, const info_row **r)
 {
     size_t k;
     mtt_status st;
     if (p == NULL || v == NULL) {
         return MTT_ERR_NULL;
+    }
+    /* Before p or v is touched: the caller's mtt_params may have another
+     * layout than ours (mtt/mtt.h, mtt_params_default). */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
     st = mtt_params_find(key, &k); /* MTT_ERR_NULL for a NULL key */
     if (st != MTT_OK) {
@@ -191,12 +196,13 @@ static int to_real(double v, int frac, mtt_real *out)
 #define ROW_FRAC(r) 0
 #endif
 
-mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
+mtt_status mtt_params_set_checked(mtt_params *p, const char *key, const double *v, size_t n,
+                                  size_t params_size, uint32_t config_id)
 {
     const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    mtt_status st = row_of(p, key, v, n, &r);
+    mtt_status st = row_of(p, key, v, n, params_size, config_id, &r);
     if (st != MTT_OK) {
         return st;
     }
@@ -226,12 +232,13 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     return MTT_OK;
 }
 
-mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_t n)
+mtt_status mtt_params_get_checked(const mtt_params *p, const char *key, double *v, size_t n,
+                                  size_t params_size, uint32_t config_id)
 {
     const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    mtt_status st = row_of(p, key, v, n, &r);
+    mtt_status st = row_of(p, key, v, n, params_size, config_id, &r);
     if (st != MTT_OK) {
         return st;
     }
