@@ -204,7 +204,7 @@ typedef struct range_rule {
     mtt_real lo, hi;
 } range_rule;
 
-#define RULE(key, member, count, lo, hi, flags, cross, text)                                      \
+#define RULE(key, member, count, lo, hi, flags, cross, tier, text)                                      \
     {key, (uint16_t)offsetof(mtt_params, member), count, flags, PBOUND(member, lo), PBOUND(member, hi)},
 
 static const range_rule rules[MTT_RULE_COUNT] = {
@@ -247,7 +247,7 @@ int mtt_params_rule_ok(const mtt_params *p, size_t rule, int cross)
 }
 
 /* An enum row is bad when its value is not one of its n_names. */
-#define CHECK_ENUM(key, member, type, n_names, names, text)                                        \
+#define CHECK_ENUM(key, member, type, n_names, names, tier, text)                                        \
     if (bad == NULL && !((int)p->member >= 0 && (int)p->member < (int)(n_names))) {                 \
         bad = key;                                                                                 \
     }

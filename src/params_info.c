@@ -32,16 +32,19 @@ typedef struct info_row {
 #define INFO_NO_FRAC
 #endif
 
-#define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
+#define INFO_REAL(key, member, count, lo, hi, flags, cross, tier, text)                                  \
     {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
       ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
       ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 3 : 0,                 \
-      ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
+      ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text,           \
+      MTT_PARAM_TIER_##tier},              \
      MTT_RULE_##member INFO_FRAC(member)},
-#define INFO_FLAG(key, member, text)                                                               \
-    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT INFO_NO_FRAC},
-#define INFO_ENUM(key, member, type, n_names, names, text)                                         \
-    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text},  \
+#define INFO_FLAG(key, member, tier, text)                                                         \
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text, MTT_PARAM_TIER_##tier},        \
+     MTT_RULE_COUNT INFO_NO_FRAC},
+#define INFO_ENUM(key, member, type, n_names, names, tier, text)                                   \
+    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text,    \
+      MTT_PARAM_TIER_##tier},                                                                      \
      MTT_RULE_COUNT INFO_NO_FRAC},
 
 static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
@@ -104,11 +107,11 @@ static mtt_status row_of(const void *p, const char *key, const void *v, size_t n
 
 /* ENUM and BOOL rows: the member, as an int.  One case per row: the enum
  * members need not be int-sized (short enums on ARM EABI). */
-#define GET_FLAG(name, member, text)                                                                \
+#define GET_FLAG(name, member, tier, text)                                                                \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         return p->member != 0;                                                                     \
     }
-#define GET_ENUM(name, member, type, n_names, names, text)                                          \
+#define GET_ENUM(name, member, type, n_names, names, tier, text)                                          \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         return (int)p->member;                                                                     \
     }
@@ -118,11 +121,11 @@ static int get_int(const mtt_params *p, const info_row *r)
     return 0;
 }
 
-#define SET_FLAG(name, member, text)                                                                \
+#define SET_FLAG(name, member, tier, text)                                                                \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         p->member = value;                                                                         \
     }
-#define SET_ENUM(name, member, type, n_names, names, text)                                          \
+#define SET_ENUM(name, member, type, n_names, names, tier, text)                                          \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         p->member = (type)value;                                                                   \
     }

@@ -223,6 +223,15 @@ typedef enum mtt_param_type {
                              resets imm_transition and imm_initial to their defaults for r models */
 } mtt_param_type;
 
+/** Tier of a settings key (docs/CONFIGURATION.md): who sets it and from what. */
+typedef enum mtt_param_tier {
+    MTT_PARAM_TIER_SENSOR = 0, /**< the sensor and the targets: facts the user knows (pd, meas_sigma, ...) */
+    MTT_PARAM_TIER_TRACK,      /**< track management: gate, existence, initiation, confirm, delete, merge */
+    MTT_PARAM_TIER_TUNING,     /**< the choice of algorithm and its variants' tuning (contest, IMM, split) */
+    MTT_PARAM_TIER_BASELINE,   /**< read by the baseline modes only (MTT_WITH_BASELINES) */
+    MTT_PARAM_TIER_COUNT
+} mtt_param_tier;
+
 /** One settings key of mtt_params: the table behind mtt_params_check,
  *  mtt-track's settings reader and docs/FORMATS.md's settings table. */
 typedef struct mtt_param_info {
@@ -242,6 +251,7 @@ typedef struct mtt_param_info {
     const char *cross;        /**< rule against other values that only mtt_params_check
                                    applies ("below confirm_threshold"); NULL if none */
     const char *text;         /**< one-line meaning */
+    mtt_param_tier tier;      /**< sensor, track, tuning or baseline */
 } mtt_param_info;
 
 
