@@ -90,9 +90,9 @@ run_config() {
         defs="$defs;MTT_WITH_IMM=0"
       fi
       # Host-tool checks of the full settings table (every key, the IMM
-      # keys, a run with split, docs/FORMATS.md's table) and the
+      # keys, a run with split, docs/FORMATS.md's and CONFIGURATION.md's tables) and the
       # baseline-mode refusal case describe the default build, not this one.
-      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table)$'
+      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table|docs\.configuration)$'
       what="host-float-small: float, ${defs//;/ }"
       ;;
   esac
