@@ -8,7 +8,7 @@
  * helpers).  Out of range saturates, never wraps: the saturated value is
  * what measure.c skips and counts as a bad detection and what
  * mtt_params_check refuses (ALGORITHMS.md §16). */
-#include "mtt/fixed.h"
+#include "real_ops.h"
 #include "mtt/mtt.h"
 
 #if defined(MTT_REAL_FIXED)

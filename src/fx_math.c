@@ -8,7 +8,7 @@
  * shift (__aeabi_llsr), no CLZ.  Compiled only in the fixed-point build
  * (MTT_REAL_FIXED) and for its unit test (MTT_FX_KERNELS): a float or
  * double library carries none of it. */
-#include "mtt/fixed.h"
+#include "real_ops.h"
 
 #if defined(MTT_REAL_FIXED) || defined(MTT_FX_KERNELS)
 

@@ -5,6 +5,7 @@
 #define MTT_INTERNAL_H
 
 #include "mtt/mtt.h"
+#include "real_ops.h" /* the operation macros and kernels: private */
 #include "motion.h"
 
 #define MTT_MAGIC 0x4d54545fu /* "MTT_" : set by mtt_tracker_init */

@@ -107,10 +107,14 @@ static const char *check_imm(const mtt_params *p)
 }
 #endif /* MTT_WITH_IMM */
 
-mtt_status mtt_params_default(mtt_params *p)
+mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_t config_id)
 {
     if (p == NULL) {
         return MTT_ERR_NULL;
+    }
+    /* Before p is written: the caller's mtt_params may be smaller than ours. */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
     memset(p, 0, sizeof *p);
     p->association = MTT_ASSOC_LM_IHPDA;
@@ -200,7 +204,7 @@ typedef struct range_rule {
     mtt_real lo, hi;
 } range_rule;
 
-#define RULE(key, member, count, lo, hi, flags, cross, text)                                      \
+#define RULE(key, member, count, lo, hi, flags, cross, tier, text)                                      \
     {key, (uint16_t)offsetof(mtt_params, member), count, flags, PBOUND(member, lo), PBOUND(member, hi)},
 
 static const range_rule rules[MTT_RULE_COUNT] = {
@@ -243,21 +247,30 @@ int mtt_params_rule_ok(const mtt_params *p, size_t rule, int cross)
 }
 
 /* An enum row is bad when its value is not one of its n_names. */
-#define CHECK_ENUM(key, member, type, n_names, names, text)                                        \
+#define CHECK_ENUM(key, member, type, n_names, names, tier, text)                                        \
     if (bad == NULL && !((int)p->member >= 0 && (int)p->member < (int)(n_names))) {                 \
         bad = key;                                                                                 \
     }
 
-mtt_status mtt_params_check(const mtt_params *p, const char **bad_field)
+mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field, size_t params_size,
+                                    uint32_t config_id)
 {
     const char *bad = NULL;
     mtt_status st = MTT_ERR_PARAM;
     size_t k;
+    if (p == NULL) {
+        if (bad_field != NULL) {
+            *bad_field = NULL;
+        }
+        return MTT_ERR_NULL;
+    }
+    /* Before p is read or bad_field written: the caller's mtt_params may
+     * have another layout than ours. */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
+    }
     if (bad_field != NULL) {
         *bad_field = NULL;
-    }
-    if (p == NULL) {
-        return MTT_ERR_NULL;
     }
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, MTT_PARAM_NO_FLAG, CHECK_ENUM)
     if (bad == NULL && !MTT_WITH_BASELINES && mtt_modes[p->association].baseline) {

@@ -32,16 +32,19 @@ typedef struct info_row {
 #define INFO_NO_FRAC
 #endif
 
-#define INFO_REAL(key, member, count, lo, hi, flags, cross, text)                                  \
+#define INFO_REAL(key, member, count, lo, hi, flags, cross, tier, text)                                  \
     {{key, ((flags) & PF_MODELS) ? MTT_PARAM_MODELS : MTT_PARAM_REAL, count, (double)(lo), (double)(hi),    \
       ((flags) & PF_OPEN_LO) != 0, ((flags) & PF_OPEN_HI) != 0,                                     \
       ((flags) & PF_MODELS) ? mtt_model_names : NULL, ((flags) & PF_MODELS) ? 3 : 0,                 \
-      ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text},              \
+      ((flags) & PF_PER_MODEL2) ? 2 : (((flags) & PF_PER_MODEL) ? 1 : 0), cross, text,           \
+      MTT_PARAM_TIER_##tier},              \
      MTT_RULE_##member INFO_FRAC(member)},
-#define INFO_FLAG(key, member, text)                                                               \
-    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text}, MTT_RULE_COUNT INFO_NO_FRAC},
-#define INFO_ENUM(key, member, type, n_names, names, text)                                         \
-    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text},  \
+#define INFO_FLAG(key, member, tier, text)                                                         \
+    {{key, MTT_PARAM_BOOL, 1, 0.0, 1.0, 0, 0, NULL, 0, 0, NULL, text, MTT_PARAM_TIER_##tier},        \
+     MTT_RULE_COUNT INFO_NO_FRAC},
+#define INFO_ENUM(key, member, type, n_names, names, tier, text)                                   \
+    {{key, MTT_PARAM_ENUM, 1, 0.0, (double)((n_names) - 1), 0, 0, names, n_names, 0, NULL, text,    \
+      MTT_PARAM_TIER_##tier},                                                                      \
      MTT_RULE_COUNT INFO_NO_FRAC},
 
 static const info_row rows[] = {MTT_PARAM_ROWS(INFO_REAL, INFO_FLAG, INFO_ENUM)};
@@ -78,12 +81,17 @@ mtt_status mtt_params_find(const char *key, size_t *i)
 /* The arguments of mtt_params_set / get: *r the row of key, which must
  * have n values. */
 static mtt_status row_of(const void *p, const char *key, const void *v, size_t n,
-                         const info_row **r)
+                         size_t params_size, uint32_t config_id, const info_row **r)
 {
     size_t k;
     mtt_status st;
     if (p == NULL || v == NULL) {
         return MTT_ERR_NULL;
+    }
+    /* Before p or v is touched: the caller's mtt_params may have another
+     * layout than ours (mtt/mtt.h, mtt_params_default). */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
     st = mtt_params_find(key, &k); /* MTT_ERR_NULL for a NULL key */
     if (st != MTT_OK) {
@@ -99,11 +107,11 @@ static mtt_status row_of(const void *p, const char *key, const void *v, size_t n
 
 /* ENUM and BOOL rows: the member, as an int.  One case per row: the enum
  * members need not be int-sized (short enums on ARM EABI). */
-#define GET_FLAG(name, member, text)                                                                \
+#define GET_FLAG(name, member, tier, text)                                                                \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         return p->member != 0;                                                                     \
     }
-#define GET_ENUM(name, member, type, n_names, names, text)                                          \
+#define GET_ENUM(name, member, type, n_names, names, tier, text)                                          \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         return (int)p->member;                                                                     \
     }
@@ -113,11 +121,11 @@ static int get_int(const mtt_params *p, const info_row *r)
     return 0;
 }
 
-#define SET_FLAG(name, member, text)                                                                \
+#define SET_FLAG(name, member, tier, text)                                                                \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         p->member = value;                                                                         \
     }
-#define SET_ENUM(name, member, type, n_names, names, text)                                          \
+#define SET_ENUM(name, member, type, n_names, names, tier, text)                                          \
     if (strcmp(r->info.key, name) == 0) {                                                           \
         p->member = (type)value;                                                                   \
     }
@@ -191,12 +199,13 @@ static int to_real(double v, int frac, mtt_real *out)
 #define ROW_FRAC(r) 0
 #endif
 
-mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_t n)
+mtt_status mtt_params_set_checked(mtt_params *p, const char *key, const double *v, size_t n,
+                                  size_t params_size, uint32_t config_id)
 {
     const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    mtt_status st = row_of(p, key, v, n, &r);
+    mtt_status st = row_of(p, key, v, n, params_size, config_id, &r);
     if (st != MTT_OK) {
         return st;
     }
@@ -226,12 +235,13 @@ mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v, size_
     return MTT_OK;
 }
 
-mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v, size_t n)
+mtt_status mtt_params_get_checked(const mtt_params *p, const char *key, double *v, size_t n,
+                                  size_t params_size, uint32_t config_id)
 {
     const info_row *r = NULL;
     mtt_params q;
     size_t k;
-    mtt_status st = row_of(p, key, v, n, &r);
+    mtt_status st = row_of(p, key, v, n, params_size, config_id, &r);
     if (st != MTT_OK) {
         return st;
     }

@@ -10,16 +10,19 @@
  * scripts/check_settings_doc.py keeps the two equal.
  *
  * Rows, in docs/FORMATS.md order:
- *   REAL(key, member, count, lo, hi, flags, cross, text)
+ *   REAL(key, member, count, lo, hi, flags, cross, tier, text)
  *        mtt_real member (count 1) or member[count]; each element finite,
  *        lo <= v <= hi (PF_OPEN_* excludes a bound; MTT_REAL_MAX: no bound,
  *        any value mtt_real holds); cross: the rule against other values that only
  *        mtt_params_check applies (PF_BELOW_CONFIRM, PF_ASCENDING), as text
  *        in `cross` (NULL: none)
- *   FLAG(key, member, text)
+ *   FLAG(key, member, tier, text)
  *        int member, 0 or nonzero (a JSON boolean)
- *   ENUM(key, member, type, n_names, names, text)
+ *   ENUM(key, member, type, n_names, names, tier, text)
  *        enum member of `type`, value in [0, n_names); names[] spells them
+ * tier (mtt_param_tier, docs/CONFIGURATION.md): SENSOR, the sensor and
+ * targets (facts the user knows); TRACK, track management; TUNING, the
+ * variants' tuning; BASELINE, keys that only the baseline modes read.
  *
  * imm_models is a REAL row over the psd slots with PF_MODELS: its public
  * type is MTT_PARAM_MODELS, and params_info.c sets and gets the model kinds
@@ -54,13 +57,13 @@ extern const char *const mtt_model_names[3];
  * it only `motion` is a key (and `imm` is refused). */
 #if MTT_WITH_IMM
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                      \
-    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL,           \
+    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL, TUNING,           \
          "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³), `ca` (constant acceleration, white-noise jerk, q in length²/time⁵) or `ct` (coordinated turn with unknown turn rate: q as cv on the velocity, and `turn_psd`, the turn rate's white-noise psd in rad²/time³, > 0, given for ct only); not given: cv and ca, both with process_psd (§14.1)") \
     REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
-         "r rows of r (r models), each row summing to 1",                                           \
+         "r rows of r (r models), each row summing to 1", TUNING,                                           \
          "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \
     REAL("imm_initial", imm_initial, MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL,                         \
-         "one per model, summing to 1",                                                               \
+         "one per model, summing to 1", TUNING,                                                               \
          "with `imm`: the model probabilities of a new or seeded track (§14.2)")
 #else
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
@@ -70,21 +73,21 @@ extern const char *const mtt_model_names[3];
  * split modes only in a build with MTT_WITH_SPLIT. */
 #if MTT_WITH_SPLIT
 #define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)                                                  \
-    REAL("split_p25", split_p25, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                                   \
+    REAL("split_p25", split_p25, 1, 0.0, 1.0, PF_OPEN_HI, NULL, TUNING,                                   \
          "with `split`: per-scan probability that a target in the cv model splits (cv → \"just split\"); the cv row of imm_transition is scaled by 1 − split_p25 (§14.3)") \
-    REAL("split_p52", split_p52, 1, 0.0, 1.0, 0, NULL,                                            \
+    REAL("split_p52", split_p52, 1, 0.0, 1.0, 0, NULL, TUNING,                                            \
          "with `split`: probability that a \"just split\" finds no second target and falls back to cv; the rest goes to \"split\" (§14.3)") \
-    REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL,                                            \
+    REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL, TUNING,                                            \
          "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)") \
-    REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                     \
+    REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL, TUNING,                                     \
          "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)") \
-    REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                           \
+    REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                           \
          "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
-    FLAG("split_across", split_across,                                                            \
+    FLAG("split_across", split_across, TUNING,                                                            \
          "with `split`: true: the split's velocity change (split_dv) is across the course only, the \"just split\" model's gate is widened across it; false: in every direction (§14.3)") \
-    FLAG("split_known_speed", split_known_speed,                                                  \
+    FLAG("split_known_speed", split_known_speed, TUNING,                                                  \
          "with `split`: true: a split of known speed, the child leaving at split_dv across the course: the \"just split\" model's child half from the prior moved by split_dv, also a scan late, and a split-off track deleted when its existence falls below 0.6 in its first 3 scans; false: split_dv as the impulse's standard deviation only (§14.3)") \
-    FLAG("split_decouple_r", split_decouple_r,                                                    \
+    FLAG("split_decouple_r", split_decouple_r, TUNING,                                                    \
          "with `split`: true: the decoupling test of [S3] eq. 27 on S_1 + S_2 (the halves' predicted measurements, R included); false: on P_11 + P_22 (the halves' position estimates), which decouples a scan or two earlier (§14.3)")
 #else
 #define MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
@@ -94,80 +97,80 @@ extern const char *const mtt_model_names[3];
  * (ALGORITHMS.md §2.1): only in a build with MTT_WITH_CONTEST. */
 #if MTT_WITH_CONTEST
 #define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)                                                    \
-    REAL("adapt_s_min", adapt_s_min, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                               \
+    REAL("adapt_s_min", adapt_s_min, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                               \
          "lm_ihpda_variant contest: smallest scale s of a confirmed track's process noise, s·process_psd, lowered while its innovations are smaller than the filter expects and raised when they grow; 1 turns the adaptation off (§2.1)") \
-    REAL("adapt_index", adapt_index, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                      \
+    REAL("adapt_index", adapt_index, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, TUNING,                      \
          "lm_ihpda_variant contest: s stays at or above Λ²/adapt_index, Λ² = process_psd·ΔT³/σ² the squared tracking index (σ² the mean of σx², σy²): the stronger the configured manoeuvres against the measurement noise, the less the level is lowered (§2.1)") \
-    REAL("adapt_memory", adapt_memory, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                             \
+    REAL("adapt_memory", adapt_memory, 1, 0.0, 1.0, PF_OPEN_HI, NULL, TUNING,                             \
          "lm_ihpda_variant contest: fading factor α of the average of the normalised innovation squared that drives s (§2.1)") \
-    REAL("adapt_gain", adapt_gain, 1, 0.0, 100.0, PF_OPEN_LO, NULL,                               \
+    REAL("adapt_gain", adapt_gain, 1, 0.0, 100.0, PF_OPEN_LO, NULL, TUNING,                               \
          "lm_ihpda_variant contest: gain κ of s's update, s ← s·exp(κ(r̄ − 1)) with r̄ the average NIS over its expectation (§2.1)") \
-    REAL("adapt_reset_nis", adapt_reset_nis, 1, 0.0, MTT_REAL_MAX, 0, NULL,                       \
+    REAL("adapt_reset_nis", adapt_reset_nis, 1, 0.0, MTT_REAL_MAX, 0, NULL, TUNING,                       \
          "lm_ihpda_variant contest: a confirmed track whose measurement has a normalised innovation squared above this returns to s = 1 at once (a manoeuvre); 0 never (§2.1)")
 #else
 #define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)
 #endif
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
-    ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names,                \
+    ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names, TUNING,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
-    ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, \
+    ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, TUNING, \
          "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6), the default where built (MTT_WITH_CONTEST); with motion imm lm-ihpda runs s0") \
-    REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                  \
+    REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL, TUNING,                  \
          "lm_ihpda_variant contest: a measurement that two tracks give an LM-IPDA β >= this is contested (§10.4)") \
-    REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                            \
+    REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, SENSOR,                            \
          "power spectral density Sw of the constant-velocity model's white-noise acceleration, length²/time³ (§2)")  \
-    REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL,                                    \
+    REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL, SENSOR,                                    \
          "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²)")                                       \
-    REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, "probability of detection PD")                   \
-    REAL("pg", pg, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,                                   \
+    REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, SENSOR, "probability of detection PD")                   \
+    REAL("pg", pg, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL, TRACK,                                   \
          "gate probability PG; the gate threshold is γ = −2 ln(1 − PG) (§4)")                       \
-    REAL("clutter_density", clutter_density, 1, 0.0, MTT_REAL_MAX, 0, NULL,                             \
+    REAL("clutter_density", clutter_density, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                             \
          "clutter density λ per unit area; 0 estimates it per track (§5.2)")                          \
-    REAL("snr_rho", snr_rho, 1, 0.0, 1e6, 0, NULL,                                             \
+    REAL("snr_rho", snr_rho, 1, 0.0, 1e6, 0, NULL, SENSOR,                                             \
          "intensity parameter ρ: target amplitude mean 1 + ρ, clutter mean 1; 0 ignores amplitude (§7.1)")     \
-    REAL("amplitude_eta", amplitude_eta, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                          \
+    REAL("amplitude_eta", amplitude_eta, 1, 0.0, 1.0, PF_OPEN_HI, NULL, TUNING,                          \
          "lm_ihpda_variant contest: share η of untracked-target detections in the background amplitude law; 0 is the plain ratio (§7.6)") \
     MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)                                                        \
-    REAL("markov_p11", markov_p11, 1, 0.0, 1.0, 0, NULL,                                         \
+    REAL("markov_p11", markov_p11, 1, 0.0, 1.0, 0, NULL, TRACK,                                         \
          "probability that an existing target still exists at the next scan (§11)")          \
-    REAL("markov_p21", markov_p21, 1, 0.0, 1.0, 0, NULL,                                         \
+    REAL("markov_p21", markov_p21, 1, 0.0, 1.0, 0, NULL, TRACK,                                         \
          "probability that a target that does not exist appears at the next scan (§11)")                                 \
-    REAL("existence_init", existence_init, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL,           \
+    REAL("existence_init", existence_init, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL, TRACK,           \
          "existence probability of a new track (§12.1)")                                                  \
-    REAL("confirm_threshold", confirm_threshold, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                  \
+    REAL("confirm_threshold", confirm_threshold, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TRACK,                  \
          "a track with existence >= this is confirmed (§12.4)")                                               \
     REAL("terminate_threshold", terminate_threshold, 1, 0.0, 1.0,                                \
-         PF_OPEN_HI | PF_BELOW_CONFIRM, "below confirm_threshold",                                \
+         PF_OPEN_HI | PF_BELOW_CONFIRM, "below confirm_threshold", TRACK,                                \
          "a track with existence < this is deleted; 0 never deletes (§12.4)")                             \
-    REAL("merge_threshold", merge_threshold, 1, 0.0, MTT_REAL_MAX, 0, NULL,                             \
+    REAL("merge_threshold", merge_threshold, 1, 0.0, MTT_REAL_MAX, 0, NULL, TRACK,                             \
          "chi-square threshold of the track-merging test; 0 never merges (§12.3)")                        \
-    FLAG("initiate", initiate,                                                                    \
+    FLAG("initiate", initiate, TRACK,                                                                    \
          "true starts tracks from unused measurements; false only updates existing (seeded) tracks")               \
-    REAL("vmax", vmax, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,                                          \
+    REAL("vmax", vmax, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, SENSOR,                                          \
          "largest target speed, length/time: the velocity gate of two-point initiation (§12.1)")                           \
-    ENUM("init_gate", init_gate, mtt_init_gate, 2, mtt_init_gate_names,                           \
+    ENUM("init_gate", init_gate, mtt_init_gate, 2, mtt_init_gate_names, TRACK,                           \
          "initiation gate: the vmax circle, or the amplitude-based gate f(I) (§12.2)")                      \
-    REAL("intensity_gate.f1", intensity_f1, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL,                      \
+    REAL("intensity_gate.f1", intensity_f1, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL, TRACK,                      \
          "coefficients [a2, a1, a0] of f1(I) = a2·I² + a1·I + a0, the initial gate's σ below I_lo (§12.2)")       \
-    REAL("intensity_gate.f2", intensity_f2, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL,                      \
+    REAL("intensity_gate.f2", intensity_f2, 3, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL, TRACK,                      \
          "coefficients [a2, a1, a0] of f2(I), the initial gate's σ above I_hi (§12.2)")                            \
     REAL("intensity_gate.blend", intensity_blend, 2, -MTT_REAL_MAX, MTT_REAL_MAX, PF_ASCENDING,           \
-         "increasing (I_lo < I_hi)", "[I_lo, I_hi]: f = f1 below I_lo, f2 above I_hi, a linear blend between (§12.2)") \
-    REAL("jpda_bias", jpda_bias, 1, 0.0, MTT_REAL_MAX, 0, NULL,                                         \
+         "increasing (I_lo < I_hi)", TRACK, "[I_lo, I_hi]: f = f1 below I_lo, f2 above I_hi, a linear blend between (§12.2)") \
+    REAL("jpda_bias", jpda_bias, 1, 0.0, MTT_REAL_MAX, 0, NULL, BASELINE,                                         \
          "B of the JPDA family except jipda; 0 uses λ(1 − PD·PG)/PD (§13)")                             \
-    REAL("jpda_star_threshold", jpda_star_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL,              \
+    REAL("jpda_star_threshold", jpda_star_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL, BASELINE,              \
          "pruning probability of JPDA*; 0 is pure JPDA* (§13.6)")                                                             \
-    REAL("nnjpda_threshold", nnjpda_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL,                    \
+    REAL("nnjpda_threshold", nnjpda_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL, BASELINE,                    \
          "smallest β that NNJPDA assigns (§13.5)")                                                \
-    REAL("adaptive_jpda_distance", adaptive_jpda_distance, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL,      \
+    REAL("adaptive_jpda_distance", adaptive_jpda_distance, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, BASELINE,      \
          "adaptive JPDA: tracks closer than this many measurement sigmas overlap (§13.7)")                 \
-    REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL,                   \
+    REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL, BASELINE,                   \
          "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
-    ENUM("motion", motion, mtt_motion, 2, mtt_motion_names,                                        \
+    ENUM("motion", motion, mtt_motion, 2, mtt_motion_names, TUNING,                                        \
          "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda") \
     MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                          \
-    FLAG("split", split,                                                                           \
+    FLAG("split", split, TUNING,                                                                           \
          "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \
     MTT_PARAM_SPLIT_P_ROWS(REAL, FLAG, ENUM)
 
@@ -206,10 +209,10 @@ extern const char *const mtt_model_names[3];
 #endif
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
-#define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, text) MTT_RULE_##member,
-#define MTT_PARAM_NO_REAL(key, member, count, lo, hi, flags, cross, text)
-#define MTT_PARAM_NO_FLAG(key, member, text)
-#define MTT_PARAM_NO_ENUM(key, member, type, n_names, names, text)
+#define MTT_PARAM_RULE_ID(key, member, count, lo, hi, flags, cross, tier, text) MTT_RULE_##member,
+#define MTT_PARAM_NO_REAL(key, member, count, lo, hi, flags, cross, tier, text)
+#define MTT_PARAM_NO_FLAG(key, member, tier, text)
+#define MTT_PARAM_NO_ENUM(key, member, type, n_names, names, tier, text)
 enum { MTT_PARAM_ROWS(MTT_PARAM_RULE_ID, MTT_PARAM_NO_FLAG, MTT_PARAM_NO_ENUM) MTT_RULE_COUNT };
 
 /* Rule `rule` holds for p: every element finite and within its bounds, and

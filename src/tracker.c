@@ -96,11 +96,16 @@ mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_params *p, size_
  * (docs/FIRMWARE.md, "Parameters prepared on the host"): the checks and
  * the gate threshold, whose logarithm a firmware that loads the result
  * does not link. */
-mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out)
+mtt_status mtt_params_prepare_checked(const mtt_params *p, mtt_prepared *out, size_t params_size,
+                                      uint32_t config_id)
 {
     mtt_status st;
     if (p == NULL || out == NULL) {
         return MTT_ERR_NULL;
+    }
+    /* Before p is read or out written (its mtt_params member included). */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
     st = mtt_params_check(p, NULL);
     if (st != MTT_OK) {

@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "mtt/fixed.h"
+#include "real_ops.h" /* the kernels: private (src/) */
 #include "unity.h"
 
 /* Print a measured worst error beside its bound (ctest -V shows it). */

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "mtt/mtt.h"
+#include "real_ops.h" /* mtt_isfinite: private (src/) */
 #include "unity.h"
 
 static mtt_tracker trk;

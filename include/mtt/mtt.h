@@ -20,6 +20,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Types and macros only (config.h, real.h, fixed.h declare no function):
+ * outside the linkage block, which covers every declaration below and
+ * mtt/state.h's. */
 #include "mtt/config.h"
 #include "mtt/real.h"
 
@@ -66,7 +69,8 @@ typedef enum mtt_status {
     MTT_ERR_VALUE = -7,       /**< a state or covariance argument is not finite / not positive definite */
     MTT_ERR_UNSUPPORTED = -8, /**< the association mode is not built into this version */
     MTT_ERR_CONFIG = -9       /**< the caller was compiled with another configuration than the
-                                   library (MTT_CONFIG_ID, sizeof(mtt_tracker)): see mtt_tracker_init */
+                                   library (MTT_CONFIG_ID, sizeof(mtt_tracker) or sizeof(mtt_params)):
+                                   see mtt_tracker_init, mtt_params_default */
 } mtt_status;
 
 /** Association mode (docs/FORMATS.md `association`, ALGORITHMS.md §15.1). */
@@ -219,6 +223,15 @@ typedef enum mtt_param_type {
                              resets imm_transition and imm_initial to their defaults for r models */
 } mtt_param_type;
 
+/** Tier of a settings key (docs/CONFIGURATION.md): who sets it and from what. */
+typedef enum mtt_param_tier {
+    MTT_PARAM_TIER_SENSOR = 0, /**< the sensor and the targets: facts the user knows (pd, meas_sigma, ...) */
+    MTT_PARAM_TIER_TRACK,      /**< track management: gate, existence, initiation, confirm, delete, merge */
+    MTT_PARAM_TIER_TUNING,     /**< the choice of algorithm and its variants' tuning (contest, IMM, split) */
+    MTT_PARAM_TIER_BASELINE,   /**< read by the baseline modes only (MTT_WITH_BASELINES) */
+    MTT_PARAM_TIER_COUNT
+} mtt_param_tier;
+
 /** One settings key of mtt_params: the table behind mtt_params_check,
  *  mtt-track's settings reader and docs/FORMATS.md's settings table. */
 typedef struct mtt_param_info {
@@ -238,6 +251,7 @@ typedef struct mtt_param_info {
     const char *cross;        /**< rule against other values that only mtt_params_check
                                    applies ("below confirm_threshold"); NULL if none */
     const char *text;         /**< one-line meaning */
+    mtt_param_tier tier;      /**< sensor, track, tuning or baseline */
 } mtt_param_info;
 
 
@@ -329,9 +343,20 @@ typedef struct mtt_prepared {
  * Functions
  * ---------------------------------------------------------------------- */
 
+/* The parameter functions that read or write an mtt_params are macros, as
+ * mtt_tracker_init: mtt_params' layout follows the configuration
+ * (MTT_WITH_CONTEST, MTT_WITH_IMM, MTT_WITH_SPLIT, MTT_MAX_MODELS,
+ * mtt_real), so each passes the caller's sizeof(mtt_params) and
+ * MTT_CONFIG_ID to its _checked function, which returns MTT_ERR_CONFIG on a
+ * mismatch with nothing written (after MTT_ERR_NULL for a NULL pointer).
+ * Call them through the macros. */
+#define MTT_PARAMS_GUARD_ sizeof(mtt_params), (uint32_t)(MTT_CONFIG_ID)
+
 /** Fill p with docs/FORMATS.md's defaults ([S0]'s IR set-up).
- *  @return MTT_OK; MTT_ERR_NULL if p is NULL. */
-MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
+ *  @return MTT_OK; MTT_ERR_NULL if p is NULL; MTT_ERR_CONFIG. */
+#define mtt_params_default(p) mtt_params_default_checked((p), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size,
+                                                     uint32_t config_id);
 
 /** Validate a parameter set.
  *  @param bad_field if not NULL, receives the settings key of the first invalid
@@ -342,8 +367,11 @@ MTT_MUST_CHECK mtt_status mtt_params_default(mtt_params *p);
  *          ranges and rules: see mtt_params_info); MTT_ERR_UNSUPPORTED if the
  *          association mode is not built into this version (bad_field =
  *          "association"), nor the IMM ("motion"), nor lm-ihpda's contest
- *          variant (MTT_WITH_CONTEST 0, "lm_ihpda_variant"). */
-MTT_MUST_CHECK mtt_status mtt_params_check(const mtt_params *p, const char **bad_field);
+ *          variant (MTT_WITH_CONTEST 0, "lm_ihpda_variant"); MTT_ERR_CONFIG
+ *          (bad_field not written). */
+#define mtt_params_check(p, bad_field) mtt_params_check_checked((p), (bad_field), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
+                                                   size_t params_size, uint32_t config_id);
 
 /** The i-th settings key, 0 <= i < number of keys, in docs/FORMATS.md order.
  *  Host use (tools, bindings): a firmware that never calls the mtt_params_info /
@@ -359,17 +387,19 @@ MTT_MUST_CHECK mtt_status mtt_params_find(const char *key, size_t *i);
  *  v[0] the index into names).  Each value must lie in the key's range and
  *  fit mtt_real; rules between keys (terminate_threshold below
  *  confirm_threshold, blend increasing) are left to mtt_params_check.
- *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the key is unknown or n is
- *          not its count; MTT_ERR_PARAM if a value is out of range.  On
- *          error p is unchanged. */
-MTT_MUST_CHECK mtt_status mtt_params_set(mtt_params *p, const char *key, const double *v,
-                                         size_t n);
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG; MTT_ERR_RANGE if the key is
+ *          unknown or n is not its count; MTT_ERR_PARAM if a value is out of
+ *          range.  On error p is unchanged. */
+#define mtt_params_set(p, key, v, n) mtt_params_set_checked((p), (key), (v), (n), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_set_checked(mtt_params *p, const char *key, const double *v,
+                                                 size_t n, size_t params_size, uint32_t config_id);
 
 /** Get the n values of a key, as mtt_params_set takes them.
- *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_RANGE if the key is unknown or n is
- *          not its count. */
-MTT_MUST_CHECK mtt_status mtt_params_get(const mtt_params *p, const char *key, double *v,
-                                         size_t n);
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG; MTT_ERR_RANGE if the key is
+ *          unknown or n is not its count.  On error v is unchanged. */
+#define mtt_params_get(p, key, v, n) mtt_params_get_checked((p), (key), (v), (n), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_get_checked(const mtt_params *p, const char *key, double *v,
+                                                 size_t n, size_t params_size, uint32_t config_id);
 
 /** Initialise (or reset) a tracker.  Cost: O(MTT_MAX_GATED^2) for the rank table.
  *  A macro, as zlib's deflateInit: it passes the caller's sizeof(mtt_tracker)
@@ -393,9 +423,12 @@ MTT_MUST_CHECK mtt_status mtt_tracker_init_checked(mtt_tracker *trk, const mtt_p
  *  out receives p (its cycle_counter and cycle_ctx NULL), the gate
  *  threshold, the mark and this build's MTT_CONFIG_ID.  mtt_tracker_init
  *  gives the tracker that mtt_params_prepare and mtt_tracker_load give.
- *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_PARAM / MTT_ERR_UNSUPPORTED as
- *          mtt_params_check.  On error out is unchanged. */
-MTT_MUST_CHECK mtt_status mtt_params_prepare(const mtt_params *p, mtt_prepared *out);
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG; MTT_ERR_PARAM /
+ *          MTT_ERR_UNSUPPORTED as mtt_params_check.  On error out is
+ *          unchanged. */
+#define mtt_params_prepare(p, out) mtt_params_prepare_checked((p), (out), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_prepare_checked(const mtt_params *p, mtt_prepared *out,
+                                                     size_t params_size, uint32_t config_id);
 
 /** Initialise (or reset) a tracker from a prepared parameter set, with the
  *  cycle counter fn (may be NULL) and its ctx.  Cost: O(MTT_MAX_GATED^2)

@@ -86,9 +86,9 @@ run_config() {
     firmware)
       preset=host-float-small
       # Host-tool checks of the full settings table (every key, the IMM
-      # keys, a run with split, docs/FORMATS.md's table) and the
+      # keys, a run with split, docs/FORMATS.md's and CONFIGURATION.md's tables) and the
       # baseline-mode refusal case describe the default build, not this one.
-      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table)$'
+      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table|docs\.configuration)$'
       what="host-float-small: float, configs/firmware.h"
       # src/contest.c is compiled in every build, but with MTT_WITH_CONTEST=0
       # nothing calls it (MTT_CONTEST_ON is 0): not code of this configuration.

@@ -18,7 +18,7 @@ CC=arm-none-eabi-gcc
 CPU=(-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft)
 CFLAGS=("${CPU[@]}" -std=c99 -Os -ffunction-sections -fdata-sections
         -Wall -Wextra -Wpedantic -Wconversion -Werror -Wno-type-limits
-        -DMTT_FX_KERNELS -I"$ROOT/include" -I"$ROOT/examples/firmware")
+        -DMTT_FX_KERNELS -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/examples/firmware")
 
 "$CC" "${CFLAGS[@]}" -c "$ROOT/src/fx_math.c" -o "$OUT/fx_math.o"
 echo "== .text per kernel (bytes, -Os, Thumb-1; tables are .rodata)"

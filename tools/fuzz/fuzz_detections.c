@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "mtt/mtt.h"
+#include "real_ops.h" /* mtt_isfinite: private (src/) */
 #include "mtt_io.h"
 
 #define MAX_STEPPED_SCANS 64

@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "mtt/mtt.h"
+#include "real_ops.h" /* mtt_isfinite: private (src/) */
 #include "mtt_io.h"
 
 static mtt_tracker trk;

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "mtt/mtt.h"
+#include "real_ops.h" /* mtt_isfinite, MTT_POS_OK, mtt_fx_to_double: private (src/) */
 
 typedef struct mtt_check {
     /* identity bookkeeping */

@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "fw.h"
-#include "mtt/fixed.h"
+#include "real_ops.h" /* the kernels: private (src/) */
 #include "semihost.h"
 
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)

@@ -3,6 +3,7 @@
  * and a bad file gives nothing.
  */
 #include "mtt_io.h"
+#include "real_ops.h" /* MTT_TIME_AFTER: private (src/) */
 
 #include <stdlib.h>
 #include <string.h>

@@ -3,6 +3,7 @@
  * back, and the shortest text that reads back as the same double.
  */
 #include "mtt_io.h"
+#include "real_ops.h" /* mtt_fx_from_double, mtt_fx_to_double: private (src/) */
 
 #include <errno.h>
 #include <math.h>

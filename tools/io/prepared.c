@@ -46,12 +46,12 @@ static void put_reals(FILE *f, const char *member, const mtt_real *v, size_t n, 
 
 /* A REAL row: count values from the member (a scalar, or an array: count
  * above 1 or one slot per IMM model; the transition matrix by rows). */
-#define PUT_REAL(key, member, count, lo, hi, flags, cross, text)                                 \
+#define PUT_REAL(key, member, count, lo, hi, flags, cross, tier, text)                               \
     put_reals(f, #member, (const mtt_real *)(const void *)&p->member, (size_t)(count),          \
               ((flags) & PF_PER_MODEL2) ? (MTT_MAX_MODELS > 1 ? (size_t)MTT_MAX_MODELS : 2u)                                  \
                                         : (((count) > 1 || ((flags) & (PF_PER_MODEL | PF_MODELS))) ? 1u : 0u));
-#define PUT_FLAG(key, member, text) fprintf(f, "        .%s = %d,\n", #member, p->member);
-#define PUT_ENUM(key, member, type, n_names, names, text)                                         \
+#define PUT_FLAG(key, member, tier, text) fprintf(f, "        .%s = %d,\n", #member, p->member);
+#define PUT_ENUM(key, member, type, n_names, names, tier, text)                                       \
     fprintf(f, "        .%s = (%s)%d,\n", #member, #type, (int)p->member);
 
 int mtt_io_write_prepared(FILE *f, const mtt_prepared *pp, const char *name)

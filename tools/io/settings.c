@@ -759,6 +759,9 @@ static int check_params(const sctx *c)
 }
 
 /* The settings table as docs/FORMATS.md shows it: one Markdown row per key. */
+/* mtt_param_info.tier as docs/CONFIGURATION.md names it */
+static const char *const tier_names[MTT_PARAM_TIER_COUNT] = {"sensor", "track", "tuning", "baseline"};
+
 void mtt_io_list_settings(FILE *out)
 {
     const mtt_param_info *info;
@@ -769,7 +772,7 @@ void mtt_io_list_settings(FILE *out)
 
     if (mtt_params_default(&def) != MTT_OK)
         return;
-    fputs("| key | type | range | default | meaning |\n|---|---|---|---|---|\n", out);
+    fputs("| key | type | range | default | meaning | tier |\n|---|---|---|---|---|---|\n", out);
     for (i = 0; mtt_params_info(i, &info) == MTT_OK; ++i) {
         if (mtt_params_get(&def, info->key, v, N_VALUES(info)) != MTT_OK)
             return;
@@ -850,12 +853,13 @@ void mtt_io_list_settings(FILE *out)
             snprintf(deflt, sizeof deflt, "`%s`", info->names[(size_t)v[0]]);
             break;
         }
-        fprintf(out, "| `%s` | %s | %s | %s | %s |\n", info->key, type, range, deflt, info->text);
+        fprintf(out, "| `%s` | %s | %s | %s | %s | %s |\n", info->key, type, range, deflt, info->text,
+                (unsigned)info->tier < MTT_PARAM_TIER_COUNT ? tier_names[info->tier] : "?");
     }
     fputs("| `" SEEDS_KEY "` | list | objects `{\"x\", \"y\", \"vx\", \"vy\"}`, each optionally "
           "with `\"P\"` (4x4 covariance: 16 numbers row-major, or 4 rows of 4) | none | tracks "
           "that exist from the first scan: confirmed, existence 1, identities 0, 1, ... in list "
-          "order; without `\"P\"` the two-point covariance of the first scan interval |\n",
+          "order; without `\"P\"` the two-point covariance of the first scan interval | track |\n",
           out);
 }
 

@@ -55,7 +55,7 @@ static const char usage_text[] =
     "  --help              print this help and exit\n"
     "  --version           print the version and exit\n"
     "  --list-settings     print the settings keys (key, type, range, default,\n"
-    "                      meaning) as a Markdown table and exit\n"
+    "                      meaning, tier) as a Markdown table and exit\n"
     "  --prepared-c FILE   instead of running: write the settings, checked and\n"
     "                      prepared (mtt_params_prepare), as C for a firmware's\n"
     "                      mtt_tracker_load (a constant named mtt_fw_prepared)\n"

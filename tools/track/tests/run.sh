@@ -156,12 +156,13 @@ list_settings)
     run --list-settings
     [ "$rc" -eq 0 ] || fail "--list-settings exit code $rc"
     [ ! -s "$work/stderr" ] || fail "--list-settings wrote to stderr"
-    [ "$(head -n 1 "$work/stdout")" = "| key | type | range | default | meaning |" ] ||
+    [ "$(head -n 1 "$work/stdout")" = "| key | type | range | default | meaning | tier |" ] ||
         fail "bad table header: $(head -n 1 "$work/stdout")"
     stdout_has "| \`pd\` | number | in (0, 1] | 0.9 | "
     stdout_has "| \`meas_sigma\` | 2 numbers | each in [1e-9, 1e9] | [1, 1] | "
     stdout_has "| \`terminate_threshold\` | number | in [0, 1); below confirm_threshold | 0.01 | "
     stdout_has "| \`initial_tracks\` | list | "
+    stdout_has " | probability of detection PD | sensor |"
     # one row per key of the library's table, plus the header, rule and initial_tracks
     [ "$(grep -c '^| `' "$work/stdout")" -eq 46 ] || fail "expected 46 key rows"
     ;;
