@@ -12,7 +12,7 @@
 
 #include <stdio.h>
 
-#include "params_table.h"
+#include "core/params_table.h"
 
 static void put_real(FILE *f, mtt_real v)
 {

@@ -5,7 +5,7 @@
 #define MTT_INTERNAL_H
 
 #include "mtt/mtt.h"
-#include "motion.h"
+#include "filter/motion.h"
 
 #define MTT_MAGIC 0x4d54545fu /* "MTT_" : set by mtt_tracker_init */
 #define MTT_NONE16 ((uint16_t)0xffffu)
