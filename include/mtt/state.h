@@ -101,14 +101,11 @@ typedef struct mtt_split_assoc {
     mtt_real beta0;                       /* P(theta_0): neither detected */
     mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
     mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
-    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
-    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
     mtt_real pd;
     mtt_real scale;                       /* V, or 1/lambda */
     uint16_t m;
     uint8_t n;
     uint8_t parametric;                   /* 1: known clutter density lambda */
-    uint8_t joint;                        /* 1: coupled two-detection density */
 } mtt_split_assoc;
 
 /** One track's split modes: mode probabilities μ_5 ("just split") and μ_6

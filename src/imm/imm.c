@@ -149,29 +149,6 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
     return 0;
 }
 
-mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real lam[], mtt_real mu[])
-{
-    mtt_real c = MTT_R(0.0);
-    uint8_t j;
-    if (r < 1u || r > MTT_MAX_MODELS) {
-        return MTT_R(0.0);
-    }
-    for (j = 0; j < r; ++j) {
-        c += lam[j] * cbar[j];
-    }
-    if (!(c > MTT_R(0.0)) || !mtt_isfinite(c)) {
-        /* No usable likelihood: the predicted mode probabilities stand. */
-        for (j = 0; j < r; ++j) {
-            mu[j] = cbar[j];
-        }
-        return MTT_R(0.0);
-    }
-    for (j = 0; j < r; ++j) {
-        mu[j] = lam[j] * cbar[j] / c;
-    }
-    return c;
-}
-
 int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE])
 {

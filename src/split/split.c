@@ -209,29 +209,7 @@ static int n_ok(uint8_t n)
     return n >= 4u && n <= MTT_MAX_STATE;
 }
 
-/* ---- stacking and prediction ---- */
-
-int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
-                    mtt_split_cov Ps)
-{
-    int i, k;
-    if (!n_ok(n)) {
-        return -1;
-    }
-    /* Both targets at the one estimate, fully correlated ([S3] eq. 5, 11). */
-    for (i = 0; i < n; ++i) {
-        xs[i] = x[i];
-        xs[n + i] = x[i];
-        for (k = 0; k < n; ++k) {
-            const mtt_real v = MTT_R(0.5) * (P[i][k] + P[k][i]);
-            Ps[i][k] = v;
-            Ps[i][n + k] = v;
-            Ps[n + i][k] = v;
-            Ps[n + i][n + k] = v;
-        }
-    }
-    return 0;
-}
+/* ---- stacked prediction ---- */
 
 int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE],
                       mtt_real Q[][MTT_MAX_STATE], const mtt_split_state xs, mtt_split_cov Ps,
@@ -447,46 +425,8 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
     as->m = m;
     as->n = n;
     as->parametric = (uint8_t)((lam > MTT_R(0.0)) ? 1u : 0u);
-    as->joint = 0u;
     as->pd = pd;
     as->scale = (lam > MTT_R(0.0)) ? MTT_R(1.0) / lam : vg;
-    return 0;
-}
-
-int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_real R[3])
-{
-    const int n = (int)as->n;
-    const int sel[QMAX] = {0, 1, n, n + 1};
-    mtt_cov S, L; /* QMAX x QMAX used */
-    mtt_state d;
-    mtt_real Si[QMAX][QMAX], det = MTT_R(1.0);
-    int a, b;
-    /* S^s = H^s Pps H^s' + R^s: the joint innovation covariance of the two
-     * targets' measurements, with the cross block H P_12 H'. */
-    for (a = 0; a < QMAX; ++a) {
-        for (b = 0; b < QMAX; ++b) {
-            S[a][b] = MTT_R(0.5) * (Pps[sel[a]][sel[b]] + Pps[sel[b]][sel[a]]);
-        }
-    }
-    for (a = 0; a < QMAX; a += 2) {
-        S[a][a] += R[0];
-        S[a][a + 1] += R[1];
-        S[a + 1][a] += R[1];
-        S[a + 1][a + 1] += R[2];
-    }
-    if (mtt_ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, L, Si) != 0) {
-        return -1;
-    }
-    for (a = 0; a < QMAX; ++a) {
-        det *= d[a];
-        for (b = 0; b < QMAX; ++b) {
-            as->s4i[a][b] = Si[a][b];
-        }
-    }
-    /* PD^2 scale^2 / ((2 pi)^2 sqrt(det S^s)) */
-    as->g4 = as->pd * as->pd * as->scale * as->scale /
-             (MTT_R(4.0) * MTT_PI * MTT_PI * mtt_sqrt(det));
-    as->joint = 1u;
     return 0;
 }
 
@@ -503,25 +443,7 @@ mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j
     if (j1 < -1 || j2 < -1 || j1 >= m || j2 >= m || (j1 >= 0 && j1 == j2)) {
         return MTT_R(0.0); /* not an event: one measurement, two targets */
     }
-    if (j1 >= 0 && j2 >= 0 && as->joint) {
-        /* both detected, coupled: the joint density N([z_j1; z_j2]; zhat^s,
-         * S^s) in place of the product of the marginals (gates as before) */
-        mtt_real nu4[QMAX], q = MTT_R(0.0);
-        int a, b;
-        if (!(as->a[0][j1] > MTT_R(0.0)) || !(as->a[1][j2] > MTT_R(0.0))) {
-            return MTT_R(0.0);
-        }
-        nu4[0] = as->nu[0][j1][0];
-        nu4[1] = as->nu[0][j1][1];
-        nu4[2] = as->nu[1][j2][0];
-        nu4[3] = as->nu[1][j2][1];
-        for (a = 0; a < QMAX; ++a) {
-            for (b = 0; b < QMAX; ++b) {
-                q += nu4[a] * as->s4i[a][b] * nu4[b];
-            }
-        }
-        w = as->g4 * mtt_exp(MTT_R(-0.5) * q) / m2;
-    } else if (j1 >= 0 && j2 >= 0) {
+    if (j1 >= 0 && j2 >= 0) {
         w = as->a[0][j1] * as->a[1][j2] / m2;
     } else if (j1 >= 0) {
         w = as->a[0][j1] * as->b[1] / m1;
