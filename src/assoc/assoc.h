@@ -47,10 +47,6 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
  * ALGORITHMS.md §10.1; 1: smaller rank, then lower index, ALGORITHMS.md §7.4). */
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best);
-/* Amplitude likelihood ratio of amplitude a against the background law
- * (ALGORITHMS.md §7.6): g = exp(a rho/(1+rho))/(1+rho) (exponent clamped at
- * 30), returned as g/(1 - eta + eta g); rho = 0 gives 1, eta = 0 the plain g. */
-mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a);
 /* The `ihpda` association: each valid track selects on its full gate
  * (tie rule 1); the selected measurements are marked used. */
 void mtt_ihpda_select_frame(mtt_tracker *trk);

@@ -126,12 +126,7 @@ mtt_status mtt_params_default(mtt_params *p)
     p->snr_rho = PDEF(snr_rho, 0.0);
     p->amplitude_eta = PDEF(amplitude_eta, 0.5);
 #if MTT_WITH_CONTEST
-    /* ALGORITHMS.md §2.1 [CHOICE, measured in docs/RESULTS.md] */
-    p->adapt_s_min = MTT_R(0.01);
-    p->adapt_index = MTT_R(1.0);
-    p->adapt_memory = MTT_R(0.8);
-    p->adapt_gain = MTT_R(2.0);
-    p->adapt_reset_nis = MTT_R(8.0);
+    mtt_adapt_defaults(p); /* ALGORITHMS.md §2.1 */
 #endif
     p->markov_p11 = PDEF(markov_p11, 0.98);
     p->markov_p21 = PDEF(markov_p21, 0.0);
