@@ -1,6 +1,6 @@
 /* test_imm.c - IMM arithmetic of one track (ALGORITHMS.md §14.1, §14.2):
  * mixing, mode-probability update, combination, the model-mixed likelihood
- * and the split of an association result into per-model quantities.
+ * and the apportionment of an association result into per-model quantities.
  * Expected numbers: docs/TEST_VECTORS.md TV14, and the output of
  * `python3 scripts/imm_vectors.py` (sections "IMM mixing", "IMM-IPDA",
  * "IMM-IHPDA"), which derives them independently (numpy, the textbook
@@ -225,13 +225,13 @@ static void test_mix_cv_ca(void)
     TV_ASSERT_MAT4(Pc_e, Pc);
 }
 
-/* ---- association split: scripts/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
+/* ---- association apportioned over the models: scripts/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
 
 static const mtt_real g_cb[2] = {MTT_R(0.78), MTT_R(0.22)};
 static const mtt_real g_pd[2] = {MTT_R(0.9), MTT_R(0.9)};
 #define G_PG MTT_R(0.99)
 
-static void test_ipda_split(void)
+static void test_ipda_apportion(void)
 {
     /* p[i][j] = p_i^j, gate-normalised likelihood of measurement i, model j */
     static const mtt_real p[3][2] = {{MTT_R(0.02), MTT_R(0.01)},
@@ -261,7 +261,7 @@ static void test_ipda_split(void)
             e[i][j] = g_pd[j] * p[i][j];
         }
     }
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(2, g_cb, 3, beta0, beta, e0, e, mu, b0j, bj));
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(2, g_cb, 3, beta0, beta, e0, e, mu, b0j, bj));
     /* The textbook IMM-PDA: μ_j = c̄_j Λ_j / c, β^j from model j alone. */
     TV_ASSERT_VEC(mu_e, mu, 2);
     TV_ASSERT_VEC(b0_e, b0j, 2);
@@ -270,7 +270,7 @@ static void test_ipda_split(void)
     }
 }
 
-static void test_ihpda_split(void)
+static void test_ihpda_apportion(void)
 {
     static const mtt_real ps[2] = {MTT_R(0.02), MTT_R(0.01)};
     static const double mu_e[2] = {0.8655264904, 0.1344735096};
@@ -299,7 +299,7 @@ static void test_ihpda_split(void)
     TV_ASSERT_REAL(28.60318, L[0]); /* = Σ_j c̄_j L^j */
     e[0][0] = MTT_R(28.512);
     e[0][1] = MTT_R(14.256);
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(2, g_cb, 1, MTT_R(1.0) - beta[0], beta, e0, e, mu, b0j, bj));
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(2, g_cb, 1, MTT_R(1.0) - beta[0], beta, e0, e, mu, b0j, bj));
     TV_ASSERT_VEC(mu_e, mu, 2);
     TV_ASSERT_REAL(bj_e[0], bj[0][0]);
     TV_ASSERT_REAL(bj_e[1], bj[1][0]);
@@ -367,7 +367,7 @@ static void test_identical_cv_models(void)
         for (j = 0; j < R && f == 0; ++j) {
             /* Mixing equal estimates is exact: x0_j = x_j, P0_j = P_j bit for
              * bit (after the first update the models' estimates differ by
-             * the round-off of their split betas). */
+             * the round-off of their apportioned betas). */
             TEST_ASSERT_EQUAL_MEMORY(g_x[j], g_x0[j], 4 * sizeof(mtt_real));
             for (i = 0; i < 4; ++i) {
                 TEST_ASSERT_EQUAL_MEMORY(g_P[j][i], g_P0[j][i], 4 * sizeof(mtt_real));
@@ -390,7 +390,7 @@ static void test_identical_cv_models(void)
                 e[i][j] = pd * pj;
             }
             e0[j] = MTT_R(1.0) - pd * pg;
-            /* park the prediction in g_x0 / g_P0 until the split is known */
+            /* park the prediction in g_x0 / g_P0 until the apportionment is known */
             memcpy(g_x0[j], xpj, sizeof xpj);
             for (i = 0; i < 4; ++i) {
                 memcpy(g_P0[j][i], Ppj[i], sizeof Ppj[i]);
@@ -407,7 +407,7 @@ static void test_identical_cv_models(void)
         }
         tv_ipda_betas(pd, pg, pm, lamc, M, b_imm, &b0_imm, &L_imm);
         TV_ASSERT_REAL(L, L_imm);
-        TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(R, cbar, M, b0_imm, b_imm, e0, e, mu, b0j, bj));
+        TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(R, cbar, M, b0_imm, b_imm, e0, e, mu, b0j, bj));
         for (j = 0; j < R; ++j) {
             mtt_real Kj[MTT_MAX_STATE][2], nuj[M][2];
             mtt_cov Ppj, Pj;
@@ -483,8 +483,8 @@ int main(void)
     RUN_TEST(test_tv14_combine);
     RUN_TEST(test_bad_arguments);
     RUN_TEST(test_mix_cv_ca);
-    RUN_TEST(test_ipda_split);
-    RUN_TEST(test_ihpda_split);
+    RUN_TEST(test_ipda_apportion);
+    RUN_TEST(test_ihpda_apportion);
     RUN_TEST(test_identical_cv_models);
     RUN_TEST(test_combine_equal_exact);
 #else

@@ -52,7 +52,7 @@ static void jpda_cluster(mtt_tracker *trk, uint16_t c, uint8_t how)
         if (how == MTT_ASSOCIATE_NNJPDA) {
             mtt_nnjpda_cluster(trk, c);
         } else if (how == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
-            mtt_adaptive_split(trk, c);
+            mtt_adaptive_share(trk, c);
         }
         break;
     }

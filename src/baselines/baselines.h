@@ -42,7 +42,7 @@ void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c);
 /* ---- jpda_adaptive.c: adaptive JPDA (ALGORITHMS.md §13.7) ---- */
 /* Before gating: tf.shrink = 1 for tracks that overlap another track. */
 void mtt_adaptive_gates(mtt_tracker *trk);
-/* After the JPDA betas of cluster c: equal split for shared measurements. */
-void mtt_adaptive_split(mtt_tracker *trk, uint16_t c);
+/* After the JPDA betas of cluster c: equal shares of the shared measurements. */
+void mtt_adaptive_share(mtt_tracker *trk, uint16_t c);
 
 #endif /* MTT_BASELINES_H */

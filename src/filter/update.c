@@ -116,7 +116,7 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
 #if MTT_WITH_IMM
 /* IMM track (ALGORITHMS.md §14.2): the mode's result -- the assigned pair
  * with beta_s and L_s (ONE), or the beta row, beta_0 and tf.ex_post (PDA) --
- * split over the models; existence as the mode gives it, with the IHPDA
+ * apportioned over the models; existence as the mode gives it, with the IHPDA
  * modes' L mixed over the models' own gates (mtt_imm_exist_L). */
 static void update_imm(mtt_tracker *trk, uint16_t ti, uint8_t kind)
 {

@@ -34,7 +34,7 @@ int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
  * Every association mode runs on (PD*, p*) in place of (PD, p). */
 mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[], const mtt_real p[],
                           mtt_real *pd_mix);
-/* Split a track-level association result (β_0, β_i of m measurements,
+/* Apportion a track-level association result (β_0, β_i of m measurements,
  * conditioned on existence) into mode probabilities μ_j and per-model
  * association probabilities beta0_j[j], beta_j[j][i]:
  *   P(θ_0, M_j) = β_0 c̄_j e0[j] / Σ_k c̄_k e0[k]
@@ -43,7 +43,7 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
  * with e0[j] = 1 - PD_j PG, e[i][j] = PD_j p_i^j for the PDA modes, and
  * e0[j] = C^j, e[s][j] = A^j of the selected measurement (m = 1) for the
  * IHPDA modes.  Returns 0 or -1 (r or m out of range). */
-int mtt_imm_split(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
+int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED]);
 /* motion_ca.c: nearly constant acceleration, [x y vx vy ax ay], white-noise
