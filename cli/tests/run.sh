@@ -163,7 +163,7 @@ list_settings)
     stdout_has "| \`terminate_threshold\` | number | in [0, 1); below confirm_threshold | 0.01 | "
     stdout_has "| \`initial_tracks\` | list | "
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 46 ] || fail "expected 46 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 49 ] || fail "expected 49 key rows"
     ;;
 version)
     run --version

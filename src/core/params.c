@@ -165,6 +165,11 @@ mtt_status mtt_params_default(mtt_params *p)
     p->split_dv = PDEF(split_dv, 0.0);
 #if MTT_WITH_SPLIT
     p->split_confirm = PDEF(split_confirm, 0.97);
+    /* [CHOICE, measured on the seeds 1000+ of split_fast.json,
+     * crossing3.json and formations.json, docs/RESULTS.md "Split targets"] */
+    p->split_decide = PDEF(split_decide, 0.9);
+    p->split_provisional_exist = PDEF(split_provisional_exist, 0.6);
+    p->split_provisional_scans = PDEF(split_provisional_scans, 3.0);
     p->split_across = 1;
     p->split_decouple_r = 0;
     p->split_known_speed = 0;

@@ -80,6 +80,12 @@ extern const char *const mtt_model_names[3];
          "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)") \
     REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                           \
          "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
+    REAL("split_decide", split_decide, 1, 0.0, 1.0, PF_OPEN_LO, NULL,                             \
+         "with `split`: a decoupled split ([S3] eq. 27) becomes two tracks when the split modes' probability μ_5 + μ_6 after the update is at least this; 0.9 measured on the seeds 1000+ (0.5 decoupled clutter-driven splits in crossing3, §14.3)") \
+    REAL("split_provisional_exist", split_provisional_exist, 1, 0.0, 1.0, 0, NULL,                \
+         "with `split_known_speed`: a split-off track whose existence falls below this in its first split_provisional_scans scans is deleted (a true child once detected again stays above 0.6 through a miss at PD 0.9, a clutter-driven one falls below in 1 or 2 scans; §14.3)") \
+    REAL("split_provisional_scans", split_provisional_scans, 1, 0.0, 1000.0, 0, NULL,             \
+         "with `split_known_speed`: the scans of a split-off track's age (a whole number) in which split_provisional_exist applies (§14.3)") \
     FLAG("split_across", split_across,                                                            \
          "with `split`: true: the split's velocity change (split_dv) is across the course only, the \"just split\" model's gate is widened across it; false: in every direction (§14.3)") \
     FLAG("split_known_speed", split_known_speed,                                                  \
@@ -203,6 +209,9 @@ extern const char *const mtt_model_names[3];
 #define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_decide MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_provisional_exist MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_provisional_scans MTT_FX_RATIO_FRAC
 #endif
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */
