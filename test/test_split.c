@@ -35,7 +35,7 @@ static const mtt_real XPS[MTT_SPLIT_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(1
                                 MTT_R(112.0), MTT_R(47.0), MTT_R(12.0), MTT_R(-1.0)};
 static mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
                                   {MTT_R(106.0), MTT_R(52.0)}, {MTT_R(140.0), MTT_R(80.0)}};
-/* the split arithmetic's work matrices (the caller's, src/split.c) */
+/* the split arithmetic's work matrices (the caller's, src/split/split.c) */
 static mtt_split_work wk;
 #define PD6 MTT_R(0.9)
 #define PG6 MTT_R(0.99)
