@@ -69,17 +69,11 @@ static int inv_spd(int q, mtt_cov S, mtt_cov L, mtt_real Si[][QMAX])
     return 0;
 }
 
-/* 2x2 innovation covariance of the target whose position is at offset o
- * of the state: S = Pp_pos + R (sym: s11, s12, s22), S^-1 and det S.
- * Returns -1 when det S is not positive and finite. */
-static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                  mtt_real *det)
+/* Inverse Si and determinant of the symmetric 2x2 S (s11, s12, s22).
+ * Returns -1 (nothing written) when det S is not positive and finite. */
+static int inv2(const mtt_real S[3], mtt_real Si[3], mtt_real *det)
 {
-    mtt_real d;
-    S[0] = Pp[o][o] + R[0];
-    S[1] = MTT_R(0.5) * (Pp[o][o + 1] + Pp[o + 1][o]) + R[1];
-    S[2] = Pp[o + 1][o + 1] + R[2];
-    d = S[0] * S[2] - S[1] * S[1];
+    const mtt_real d = S[0] * S[2] - S[1] * S[1];
     if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
         return -1;
     }
@@ -88,6 +82,18 @@ static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], 
     Si[1] = -S[1] / d;
     Si[2] = S[0] / d;
     return 0;
+}
+
+/* 2x2 innovation covariance of the target whose position is at offset o
+ * of the state: S = Pp_pos + R (sym: s11, s12, s22), S^-1 and det S.
+ * Returns -1 when det S is not positive and finite. */
+static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                  mtt_real *det)
+{
+    S[0] = Pp[o][o] + R[0];
+    S[1] = MTT_R(0.5) * (Pp[o][o + 1] + Pp[o + 1][o]) + R[1];
+    S[2] = Pp[o + 1][o + 1] + R[2];
+    return inv2(S, Si, det);
 }
 
 static mtt_real quad2(const mtt_real Si[3], mtt_real a, mtt_real b)
@@ -746,13 +752,9 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
     sum[0] = S1[0] + S2[0];
     sum[1] = S1[1] + S2[1];
     sum[2] = S1[2] + S2[2];
-    det = sum[0] * sum[2] - sum[1] * sum[1];
-    if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
+    if (inv2(sum, Si, &det) != 0) {
         return -1;
     }
-    Si[0] = sum[2] / det;
-    Si[1] = -sum[1] / det;
-    Si[2] = sum[0] / det;
     *d2 = quad2(Si, xps[0] - xps[n], xps[1] - xps[n + 1]);
     return (*d2 >= c) ? 1 : 0;
 }
