@@ -75,11 +75,17 @@ void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_
 mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy);
 /* The model-mixed likelihood p* of a measurement (ALGORITHMS.md §14.2). */
 mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy);
-/* Split the track's association result (m pairs from `first`, their beta,
+/* Apportion the track's association result (m pairs from `first`, their beta,
  * beta0) into mode probabilities and per-model betas, update every model,
  * combine into t.x, t.P (ALGORITHMS.md §14.2). */
 void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_t m,
                           const mtt_real beta[], mtt_real beta0);
+/* The update stage of IMM track ti (update.c, ALGORITHMS.md §14.2): the
+ * mode's result -- the assigned pair with beta_s and L_s (kind ONE), or
+ * the beta row, beta_0 and tf.ex_post (PDA) -- apportioned over the
+ * models; existence as the mode gives it, with the IHPDA modes' L mixed
+ * over the models' own gates (mtt_imm_exist_L). */
+void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind);
 /* Existence L of an IHPDA-mode IMM track with selected pair a: the
  * c̄-mixture of every model's own-gate IHPDA L (ALGORITHMS.md §14.2). */
 mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a);

@@ -284,4 +284,42 @@ void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     }
 }
 
+void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real *beta = trk->row.beta;
+    uint16_t j, b = 0;
+    if (kind == MTT_UPDATE_ONE) {
+        if (tf->assigned < 0) {
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+            t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+            t->meas = -1;
+        } else {
+            const mtt_pair *pp = &trk->pairs[tf->assigned];
+            const mtt_real L = mtt_imm_exist_L(trk, ti, (uint16_t)tf->assigned);
+            beta[0] = pp->beta;
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
+            t->existence = mtt_existence_update(tf->ex_pred, L);
+            t->meas = (int32_t)trk->meas[pp->meas].src;
+        }
+        return;
+    }
+    if (tf->pair_count == 0u) {
+        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+        t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+        t->meas = -1;
+        return;
+    }
+    for (j = 0; j < tf->pair_count; ++j) {
+        beta[j] = trk->pairs[tf->pair_first + j].beta;
+        if (beta[j] > beta[b]) {
+            b = j;
+        }
+    }
+    mtt_imm_update_track(trk, ti, tf->pair_first, tf->pair_count, beta, tf->beta0);
+    t->existence = tf->ex_post;
+    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
+}
+
 #endif /* MTT_WITH_IMM */
