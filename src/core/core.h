@@ -1,6 +1,8 @@
-/* core.h - the tracker core: sorting, parameters, existence, initiation,
- * merging, measurement selection and the track table.  Not installed; not part
- * of the API.  Included through mtt_internal.h.  Sections "§N" are those of
+/* core.h - the tracker core: sorting, parameters, existence (ALGORITHMS.md
+ * §11), initiation and merging (§12.1 to §12.3), measurement selection
+ * (§15) and the track table (§12.4); tracker.c, the pipeline's sequence
+ * (§15), has no internal functions.  Not installed; not part of the API.
+ * Included through mtt_internal.h.  Sections "§N" are those of
  * docs/ALGORITHMS.md. */
 #ifndef MTT_CORE_H
 #define MTT_CORE_H
