@@ -1,6 +1,7 @@
 /* fx.h - the fixed-point kernels of src/fixed/ shared by the stages (fixed
- * point only, docs/FIXED_POINT.md; the Q formats of ALGORITHMS.md §16).  Not installed; not part of the API.  Included through
- * mtt_internal.h.  Sections "§N" are those of docs/ALGORITHMS.md. */
+ * point only, docs/FIXED_POINT.md; the numerics of ALGORITHMS.md §16).
+ * Not installed; not part of the API.  Included through mtt_internal.h.
+ * Sections "§N" are those of docs/ALGORITHMS.md. */
 #ifndef MTT_FIXED_FX_H
 #define MTT_FIXED_FX_H
 
