@@ -1,5 +1,5 @@
 /* test_adapt.c - the noise-adaptive process noise of confirmed lm-ihpda
- * contest tracks (ALGORITHMS.md §2.1, src/adapt_q.c).
+ * contest tracks (ALGORITHMS.md §2.1, src/contest/adapt_q.c).
  *
  * A seeded track on a noise-free straight target: every innovation is 0,
  * the NIS average falls as alpha^k and s as exp(kappa (r_k - 1)), reaching

@@ -1,5 +1,5 @@
 /* test_fixed.c - the integer kernels of the fixed-point build
- * (include/mtt/fixed.h, src/fx_math.c; docs/FIXED_POINT.md) against exact
+ * (include/mtt/fixed.h, src/fixed/fx_math.c; docs/FIXED_POINT.md) against exact
  * integer references and double references, densely or exhaustively, with
  * the error bounds that fixed.h states, and saturation (never wrap) at the
  * ends of every range.  The kernels are compiled into this test with

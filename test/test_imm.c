@@ -1,6 +1,6 @@
 /* test_imm.c - IMM arithmetic of one track (ALGORITHMS.md §14.1, §14.2):
  * mixing, mode-probability update, combination, the model-mixed likelihood
- * and the split of an association result into per-model quantities.
+ * and the apportionment of an association result into per-model quantities.
  * Expected numbers: docs/TEST_VECTORS.md TV14, and the output of
  * `python3 tools/ci/imm_vectors.py` (sections "IMM mixing", "IMM-IPDA",
  * "IMM-IHPDA"), which derives them independently (numpy, the textbook
@@ -121,7 +121,7 @@ static void test_tv14_mixing(void)
     TV_ASSERT_SYM4(g_P0[1]);
 }
 
-static void test_tv14_mode_update_and_combine(void)
+static void test_tv14_combine(void)
 {
     static const double mu_e[2] = {0.5416666667, 0.4583333333};
     static const double xc_e[4] = {100.4583333, 49.54166667, 10.91666667, -4.541666667};
@@ -130,13 +130,12 @@ static void test_tv14_mode_update_and_combine(void)
         -0.2482638889, 3.164930556,   -0.4965277778, -0.2482638889,
         0.4965277778,  -0.4965277778, 2.909722222,   0.4965277778,
         0.2482638889,  -0.2482638889, 0.4965277778,  2.164930556};
-    const mtt_real lam[2] = {MTT_R(0.01), MTT_R(0.03)};
-    mtt_real mu[2], cbar[2], muk[2], xc[4], Pc[4][MTT_MAX_STATE];
+    mtt_real mu[2], muk[2], xc[4], Pc[4][MTT_MAX_STATE];
     tv14_inputs(mu);
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, g_Pi, mu, cbar, g_mix));
-    TV_ASSERT_REAL(0.0144, mtt_imm_mode_update(2, cbar, lam, muk));
-    TV_ASSERT_VEC(mu_e, muk, 2);
-    /* TV14's combination example: the inputs as if they were the updates. */
+    /* TV14's mode update (mu_j = Lambda_j cbar_j / c, lam = {0.01, 0.03}),
+     * then its combination example: the inputs as if they were the updates. */
+    muk[0] = (mtt_real)mu_e[0];
+    muk[1] = (mtt_real)mu_e[1];
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_combine(2, muk, g_x, g_P, xc, Pc));
     TV_ASSERT_VEC(xc_e, xc, 4);
     TV_ASSERT_MAT4(Pc_e, Pc);
@@ -155,10 +154,6 @@ static void test_bad_arguments(void)
     g_x0[0][0] = MTT_R(7.0);
     TEST_ASSERT_EQUAL_INT(-1, mtt_imm_mix(2, n_bad, g_mix, g_x, g_P, g_x0, g_P0));
     TEST_ASSERT_TRUE(g_x0[0][0] == MTT_R(7.0)); /* nothing written */
-    /* All likelihoods zero: no information, the prediction c̄ stands. */
-    TV_ASSERT_REAL(0.0, mtt_imm_mode_update(2, cbar, lam0, muk));
-    TV_ASSERT_REAL(0.78, muk[0]);
-    TV_ASSERT_REAL(0.22, muk[1]);
     /* r out of range: nothing read, PD* = p* = 0 */
     muk[0] = MTT_R(1.0);
     TV_ASSERT_REAL(0.0, mtt_imm_meas_mix(MTT_MAX_MODELS + 1, cbar, lam0, lam0, &muk[0]));
@@ -198,7 +193,6 @@ static void test_mix_cv_ca(void)
         5.429541539, -1.824587436, 5.261981455,  5.429541539, 18.73891887,  -5.58298096,
         6.545028373, -1.824587436, -5.58298096,  26.15131684};
     static const uint8_t n[2] = {4, 6};
-    const mtt_real lam[2] = {MTT_R(0.4), MTT_R(1.7)};
     mtt_real mu[2] = {MTT_R(0.7), MTT_R(0.3)}, cbar[2], muk[2], xc[4], Pc[4][MTT_MAX_STATE];
     int i, j;
     clear_all();
@@ -224,20 +218,20 @@ static void test_mix_cv_ca(void)
     /* The extras keep their own block exactly. */
     TEST_ASSERT_TRUE(g_P0[1][4][4] == g_P[1][4][4] && g_P0[1][4][5] == g_P[1][4][5] &&
                      g_P0[1][5][5] == g_P[1][5][5]);
-    TV_ASSERT_REAL(0.803, mtt_imm_mode_update(2, cbar, lam, muk));
-    TV_ASSERT_VEC(muk_e, muk, 2);
+    muk[0] = (mtt_real)muk_e[0]; /* the mode update with lam = {0.4, 1.7} */
+    muk[1] = (mtt_real)muk_e[1];
     TEST_ASSERT_EQUAL_INT(0, mtt_imm_combine(2, muk, g_x, g_P, xc, Pc));
     TV_ASSERT_VEC(xc_e, xc, 4);
     TV_ASSERT_MAT4(Pc_e, Pc);
 }
 
-/* ---- association split: tools/ci/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
+/* ---- association apportioned over the models: tools/ci/imm_vectors.py "IMM-IPDA", "IMM-IHPDA" ---- */
 
 static const mtt_real g_cb[2] = {MTT_R(0.78), MTT_R(0.22)};
 static const mtt_real g_pd[2] = {MTT_R(0.9), MTT_R(0.9)};
 #define G_PG MTT_R(0.99)
 
-static void test_ipda_split(void)
+static void test_ipda_apportion(void)
 {
     /* p[i][j] = p_i^j, gate-normalised likelihood of measurement i, model j */
     static const mtt_real p[3][2] = {{MTT_R(0.02), MTT_R(0.01)},
@@ -267,7 +261,7 @@ static void test_ipda_split(void)
             e[i][j] = g_pd[j] * p[i][j];
         }
     }
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(2, g_cb, 3, beta0, beta, e0, e, mu, b0j, bj));
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(2, g_cb, 3, beta0, beta, e0, e, mu, b0j, bj));
     /* The textbook IMM-PDA: μ_j = c̄_j Λ_j / c, β^j from model j alone. */
     TV_ASSERT_VEC(mu_e, mu, 2);
     TV_ASSERT_VEC(b0_e, b0j, 2);
@@ -276,7 +270,7 @@ static void test_ipda_split(void)
     }
 }
 
-static void test_ihpda_split(void)
+static void test_ihpda_apportion(void)
 {
     static const mtt_real ps[2] = {MTT_R(0.02), MTT_R(0.01)};
     static const double mu_e[2] = {0.8655264904, 0.1344735096};
@@ -305,7 +299,7 @@ static void test_ihpda_split(void)
     TV_ASSERT_REAL(28.60318, L[0]); /* = Σ_j c̄_j L^j */
     e[0][0] = MTT_R(28.512);
     e[0][1] = MTT_R(14.256);
-    TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(2, g_cb, 1, MTT_R(1.0) - beta[0], beta, e0, e, mu, b0j, bj));
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(2, g_cb, 1, MTT_R(1.0) - beta[0], beta, e0, e, mu, b0j, bj));
     TV_ASSERT_VEC(mu_e, mu, 2);
     TV_ASSERT_REAL(bj_e[0], bj[0][0]);
     TV_ASSERT_REAL(bj_e[1], bj[1][0]);
@@ -373,7 +367,7 @@ static void test_identical_cv_models(void)
         for (j = 0; j < R && f == 0; ++j) {
             /* Mixing equal estimates is exact: x0_j = x_j, P0_j = P_j bit for
              * bit (after the first update the models' estimates differ by
-             * the round-off of their split betas). */
+             * the round-off of their apportioned betas). */
             TEST_ASSERT_EQUAL_MEMORY(g_x[j], g_x0[j], 4 * sizeof(mtt_real));
             for (i = 0; i < 4; ++i) {
                 TEST_ASSERT_EQUAL_MEMORY(g_P[j][i], g_P0[j][i], 4 * sizeof(mtt_real));
@@ -396,7 +390,7 @@ static void test_identical_cv_models(void)
                 e[i][j] = pd * pj;
             }
             e0[j] = MTT_R(1.0) - pd * pg;
-            /* park the prediction in g_x0 / g_P0 until the split is known */
+            /* park the prediction in g_x0 / g_P0 until the apportionment is known */
             memcpy(g_x0[j], xpj, sizeof xpj);
             for (i = 0; i < 4; ++i) {
                 memcpy(g_P0[j][i], Ppj[i], sizeof Ppj[i]);
@@ -413,7 +407,7 @@ static void test_identical_cv_models(void)
         }
         tv_ipda_betas(pd, pg, pm, lamc, M, b_imm, &b0_imm, &L_imm);
         TV_ASSERT_REAL(L, L_imm);
-        TEST_ASSERT_EQUAL_INT(0, mtt_imm_split(R, cbar, M, b0_imm, b_imm, e0, e, mu, b0j, bj));
+        TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(R, cbar, M, b0_imm, b_imm, e0, e, mu, b0j, bj));
         for (j = 0; j < R; ++j) {
             mtt_real Kj[MTT_MAX_STATE][2], nuj[M][2];
             mtt_cov Ppj, Pj;
@@ -486,11 +480,11 @@ int main(void)
     UNITY_BEGIN();
 #if MTT_WITH_IMM
     RUN_TEST(test_tv14_mixing);
-    RUN_TEST(test_tv14_mode_update_and_combine);
+    RUN_TEST(test_tv14_combine);
     RUN_TEST(test_bad_arguments);
     RUN_TEST(test_mix_cv_ca);
-    RUN_TEST(test_ipda_split);
-    RUN_TEST(test_ihpda_split);
+    RUN_TEST(test_ipda_apportion);
+    RUN_TEST(test_ihpda_apportion);
     RUN_TEST(test_identical_cv_models);
     RUN_TEST(test_combine_equal_exact);
 #else

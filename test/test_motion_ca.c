@@ -29,45 +29,6 @@ static void test_ca_axis(void)
     }
 }
 
-static void test_ca_model(void)
-{
-    static const double Qe[36] = {
-        0.0046875, 0, 0.0234375, 0, 0.0625, 0, 0, 0.0046875, 0, 0.0234375, 0, 0.0625,
-        0.0234375, 0, 0.125, 0, 0.375, 0, 0, 0.0234375, 0, 0.125, 0, 0.375,
-        0.0625, 0, 0.375, 0, 1.5, 0, 0, 0.0625, 0, 0.375, 0, 1.5};
-    static const double Fx_e[6] = {85.5, -6.125, 152, 25.5, 4, -9};
-    const mtt_real x[6] = {MTT_R(10.0), MTT_R(-20.0), MTT_R(150.0), MTT_R(30.0), MTT_R(4.0), MTT_R(-9.0)};
-    mtt_real F[MTT_MAX_STATE][MTT_MAX_STATE], Q[MTT_MAX_STATE][MTT_MAX_STATE], Fx[6];
-    int i, j;
-    memset(F, 0x7f, sizeof F); /* garbage outside the 6x6 block is not read */
-    mtt_ca_model(MTT_R(0.5), MTT_R(3.0), F, Q);
-    for (i = 0; i < 6; ++i) {
-        Fx[i] = MTT_R(0.0);
-        for (j = 0; j < 6; ++j) {
-            Fx[i] += F[i][j] * x[j];
-            TV_ASSERT_REAL_MSG(Qe[6 * i + j], Q[i][j], "Q");
-            TEST_ASSERT_TRUE(Q[i][j] == Q[j][i]);
-        }
-    }
-    TV_ASSERT_VEC(Fx_e, Fx, 6);
-}
-
-/* q = 0: Q vanishes and F is the exact kinematics, the axes uncoupled. */
-static void test_ca_zero_noise(void)
-{
-    mtt_real F[MTT_MAX_STATE][MTT_MAX_STATE], Q[MTT_MAX_STATE][MTT_MAX_STATE];
-    int i, j;
-    mtt_ca_model(MTT_R(2.0), MTT_R(0.0), F, Q);
-    for (i = 0; i < 6; ++i) {
-        for (j = 0; j < 6; ++j) {
-            TEST_ASSERT_TRUE(Q[i][j] == MTT_R(0.0));
-        }
-    }
-    TV_ASSERT_REAL(2.0, F[0][2]);
-    TV_ASSERT_REAL(2.0, F[1][5]); /* y gains ay T^2 / 2 */
-    TV_ASSERT_REAL(0.0, F[0][5]);
-}
-
 /* A symmetric positive definite 6x6 covariance with every entry nonzero,
  * axes coupled (row-major). */
 static const double P6[36] = {
@@ -156,8 +117,6 @@ int main(void)
     UNITY_BEGIN();
 #if MTT_WITH_IMM
     RUN_TEST(test_ca_axis);
-    RUN_TEST(test_ca_model);
-    RUN_TEST(test_ca_zero_noise);
     RUN_TEST(test_ca_predict);
 #else
     RUN_TEST(test_ca_left_out);

@@ -46,7 +46,7 @@ static void test_table_lists_the_settings_keys(void)
 #endif
         , "split"
 #if MTT_WITH_SPLIT
-        , "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_across", "split_known_speed", "split_decouple_r"
+        , "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_decide", "split_provisional_exist", "split_provisional_scans", "split_across", "split_known_speed", "split_decouple_r"
 #endif
     };
     const mtt_param_info *info = NULL;

@@ -35,7 +35,7 @@ static const mtt_real XPS[MTT_SPLIT_STATE] = {MTT_R(100.0), MTT_R(50.0), MTT_R(1
                                 MTT_R(112.0), MTT_R(47.0), MTT_R(12.0), MTT_R(-1.0)};
 static mtt_real Z6[4][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(110.0), MTT_R(46.0)},
                                   {MTT_R(106.0), MTT_R(52.0)}, {MTT_R(140.0), MTT_R(80.0)}};
-/* the split arithmetic's work matrices (the caller's, src/split.c) */
+/* the split arithmetic's work matrices (the caller's, src/split/split.c) */
 static mtt_split_work wk;
 #define PD6 MTT_R(0.9)
 #define PG6 MTT_R(0.99)
@@ -63,21 +63,6 @@ static const struct { int j1, j2; double p; } ref6p_events[13] = {
     {2, 0, 0.08886381733},
     {2, 1, 0.2725064539},};
 static const double ref6p_lik = 763.8801917;
-static const struct { int j1, j2; double p; } ref6c_events[13] = {
-    {-1, -1, 0.001068787607},
-    {-1, 0, 0.006250105236},
-    {-1, 1, 0.01916633862},
-    {-1, 2, 0.008537256486},
-    {0, -1, 0.01761590894},
-    {0, 1, 0.4295626898},
-    {0, 2, 0.1486313572},
-    {1, -1, 0.004043847579},
-    {1, 0, 0.009854974251},
-    {1, 2, 0.0168734945},
-    {2, -1, 0.01237268488},
-    {2, 0, 0.05540742417},
-    {2, 1, 0.2706151308},};
-static const double ref6c_lik = 11.11633398;
 static const double ref6_V = 2177.036038;
 static const struct { int j1, j2; double p; } ref6_events[13] = {
     {-1, -1, 0.0009336180605},
@@ -181,6 +166,24 @@ static void assert_psd(mtt_split_cov P, int N)
 
 /* ---- stacking and prediction ---- */
 
+/* One estimate as a stacked state: [x; x], [[P, P], [P, P]] ([S3] eq. 5,
+ * 11), n = 4. */
+static void stack4(const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs, mtt_split_cov Ps)
+{
+    int i, k;
+    for (i = 0; i < 4; ++i) {
+        xs[i] = x[i];
+        xs[4 + i] = x[i];
+        for (k = 0; k < 4; ++k) {
+            const mtt_real v = MTT_R(0.5) * (P[i][k] + P[k][i]);
+            Ps[i][k] = v;
+            Ps[i][4 + k] = v;
+            Ps[4 + i][k] = v;
+            Ps[4 + i][4 + k] = v;
+        }
+    }
+}
+
 /* [x; x] with [[P, P], [P, P]]; its prediction with the CV model: each
  * half is the single-target prediction of kalman.c, the cross block is
  * F P F' (no Q: the process noises are independent). */
@@ -193,7 +196,7 @@ static void test_stack_predict(void)
     const mtt_real dt = MTT_R(0.5), sw = MTT_R(5.0);
     int i, k, l, h;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_stack(4, XP, P, xs, Ps));
+    stack4(XP, P, xs, Ps);
     memset(F, 0, sizeof F);
     for (i = 0; i < 4; ++i) {
         F[i][i] = MTT_R(1.0);
@@ -225,7 +228,6 @@ static void test_stack_predict(void)
         }
     }
     assert_psd(Pps, 8);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_stack(MTT_MAX_STATE + 1, XP, P, xs, Ps));
 }
 
 /* ---- model 5 ---- */
@@ -437,42 +439,6 @@ static void test_split_events_parametric(void)
     /* neither a clutter density nor a volume: refused */
     TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
                                                    MTT_R(0.0), &as));
-}
-
-/* The coupled option: two-detection events weigh the joint density with
- * the cross covariance; without cross covariance it is the product. */
-static void test_split_events_coupled(void)
-{
-    mtt_split_cov Pps;
-    mtt_split_assoc as, ap;
-    double sum = 0.0;
-    int e;
-    int16_t j1, j2;
-    prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
-                                                  (mtt_real)ref6_V, MTT_R(0.0), &as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_coupled(&as, Pps, R));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    for (e = 0; e < 13; ++e) {
-        const double p = (double)mtt_split_event_weight(&as, (int16_t)ref6c_events[e].j1,
-                                                        (int16_t)ref6c_events[e].j2) / (double)as.lik;
-        TV_ASSERT_REAL_MSG(ref6c_events[e].p, p, "P(theta)");
-        sum += p;
-    }
-    TV_ASSERT_REAL(1.0, sum);
-    TV_ASSERT_REAL(ref6c_lik, as.lik);
-    /* P_12 = 0: the joint density factors, the events are the product's */
-    prior_s(Pps, 0.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
-                                                  (mtt_real)ref6_V, MTT_R(0.0), &as));
-    ap = as;
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_coupled(&as, Pps, R));
-    for (j1 = -1; j1 < 4; ++j1) {
-        for (j2 = -1; j2 < 4; ++j2) {
-            TV_ASSERT_REAL_MSG(mtt_split_event_weight(&ap, j1, j2), mtt_split_event_weight(&as, j1, j2),
-                               "coupled weight without cross covariance");
-        }
-    }
 }
 
 static void test_split_update_reference(void)
@@ -759,7 +725,6 @@ int main(void)
     RUN_TEST(test_known_split_reference);
     RUN_TEST(test_split_events_reference);
     RUN_TEST(test_split_events_parametric);
-    RUN_TEST(test_split_events_coupled);
     RUN_TEST(test_split_update_reference);
     RUN_TEST(test_split_update_independent);
     RUN_TEST(test_split_no_measurement);

@@ -1,5 +1,5 @@
 /* test_split_tracker.c - split targets through mtt_tracker_step
- * (ALGORITHMS.md §14.3, src/split_track.c): a hand-built split (one seeded
+ * (ALGORITHMS.md §14.3, src/split/split_track.c): a hand-built split (one seeded
  * track, two diverging measurement streams) spawns exactly one child that
  * records its parent; a target that does not split never spawns; the
  * decoupling test at its threshold (d² = 9.2103 just above and just below),

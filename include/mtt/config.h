@@ -79,9 +79,9 @@
 #endif
 
 /* Interacting multiple models (ALGORITHMS.md §14).  MTT_WITH_IMM 1 builds
- * the IMM stages (src/imm.c) and the extra motion models (src/motion_ca.c,
- * src/motion_ct.c); 0 leaves them out, so a firmware build keeps one
- * 4-state CV filter per track, its .text and its RAM, and motion = imm
+ * the IMM stages (src/imm/imm.c) and the extra motion models
+ * (src/imm/motion_ca.c, src/imm/motion_ct.c); 0 leaves them out, so a
+ * firmware build keeps one 4-state CV filter per track, its .text and its RAM, and motion = imm
  * reports MTT_ERR_UNSUPPORTED.  MTT_MAX_MODELS bounds the models of one
  * IMM track (r). */
 #ifndef MTT_WITH_IMM
@@ -125,7 +125,7 @@
 #endif
 
 /* 1: gamma = -2 ln(1 - PG), the library's one logarithm (at init), by a
- * short series (src/gate.c) instead of libm's log: about 500 bytes less
+ * short series (src/assoc/gate.c) instead of libm's log: about 500 bytes less
  * .text on a firmware, gamma within a few ulp of libm's.  0: libm's log
  * (every host build, so host output is unchanged). */
 #ifndef MTT_SMALL_LOG
@@ -186,9 +186,9 @@
 #error "MTT_MAX_JPDA_EVENTS must be in [1, 65535]"
 #endif
 
-/* ==== Split targets (ALGORITHMS.md §14.3): src/split.c ====================
+/* ==== Split targets (ALGORITHMS.md §14.3): src/split/ =======================
  * MTT_WITH_SPLIT 1 builds the split-target models ("just split", "split"
- * with its coupled joint events, the decoupling test); 0 leaves them out
+ * with its joint events, the decoupling test); 0 leaves them out
  * (firmware).  MTT_MAX_SPLIT_MEAS bounds the validated measurements of one
  * split track (the union of its two targets' gates): the joint events are
  * the (m + 1)^2 pairs (measurement or none, per target), enumerated by
@@ -197,7 +197,7 @@
  * modes are modes of the IMM, so MTT_WITH_SPLIT follows MTT_WITH_IMM by
  * default (a firmware configuration, MTT_WITH_IMM 0, leaves both out).
  * MTT_MAX_SPLIT_TRACKS: tracks that carry the split modes at once (a pool
- * of stacked states in the tracker, src/split_track.c); a track whose split
+ * of stacked states in the tracker, src/split/split_track.c); a track whose split
  * probability is negligible needs none. */
 #ifndef MTT_WITH_SPLIT
 #define MTT_WITH_SPLIT MTT_WITH_IMM

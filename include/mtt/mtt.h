@@ -195,6 +195,9 @@ typedef struct mtt_params {
     mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std) */
 #if MTT_WITH_SPLIT
     mtt_real split_confirm;         /**< a split-off track's existence at or above: confirmed at once */
+    mtt_real split_decide;          /**< μ_5 + μ_6 at or above: a decoupled split is two tracks */
+    mtt_real split_provisional_exist; /**< split_known_speed: a split-off track below this existence ... */
+    mtt_real split_provisional_scans; /**< ... in its first this many scans is deleted */
     int split_across;               /**< nonzero: split_dv across the course only (ALGORITHMS.md §14.3) */
     int split_known_speed;          /**< nonzero: the child leaves at split_dv across the course
                                          (model 5's child half, the late split, the provisional

@@ -27,7 +27,7 @@ typedef struct mtt_track {
     uint8_t dead;        /* marked for removal in this frame (merged / numeric) */
 #if MTT_WITH_CONTEST
     /* lm-ihpda contest: the noise-adaptive process noise of a confirmed
-     * track (ALGORITHMS.md §2.1, src/adapt_q.c) */
+     * track (ALGORITHMS.md §2.1, src/contest/adapt_q.c) */
     mtt_real q_scale;    /* s: the track's Q is s times process_psd's, in [adapt_s_min, 1] */
     mtt_real nis_ratio;  /* fading average of NIS / its expectation, 1 at birth */
 #endif
@@ -39,7 +39,7 @@ typedef struct mtt_track {
     mtt_real Pm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
 #endif
 #if MTT_WITH_SPLIT
-    /* split = true (ALGORITHMS.md §14.3, src/split_track.c) */
+    /* split = true (ALGORITHMS.md §14.3, src/split/split_track.c) */
     mtt_real p_split;    /* μ("just split") + μ("split") after this frame */
     uint32_t parent;     /* id of the track this one split off from, MTT_NO_PARENT */
     uint8_t split_slot;  /* its stacked states in mtt_tracker.split, MTT_SPLIT_NONE */
@@ -101,14 +101,11 @@ typedef struct mtt_split_assoc {
     mtt_real beta0;                       /* P(theta_0): neither detected */
     mtt_real lik;                         /* Lambda_6 = c of eq. 14 over V^-m */
     mtt_real nu[2][MTT_MAX_SPLIT_MEAS][2]; /* z_j - zhat_t */
-    mtt_real s4i[4][4];                   /* coupled: (S^s)^-1 */
-    mtt_real g4;                          /* coupled: PD^2 scale^2 / ((2 pi)^2 sqrt det S^s) */
     mtt_real pd;
     mtt_real scale;                       /* V, or 1/lambda */
     uint16_t m;
     uint8_t n;
     uint8_t parametric;                   /* 1: known clutter density lambda */
-    uint8_t joint;                        /* 1: coupled two-detection density */
 } mtt_split_assoc;
 
 /** One track's split modes: mode probabilities μ_5 ("just split") and μ_6
@@ -120,7 +117,7 @@ typedef struct mtt_split_slot {
     uint8_t used;
 } mtt_split_slot;
 
-/** Work matrices of the split arithmetic (src/split.c), the caller's so
+/** Work matrices of the split arithmetic (src/split/split.c), the caller's so
  *  that the stack stays small on a target: a 12-state stacked filter's
  *  matrices are 576 bytes each in float. */
 typedef struct mtt_split_work {

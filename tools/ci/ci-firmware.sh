@@ -216,7 +216,7 @@ TIDY_CHECKS='-*,bugprone-*,cert-*,clang-analyzer-*,-bugprone-easily-swappable-pa
 TIDY_CONFIG='{CheckOptions: [{key: bugprone-signed-char-misuse.CharTypdefsToIgnore, value: int8_t}, {key: cert-str34-c.CharTypdefsToIgnore, value: int8_t}]}'
 run_clang_tidy() {
   local rc=0 f
-  for f in src/*.c; do
+  for f in src/*/*.c; do
     clang-tidy --quiet -checks="$TIDY_CHECKS" -config="$TIDY_CONFIG" -warnings-as-errors='*' "$f" -- \
       -std=c99 -Iinclude -Isrc "$@" 2>/dev/null || rc=1
   done

@@ -90,9 +90,6 @@ run_config() {
       # baseline-mode refusal case describe the default build, not this one.
       exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|docs\.settings_table|docs\.configuration)$'
       what="host-float-small: float, configs/firmware.h"
-      # src/contest.c is compiled in every build, but with MTT_WITH_CONTEST=0
-      # nothing calls it (MTT_CONTEST_ON is 0): not code of this configuration.
-      gcov_exclude=(--exclude '^src/contest\.c$')
       ;;
   esac
   log="$(mktemp "${TMPDIR:-/tmp}/mtt-cov.XXXXXX")"

@@ -20,7 +20,7 @@ CFLAGS=("${CPU[@]}" -std=c99 -Os -ffunction-sections -fdata-sections
         -Wall -Wextra -Wpedantic -Wconversion -Werror -Wno-type-limits
         -DMTT_FX_KERNELS -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/examples/firmware")
 
-"$CC" "${CFLAGS[@]}" -c "$ROOT/src/fx_math.c" -o "$OUT/fx_math.o"
+"$CC" "${CFLAGS[@]}" -c "$ROOT/src/fixed/fx_math.c" -o "$OUT/fx_math.o"
 echo "== .text per kernel (bytes, -Os, Thumb-1; tables are .rodata)"
 # hex() for mawk (no strtonum)
 HEX='function hex(s,  i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); ++i) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }'
@@ -46,7 +46,7 @@ echo "== the prediction stage per track (predict + innovation; instructions per 
 DEFS=("-DMTT_USER_CONFIG=\"$ROOT/configs/firmware.h\"") # the firmware configuration
 for build in float fixed; do
   if [[ "$build" == fixed ]]; then
-    extra=(-DMTT_REAL_FIXED "$ROOT/src/fx_cov.c" "$ROOT/src/fx_math.c")
+    extra=(-DMTT_REAL_FIXED "$ROOT/src/fixed/fx_cov.c" "$ROOT/src/fixed/fx_math.c")
   else
     extra=(-DMTT_SMALL_LOG=1)
   fi
@@ -54,7 +54,7 @@ for build in float fixed; do
     -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/examples/firmware" "${DEFS[@]}" \
     -specs=nano.specs -nostartfiles -Wl,--gc-sections -T"$ROOT/examples/firmware/mps2.ld" \
     "$ROOT/examples/firmware/startup.c" "$ROOT/examples/firmware/semihost.c" "$ROOT/examples/firmware/fmt.c" \
-    "$ROOT/tools/fw-measure/fx_stage_cost.c" "$ROOT/src/kalman.c" "$ROOT/src/motion_cv.c" "$ROOT/src/gate.c" "${extra[@]}" -lm \
+    "$ROOT/tools/fw-measure/fx_stage_cost.c" "$ROOT/src/filter/kalman.c" "$ROOT/src/filter/motion_cv.c" "$ROOT/src/assoc/gate.c" "${extra[@]}" -lm \
     -o "$OUT/stage-$build.elf"
   qemu-system-arm -machine mps2-an385 -semihosting-config enable=on,target=native \
     -nographic -monitor none -serial none -icount shift=0 -kernel "$OUT/stage-$build.elf" 2>&1 |

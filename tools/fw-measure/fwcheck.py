@@ -312,10 +312,12 @@ def address_taken(src_dir, names, src=None):
     for t in names:
         plain.setdefault(strip_clone(t.split(":")[-1]), []).append(t)
     taken = set()
-    for fn in sorted(os.listdir(src_dir)):
+    paths = sorted(os.path.join(d, f) for d, _, fs in os.walk(src_dir) for f in fs)
+    for path in paths:  # src/ has a directory per layer
+        fn = os.path.basename(path)
         if not fn.endswith(".c"):
             continue
-        with open(os.path.join(src_dir, fn)) as f:
+        with open(path) as f:
             text = f.read()
         text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
         text = re.sub(r"//[^\n]*", " ", text)

@@ -5,14 +5,14 @@
  * The text names every member of mtt_params (designated initializers), so
  * the target's compiler lays it out: the host's layout (pointer size, enum
  * size) never matters.  The members come from the library's table of
- * settings keys (src/params_table.h, the one list of them) plus the members
+ * settings keys (src/core/params_table.h, the one list of them) plus the members
  * that are not keys in this build.  Values are exact: integers in the
  * fixed-point build, hexadecimal floating constants otherwise. */
 #include "mtt_io.h"
 
 #include <stdio.h>
 
-#include "params_table.h"
+#include "core/params_table.h"
 
 static void put_real(FILE *f, mtt_real v)
 {

@@ -164,7 +164,7 @@ list_settings)
     stdout_has "| \`initial_tracks\` | list | "
     stdout_has " | probability of detection PD | sensor |"
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 46 ] || fail "expected 46 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 49 ] || fail "expected 49 key rows"
     ;;
 version)
     run --version

@@ -19,6 +19,28 @@
 
 #if MTT_WITH_CONTEST
 
+void mtt_adapt_defaults(mtt_params *p)
+{
+    /* ALGORITHMS.md §2.1 [CHOICE, measured in docs/RESULTS.md] */
+    p->adapt_s_min = MTT_R(0.01);
+    p->adapt_index = MTT_R(1.0);
+    p->adapt_memory = MTT_R(0.8);
+    p->adapt_gain = MTT_R(2.0);
+    p->adapt_reset_nis = MTT_R(8.0);
+}
+
+void mtt_adapt_init(mtt_tracker *trk)
+{
+    trk->q_floor = MTT_R(1.0); /* no interval yet: the configured level (ALGORITHMS.md §2.1) */
+    trk->nis_mean = mtt_adapt_nis_mean(trk->gamma, trk->par.pg);
+}
+
+void mtt_adapt_track_init(mtt_track *t)
+{
+    t->q_scale = MTT_R(1.0);
+    t->nis_ratio = MTT_R(1.0);
+}
+
 void mtt_adapt_predict(mtt_real dt, mtt_cov Q, mtt_real s, const mtt_state x, mtt_cov P,
                        mtt_state xp, mtt_cov Pp)
 {

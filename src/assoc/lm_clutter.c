@@ -53,10 +53,8 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             mtt_pair *pp = &pairs[k];
 #if MTT_WITH_CONTEST
-            const mtt_mstore *ms = &trk->meas[pp->meas];
-            if (amp && ms->has_amp) {
-                pp->g = mtt_amp_ratio(trk->par.snr_rho, trk->par.amplitude_eta, ms->amp);
-                pp->p *= pp->g;
+            if (amp) {
+                mtt_contest_amp_pair(trk, pp); /* p_j g_j (ALGORITHMS.md §7.6) */
             }
 #endif
             pp->lam = lam;

@@ -52,7 +52,7 @@ static void jpda_cluster(mtt_tracker *trk, uint16_t c, uint8_t how)
         if (how == MTT_ASSOCIATE_NNJPDA) {
             mtt_nnjpda_cluster(trk, c);
         } else if (how == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
-            mtt_adaptive_split(trk, c);
+            mtt_adaptive_share(trk, c);
         }
         break;
     }
@@ -117,9 +117,11 @@ void mtt_associate_frame(mtt_tracker *trk)
         for (k = 0; k < trk->n_clusters; ++k) {
             mtt_mmr_cluster(trk, k, 1);
         }
+#if MTT_WITH_CONTEST
         if (MTT_CONTEST_ON(trk)) {
             mtt_contest_frame(trk); /* lm_ihpda_variant contest (§10.4) */
         }
+#endif
         mtt_ihpda_final_frame(trk);
         break;
     case MTT_ASSOCIATE_SELECT: /* ihpda (§7.4) */

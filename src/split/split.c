@@ -69,17 +69,11 @@ static int inv_spd(int q, mtt_cov S, mtt_cov L, mtt_real Si[][QMAX])
     return 0;
 }
 
-/* 2x2 innovation covariance of the target whose position is at offset o
- * of the state: S = Pp_pos + R (sym: s11, s12, s22), S^-1 and det S.
- * Returns -1 when det S is not positive and finite. */
-static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
-                  mtt_real *det)
+/* Inverse Si and determinant of the symmetric 2x2 S (s11, s12, s22).
+ * Returns -1 (nothing written) when det S is not positive and finite. */
+static int inv2(const mtt_real S[3], mtt_real Si[3], mtt_real *det)
 {
-    mtt_real d;
-    S[0] = Pp[o][o] + R[0];
-    S[1] = MTT_R(0.5) * (Pp[o][o + 1] + Pp[o + 1][o]) + R[1];
-    S[2] = Pp[o + 1][o + 1] + R[2];
-    d = S[0] * S[2] - S[1] * S[1];
+    const mtt_real d = S[0] * S[2] - S[1] * S[1];
     if (!(d > MTT_R(0.0)) || !mtt_isfinite(d)) {
         return -1;
     }
@@ -88,6 +82,18 @@ static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], 
     Si[1] = -S[1] / d;
     Si[2] = S[0] / d;
     return 0;
+}
+
+/* 2x2 innovation covariance of the target whose position is at offset o
+ * of the state: S = Pp_pos + R (sym: s11, s12, s22), S^-1 and det S.
+ * Returns -1 when det S is not positive and finite. */
+static int innov2(mtt_real Pp[][NS], int o, const mtt_real R[3], mtt_real S[3], mtt_real Si[3],
+                  mtt_real *det)
+{
+    S[0] = Pp[o][o] + R[0];
+    S[1] = MTT_R(0.5) * (Pp[o][o + 1] + Pp[o + 1][o]) + R[1];
+    S[2] = Pp[o + 1][o + 1] + R[2];
+    return inv2(S, Si, det);
 }
 
 static mtt_real quad2(const mtt_real Si[3], mtt_real a, mtt_real b)
@@ -209,29 +215,7 @@ static int n_ok(uint8_t n)
     return n >= 4u && n <= MTT_MAX_STATE;
 }
 
-/* ---- stacking and prediction ---- */
-
-int mtt_split_stack(uint8_t n, const mtt_real x[], mtt_real P[][MTT_MAX_STATE], mtt_split_state xs,
-                    mtt_split_cov Ps)
-{
-    int i, k;
-    if (!n_ok(n)) {
-        return -1;
-    }
-    /* Both targets at the one estimate, fully correlated ([S3] eq. 5, 11). */
-    for (i = 0; i < n; ++i) {
-        xs[i] = x[i];
-        xs[n + i] = x[i];
-        for (k = 0; k < n; ++k) {
-            const mtt_real v = MTT_R(0.5) * (P[i][k] + P[k][i]);
-            Ps[i][k] = v;
-            Ps[i][n + k] = v;
-            Ps[n + i][k] = v;
-            Ps[n + i][n + k] = v;
-        }
-    }
-    return 0;
-}
+/* ---- stacked prediction ---- */
 
 int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE],
                       mtt_real Q[][MTT_MAX_STATE], const mtt_split_state xs, mtt_split_cov Ps,
@@ -447,46 +431,8 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
     as->m = m;
     as->n = n;
     as->parametric = (uint8_t)((lam > MTT_R(0.0)) ? 1u : 0u);
-    as->joint = 0u;
     as->pd = pd;
     as->scale = (lam > MTT_R(0.0)) ? MTT_R(1.0) / lam : vg;
-    return 0;
-}
-
-int mtt_split_assoc_coupled(mtt_split_assoc *as, mtt_split_cov Pps, const mtt_real R[3])
-{
-    const int n = (int)as->n;
-    const int sel[QMAX] = {0, 1, n, n + 1};
-    mtt_cov S, L; /* QMAX x QMAX used */
-    mtt_state d;
-    mtt_real Si[QMAX][QMAX], det = MTT_R(1.0);
-    int a, b;
-    /* S^s = H^s Pps H^s' + R^s: the joint innovation covariance of the two
-     * targets' measurements, with the cross block H P_12 H'. */
-    for (a = 0; a < QMAX; ++a) {
-        for (b = 0; b < QMAX; ++b) {
-            S[a][b] = MTT_R(0.5) * (Pps[sel[a]][sel[b]] + Pps[sel[b]][sel[a]]);
-        }
-    }
-    for (a = 0; a < QMAX; a += 2) {
-        S[a][a] += R[0];
-        S[a][a + 1] += R[1];
-        S[a + 1][a] += R[1];
-        S[a + 1][a + 1] += R[2];
-    }
-    if (mtt_ldl(QMAX, S, L, d) != 0 || inv_spd(QMAX, S, L, Si) != 0) {
-        return -1;
-    }
-    for (a = 0; a < QMAX; ++a) {
-        det *= d[a];
-        for (b = 0; b < QMAX; ++b) {
-            as->s4i[a][b] = Si[a][b];
-        }
-    }
-    /* PD^2 scale^2 / ((2 pi)^2 sqrt(det S^s)) */
-    as->g4 = as->pd * as->pd * as->scale * as->scale /
-             (MTT_R(4.0) * MTT_PI * MTT_PI * mtt_sqrt(det));
-    as->joint = 1u;
     return 0;
 }
 
@@ -503,25 +449,7 @@ mtt_real mtt_split_event_weight(const mtt_split_assoc *as, int16_t j1, int16_t j
     if (j1 < -1 || j2 < -1 || j1 >= m || j2 >= m || (j1 >= 0 && j1 == j2)) {
         return MTT_R(0.0); /* not an event: one measurement, two targets */
     }
-    if (j1 >= 0 && j2 >= 0 && as->joint) {
-        /* both detected, coupled: the joint density N([z_j1; z_j2]; zhat^s,
-         * S^s) in place of the product of the marginals (gates as before) */
-        mtt_real nu4[QMAX], q = MTT_R(0.0);
-        int a, b;
-        if (!(as->a[0][j1] > MTT_R(0.0)) || !(as->a[1][j2] > MTT_R(0.0))) {
-            return MTT_R(0.0);
-        }
-        nu4[0] = as->nu[0][j1][0];
-        nu4[1] = as->nu[0][j1][1];
-        nu4[2] = as->nu[1][j2][0];
-        nu4[3] = as->nu[1][j2][1];
-        for (a = 0; a < QMAX; ++a) {
-            for (b = 0; b < QMAX; ++b) {
-                q += nu4[a] * as->s4i[a][b] * nu4[b];
-            }
-        }
-        w = as->g4 * mtt_exp(MTT_R(-0.5) * q) / m2;
-    } else if (j1 >= 0 && j2 >= 0) {
+    if (j1 >= 0 && j2 >= 0) {
         w = as->a[0][j1] * as->a[1][j2] / m2;
     } else if (j1 >= 0) {
         w = as->a[0][j1] * as->b[1] / m1;
@@ -824,13 +752,9 @@ int mtt_split_decouple(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, 
     sum[0] = S1[0] + S2[0];
     sum[1] = S1[1] + S2[1];
     sum[2] = S1[2] + S2[2];
-    det = sum[0] * sum[2] - sum[1] * sum[1];
-    if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
+    if (inv2(sum, Si, &det) != 0) {
         return -1;
     }
-    Si[0] = sum[2] / det;
-    Si[1] = -sum[1] / det;
-    Si[2] = sum[0] / det;
     *d2 = quad2(Si, xps[0] - xps[n], xps[1] - xps[n + 1]);
     return (*d2 >= c) ? 1 : 0;
 }

@@ -9,9 +9,8 @@
  *           L_j = A_j + C_j, beta_j = A_j / L_j.
  * ALGORITHMS.md §7.4: the `ihpda` mode's selection on each track's full gate;
  * ALGORITHMS.md §10.3: the final recomputation after an assignment.
- * ALGORITHMS.md §7.6 (lm_ihpda_variant contest): the amplitude likelihood
- * ratio g_j in place of the ranks, A_j = PD PG p_j g_j / lambda_j (p_j
- * already holds g_j), C_j = 1 - PD PG + PD PG (sum_{i != j} g_i) / (lambda_j V_G).
+ * ALGORITHMS.md §7.6 (lm_ihpda_variant contest): the row with the
+ * amplitude likelihood ratio in place of the ranks, contest/amplitude.c.
  * Written in the quantity macros of mtt/real.h (docs/FIXED_POINT.md §3, §4):
  * P_r and betas Q30; A, C, L Q16 ratios, with p_j and lambda_j relative to
  * the clutter density and V_G times it; m and the rank terms in the Q24
@@ -110,38 +109,6 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
 }
 #endif
 
-#if MTT_WITH_CONTEST
-mtt_real mtt_amp_ratio(mtt_real rho, mtt_real eta, mtt_real a)
-{
-    mtt_real e = a * rho / (MTT_R(1.0) + rho), g;
-    if (!(e < MTT_R(30.0))) {
-        e = MTT_R(30.0); /* g < 1.1e13: p g / lambda stays finite */
-    }
-    g = mtt_exp(e) / (MTT_R(1.0) + rho);
-    return g / (MTT_R(1.0) - eta + eta * g);
-}
-
-/* The §7.6 row: c[i].amp holds g_i. */
-static void betas_amp(mtt_real pdpg, mtt_real vg, const mtt_cand *c, uint16_t m, mtt_real *beta,
-                      mtt_real *L)
-{
-    mtt_real G = MTT_R(0.0);
-    uint16_t i;
-    for (i = 0; i < m; ++i) {
-        G += c[i].amp;
-    }
-    for (i = 0; i < m; ++i) {
-        mtt_real others = G - c[i].amp, A;
-        if (others < MTT_R(0.0)) {
-            others = MTT_R(0.0); /* rounding of G - g_i */
-        }
-        A = pdpg * c[i].p / c[i].lam;
-        L[i] = A + MTT_R(1.0) - pdpg + pdpg * others / (c[i].lam * vg);
-        beta[i] = A / L[i];
-    }
-}
-#endif /* MTT_WITH_CONTEST */
-
 uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t keep, int rule,
                        int16_t *best)
 {
@@ -178,7 +145,7 @@ uint16_t mtt_ihpda_row(mtt_tracker *trk, uint16_t ti, int excl_used, int16_t kee
 #if MTT_WITH_CONTEST
     if (amp) {
         /* ranks are not computed: MMR's tie rule is the lower index */
-        betas_amp(trk->par.pd * trk->par.pg, tf->vg, c, m, beta, L);
+        mtt_contest_amp_betas(trk->par.pd * trk->par.pg, tf->vg, c, m, beta, L);
     } else
 #endif
     {

@@ -15,6 +15,7 @@
  * enumeration. */
 #include "mtt_internal.h"
 
+#if MTT_WITH_CONTEST
 void mtt_contest_frame(mtt_tracker *trk)
 {
     const mtt_real eps = trk->par.contest_beta;
@@ -49,3 +50,4 @@ void mtt_contest_frame(mtt_tracker *trk)
         }
     }
 }
+#endif /* MTT_WITH_CONTEST */

@@ -42,8 +42,7 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
     t->born = (uint8_t)(born != 0);
     t->dead = 0;
 #if MTT_WITH_CONTEST
-    t->q_scale = MTT_R(1.0); /* ALGORITHMS.md §2.1: a new track has no history */
-    t->nis_ratio = MTT_R(1.0);
+    mtt_adapt_track_init(t); /* ALGORITHMS.md §2.1: a new track has no history */
 #endif
 #if MTT_WITH_SPLIT
     t->p_split = MTT_R(0.0);

@@ -1,10 +1,9 @@
 /* imm.c - interacting multiple model (IMM) arithmetic of one track.
  *
- * ALGORITHMS.md §14.1: mixing (c̄_j, μ_{i|j}, x_0j, P_0j), the mode-probability
- * update from per-model likelihoods, the combined estimate; ALGORITHMS.md
- * §14.2: the model-mixed detection probability and measurement likelihood,
- * and the split of a track-level association result (β_0, β_i) into mode
- * probabilities and per-model association probabilities, which is how every
+ * ALGORITHMS.md §14.1: mixing (c̄_j, μ_{i|j}, x_0j, P_0j) and the combined
+ * estimate; ALGORITHMS.md §14.2: the model-mixed detection probability and
+ * measurement likelihood, and the apportionment of a track-level
+ * association result (β_0, β_i) into mode probabilities and per-model association probabilities, which is how every
  * association mode (IPDA, LM-IPDA, IHPDA, LM-IHPDA with MMR, JIPDA) drives
  * the per-model updates.  Plain functions over arrays: r <= MTT_MAX_MODELS
  * models, model j has n[j] state components (4 <= n[j] <= MTT_MAX_STATE),
@@ -149,29 +148,6 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
     return 0;
 }
 
-mtt_real mtt_imm_mode_update(uint8_t r, const mtt_real cbar[], const mtt_real lam[], mtt_real mu[])
-{
-    mtt_real c = MTT_R(0.0);
-    uint8_t j;
-    if (r < 1u || r > MTT_MAX_MODELS) {
-        return MTT_R(0.0);
-    }
-    for (j = 0; j < r; ++j) {
-        c += lam[j] * cbar[j];
-    }
-    if (!(c > MTT_R(0.0)) || !mtt_isfinite(c)) {
-        /* No usable likelihood: the predicted mode probabilities stand. */
-        for (j = 0; j < r; ++j) {
-            mu[j] = cbar[j];
-        }
-        return MTT_R(0.0);
-    }
-    for (j = 0; j < r; ++j) {
-        mu[j] = lam[j] * cbar[j] / c;
-    }
-    return c;
-}
-
 int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE])
 {
@@ -198,7 +174,7 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
     return (w > MTT_R(0.0)) ? s / w : MTT_R(0.0);
 }
 
-int mtt_imm_split(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
+int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
 {

@@ -32,13 +32,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
 #endif
             {
 #if MTT_WITH_CONTEST
-                if (t->q_scale < trk->q_floor) {
-                    t->q_scale = trk->q_floor; /* this interval's floor (ALGORITHMS.md §2.1) */
-                }
-                if (t->q_scale < MTT_R(1.0)) {
-                    /* a confirmed contest track's own level (ALGORITHMS.md §2.1) */
-                    mtt_adapt_predict(dt, Q, t->q_scale, t->x, t->P, tf->xp, tf->Pp);
-                } else
+                if (!mtt_adapt_predict_track(trk, dt, Q, t, tf)) /* its own level (§2.1) */
 #endif
                 {
                     mtt_kalman_predict_q(dt, Q, t->x, t->P, tf->xp, tf->Pp);

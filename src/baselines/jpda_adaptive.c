@@ -6,7 +6,7 @@
  * 2. Gate shrink: an overlapping track gates with gamma / adaptive_jpda_shrink
  *    (tf.shrink, read by gate.c for this frame: the test and the gate area;
  *    PG stays the configured one).
- * 3. Equal split: after the JPDA betas (computed with the shrunken gates),
+ * 3. Equal share: after the JPDA betas (computed with the shrunken gates),
  *    each measurement gated by N >= 2 overlapping tracks gets beta = 1/N in
  *    each of them, without renormalisation; such a track's beta_0 becomes
  *    max(0, 1 - sum beta), and a row summing over 1 is scaled to 1.
@@ -48,14 +48,14 @@ void mtt_adaptive_gates(mtt_tracker *trk)
     }
 }
 
-void mtt_adaptive_split(mtt_tracker *trk, uint16_t c)
+void mtt_adaptive_share(mtt_tracker *trk, uint16_t c)
 {
     uint16_t q, k, x;
     for (q = trk->cl_first[c]; q < trk->cl_first[c + 1u]; ++q) {
         const uint16_t ti = trk->cl_list[q];
         mtt_track_frame *tf = &trk->tf[ti];
         mtt_real sum = MTT_R(0.0);
-        int split = 0;
+        int shared = 0;
         if (!tf->shrink) {
             continue;
         }
@@ -67,11 +67,11 @@ void mtt_adaptive_split(mtt_tracker *trk, uint16_t c)
             }
             if (nc >= 2u) {
                 trk->pairs[k].beta = MTT_R(1.0) / (mtt_real)nc;
-                split = 1;
+                shared = 1;
             }
             sum += trk->pairs[k].beta;
         }
-        if (!split) {
+        if (!shared) {
             continue;
         }
         if (sum > MTT_R(1.0)) {

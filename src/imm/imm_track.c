@@ -1,8 +1,8 @@
 /* imm_track.c - the IMM stages of one track in the pipeline
  * (ALGORITHMS.md §14.1, §14.2): mixing and the per-model prediction,
- * the union gate with the model-mixed likelihood p*, the model split of
- * the association result with the per-model PDA updates, and the start of
- * an IMM track.  The arithmetic is imm.c's; this file sequences it over
+ * the union gate with the model-mixed likelihood p*, the apportionment of
+ * the association result over the models with the per-model PDA updates,
+ * and the start of an IMM track.  The arithmetic is imm.c's; this file sequences it over
  * the track table.
  *
  * Why the association stages need no change: every association mode with
@@ -10,14 +10,14 @@
  * whose likelihood of measurement i is p*_i = Σ_j c̄_j p_i^j (one PD for
  * all models), ALGORITHMS.md §14.2.  The gate writes p* into pair.p, so
  * the LM weights, IHPDA selection, MMR and JIPDA events run unchanged; the
- * update stage then splits their result into mode probabilities and
- * per-model betas (mtt_imm_split).  The existence is the mode's, except in
- * the IHPDA modes: there each model's own gate gives its §7.3 L
+ * update stage then apportions their result into mode probabilities and
+ * per-model betas (mtt_imm_apportion).  The existence is the mode's, except
+ * in the IHPDA modes: there each model's own gate gives its §7.3 L
  * (mtt_imm_exist_L), because the selected measurement's L over the union
  * gate kept lost tracks alive on clutter.  With one PD the
  * "no measurement" factor (1 - PD PG for the PDA modes, C_s for the IHPDA
- * modes) is the same for every model and cancels in the split, so e0_j = 1
- * and e_ij = p_i^j. */
+ * modes) is the same for every model and cancels in the apportionment, so
+ * e0_j = 1 and e_ij = p_i^j. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -233,7 +233,7 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
         model_likelihoods(trk, tf, ms->x, ms->y, e[i]);
     }
-    (void)mtt_imm_split(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
+    (void)mtt_imm_apportion(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
     for (j = 0; j < r; ++j) {
         const uint8_t n = model_n(trk->par.imm_model[j]);
         if (m == 0u) {
@@ -282,6 +282,44 @@ void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
             t->Pm[j][4][4] = p->imm_turn_psd[j] * dt;
         }
     }
+}
+
+void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind)
+{
+    mtt_track *t = &trk->tracks[ti];
+    mtt_track_frame *tf = &trk->tf[ti];
+    mtt_real *beta = trk->row.beta;
+    uint16_t j, b = 0;
+    if (kind == MTT_UPDATE_ONE) {
+        if (tf->assigned < 0) {
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+            t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+            t->meas = -1;
+        } else {
+            const mtt_pair *pp = &trk->pairs[tf->assigned];
+            const mtt_real L = mtt_imm_exist_L(trk, ti, (uint16_t)tf->assigned);
+            beta[0] = pp->beta;
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
+            t->existence = mtt_existence_update(tf->ex_pred, L);
+            t->meas = (int32_t)trk->meas[pp->meas].src;
+        }
+        return;
+    }
+    if (tf->pair_count == 0u) {
+        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+        t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+        t->meas = -1;
+        return;
+    }
+    for (j = 0; j < tf->pair_count; ++j) {
+        beta[j] = trk->pairs[tf->pair_first + j].beta;
+        if (beta[j] > beta[b]) {
+            b = j;
+        }
+    }
+    mtt_imm_update_track(trk, ti, tf->pair_first, tf->pair_count, beta, tf->beta0);
+    t->existence = tf->ex_post;
+    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
 }
 
 #endif /* MTT_WITH_IMM */

@@ -130,12 +130,7 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     p->snr_rho = PDEF(snr_rho, 0.0);
     p->amplitude_eta = PDEF(amplitude_eta, 0.5);
 #if MTT_WITH_CONTEST
-    /* ALGORITHMS.md §2.1 [CHOICE, measured in docs/RESULTS.md] */
-    p->adapt_s_min = MTT_R(0.01);
-    p->adapt_index = MTT_R(1.0);
-    p->adapt_memory = MTT_R(0.8);
-    p->adapt_gain = MTT_R(2.0);
-    p->adapt_reset_nis = MTT_R(8.0);
+    mtt_adapt_defaults(p); /* ALGORITHMS.md §2.1 */
 #endif
     p->markov_p11 = PDEF(markov_p11, 0.98);
     p->markov_p21 = PDEF(markov_p21, 0.0);
@@ -174,6 +169,11 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     p->split_dv = PDEF(split_dv, 0.0);
 #if MTT_WITH_SPLIT
     p->split_confirm = PDEF(split_confirm, 0.97);
+    /* [CHOICE, measured on the seeds 1000+ of split_fast.json,
+     * crossing3.json and formations.json, docs/RESULTS.md "Split targets"] */
+    p->split_decide = PDEF(split_decide, 0.9);
+    p->split_provisional_exist = PDEF(split_provisional_exist, 0.6);
+    p->split_provisional_scans = PDEF(split_provisional_scans, 3.0);
     p->split_across = 1;
     p->split_decouple_r = 0;
     p->split_known_speed = 0;

@@ -37,9 +37,9 @@
  * per-target gates.
  *
  * Decoupling ([S3] eq. 27): when model 6's stacked estimate passes
- * mtt_split_decouple (d² >= 9.21) and μ_5 + μ_6 >= 0.9 after the update
- * [CHOICE: tuned on seeds 1000+; 0.5 decouples clutter-driven splits in
- * crossing3], the updated stacked state of model 6 is separated.  The test
+ * mtt_split_decouple (d² >= 9.21) and μ_5 + μ_6 >= split_decide (0.9)
+ * after the update [CHOICE, a setting: 0.5 decouples clutter-driven splits
+ * in crossing3], the updated stacked state of model 6 is separated.  The test
  * reads the updated stacked estimate (ẑ_t = H x_t) [CHOICE]: [S3] tests
  * the prediction, which decides on the previous scan's evidence and
  * reports the child one scan later.  Its covariance is H P_tt H' (the
@@ -64,7 +64,8 @@
  * (mtt_split_known); when model 5's own gate holds fewer than 2
  * measurements, the late look (a gate widened across the course, the
  * child at the offsets a and a + 1, late_centres); and a split-off track
- * whose existence is below 0.6 in its first 3 scans is deleted (the
+ * whose existence is below split_provisional_exist (0.6) in its first
+ * split_provisional_scans (3) scans is deleted (the
  * provisional child, mtt_split_frame).  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
@@ -74,21 +75,16 @@
 #if MTT_WITH_SPLIT
 
 #define SPLIT_KEEP MTT_R(1e-4)  /* μ_5 + μ_6 below: the split modes are dropped */
-#define SPLIT_DECIDE MTT_R(0.9) /* μ_5 + μ_6 at or above: a decoupled split is two tracks */
 #define N1 MTT_STATE_N          /* the split modes are built on the cv model */
-/* split_known_speed (ALGORITHMS.md §14.3 [CHOICE], tuned on the seeds 1000+
- * of split_fast.json, crossing3.json and formations.json, docs/RESULTS.md
- * "Split targets"): */
-#define KNOWN_LATE_REACH MTT_R(3.5) /* the late look's gate widened across the course by this
-                                       x split_dv dt: the farther offset (2.25) and 1.25 beyond */
-#define KNOWN_LATE_OFFSETS 2u       /* offsets a and a + 1: a split caught one scan late
-                                       (a third, a + 2, scored no better and took clutter) */
-#define PROVISIONAL_AGE 3u          /* a split-off track's first scans ... */
-#define PROVISIONAL_EXIST MTT_R(0.6) /* ... in which an existence below this deletes it: a true
-                                        child once detected again stays above it through a missed
-                                        detection (about 0.8 at PD 0.9), a clutter-driven one falls
-                                        below in 1 or 2 scans; a child missed at once (0.95 -> about
-                                        0.6 at PD 0.9) is the price */
+/* split_known_speed (ALGORITHMS.md §14.3): the late look's offsets a and
+ * a + 1, a = MTT_SPLIT_KNOWN_OFFSET (a split caught one scan late; a
+ * third, a + 2, scored no better and took clutter), and its gate widened
+ * across the course by KNOWN_LATE_REACH x split_dv dt: the farther offset
+ * (a + 1) and a beyond it.  The provisional child's scans and existence
+ * are the settings split_provisional_scans and split_provisional_exist. */
+#define KNOWN_LATE_OFFSETS 2u
+#define KNOWN_LATE_REACH                                                                           \
+    (MTT_SPLIT_KNOWN_OFFSET + (mtt_real)(KNOWN_LATE_OFFSETS - 1u) + MTT_SPLIT_KNOWN_OFFSET)
 #define NS (2 * MTT_STATE_N)
 #define SPLIT_HELD_BY_MANY 0xFFFFu /* owner[]: held by two or more confirmed tracks */
 
@@ -491,7 +487,7 @@ static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         mu6 = MTT_R(0.0);
     }
     t->p_split = mu5 + mu6;
-    if (mu6 > MTT_R(0.0) && t->p_split >= SPLIT_DECIDE) {
+    if (mu6 > MTT_R(0.0) && t->p_split >= trk->par.split_decide) {
         /* the child's measurements are not a new target for initiation */
         for (j = 0; j < sc->as.m; ++j) {
             if (sc->as.beta[1][j] >= MTT_R(0.5)) {
@@ -550,8 +546,8 @@ void mtt_split_frame(mtt_tracker *trk, mtt_real dt)
     }
     for (i = 0; i < n; ++i) {
         mtt_track *t = &trk->tracks[i];
-        if (trk->par.split_known_speed && t->parent != MTT_NO_PARENT && t->age <= PROVISIONAL_AGE &&
-            t->existence < PROVISIONAL_EXIST) {
+        if (trk->par.split_known_speed && t->parent != MTT_NO_PARENT && (mtt_real)t->age <= trk->par.split_provisional_scans &&
+            t->existence < trk->par.split_provisional_exist) {
             t->existence = MTT_R(0.0); /* a provisional child that lost its evidence: deleted (§12.4) */
         }
         if (!trk->tf[i].valid || t->born || !t->confirmed || !(dt > MTT_R(0.0))) {

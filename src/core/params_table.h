@@ -83,10 +83,16 @@ extern const char *const mtt_model_names[3];
          "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)") \
     REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                           \
          "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
+    REAL("split_decide", split_decide, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                      \
+         "with `split`: a decoupled split ([S3] eq. 27) becomes two tracks when the split modes' probability μ_5 + μ_6 after the update is at least this (lower values split on clutter, §14.3)") \
+    REAL("split_provisional_exist", split_provisional_exist, 1, 0.0, 1.0, 0, NULL, TUNING,        \
+         "with `split_known_speed`: a split-off track whose existence falls below this in its first split_provisional_scans scans is deleted (a true child once detected again stays above 0.6 through a miss at PD 0.9, a clutter-driven one falls below in 1 or 2 scans; §14.3)") \
+    REAL("split_provisional_scans", split_provisional_scans, 1, 0.0, 1000.0, 0, NULL, TUNING,     \
+         "with `split_known_speed`: the scans of a split-off track's age (a whole number) in which split_provisional_exist applies (§14.3)") \
     FLAG("split_across", split_across, TUNING,                                                            \
          "with `split`: true: the split's velocity change (split_dv) is across the course only, the \"just split\" model's gate is widened across it; false: in every direction (§14.3)") \
     FLAG("split_known_speed", split_known_speed, TUNING,                                                  \
-         "with `split`: true: a split of known speed, the child leaving at split_dv across the course: the \"just split\" model's child half from the prior moved by split_dv, also a scan late, and a split-off track deleted when its existence falls below 0.6 in its first 3 scans; false: split_dv as the impulse's standard deviation only (§14.3)") \
+         "with `split`: true: a split of known speed, the child leaving at split_dv across the course: the \"just split\" model's child half from the prior moved by split_dv, also a scan late, and a split-off track deleted when its existence falls below split_provisional_exist in its first split_provisional_scans scans; false: split_dv as the impulse's standard deviation only (§14.3)") \
     FLAG("split_decouple_r", split_decouple_r, TUNING,                                                    \
          "with `split`: true: the decoupling test of [S3] eq. 27 on S_1 + S_2 (the halves' predicted measurements, R included); false: on P_11 + P_22 (the halves' position estimates), which decouples a scan or two earlier (§14.3)")
 #else
@@ -206,6 +212,9 @@ extern const char *const mtt_model_names[3];
 #define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_dv MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_split_confirm MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_decide MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_provisional_exist MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_split_provisional_scans MTT_FX_RATIO_FRAC
 #endif
 
 /* Index of each REAL row among the REAL rows (the rules of params.c). */

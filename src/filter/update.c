@@ -13,6 +13,8 @@
  * the LM-IPDA row of the contest test instead of ONE; after its update a
  * confirmed track's process-noise scale follows its NIS (ALGORITHMS.md §2.1).
  * A track with no measurement keeps its prediction, with L = 1 - PD PG.
+ * An IMM track (motion imm, ALGORITHMS.md §14.2) takes its update in
+ * imm/imm_track.c (mtt_imm_update_assoc).
  * Fixed point (docs/FIXED_POINT.md): the firmware modes only (ONE and PDA
  * with CV; IMM, the baselines and the contest variant are compiled out),
  * the covariances in block floating point through kalman.c. */
@@ -113,50 +115,6 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
 }
 #endif
 
-#if MTT_WITH_IMM
-/* IMM track (ALGORITHMS.md §14.2): the mode's result -- the assigned pair
- * with beta_s and L_s (ONE), or the beta row, beta_0 and tf.ex_post (PDA) --
- * split over the models; existence as the mode gives it, with the IHPDA
- * modes' L mixed over the models' own gates (mtt_imm_exist_L). */
-static void update_imm(mtt_tracker *trk, uint16_t ti, uint8_t kind)
-{
-    mtt_track *t = &trk->tracks[ti];
-    mtt_track_frame *tf = &trk->tf[ti];
-    mtt_real *beta = trk->row.beta;
-    uint16_t j, b = 0;
-    if (kind == MTT_UPDATE_ONE) {
-        if (tf->assigned < 0) {
-            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
-            t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
-            t->meas = -1;
-        } else {
-            const mtt_pair *pp = &trk->pairs[tf->assigned];
-            const mtt_real L = mtt_imm_exist_L(trk, ti, (uint16_t)tf->assigned);
-            beta[0] = pp->beta;
-            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
-            t->existence = mtt_existence_update(tf->ex_pred, L);
-            t->meas = (int32_t)trk->meas[pp->meas].src;
-        }
-        return;
-    }
-    if (tf->pair_count == 0u) {
-        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
-        t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
-        t->meas = -1;
-        return;
-    }
-    for (j = 0; j < tf->pair_count; ++j) {
-        beta[j] = trk->pairs[tf->pair_first + j].beta;
-        if (beta[j] > beta[b]) {
-            b = j;
-        }
-    }
-    mtt_imm_update_track(trk, ti, tf->pair_first, tf->pair_count, beta, tf->beta0);
-    t->existence = tf->ex_post;
-    t->meas = (int32_t)trk->meas[trk->pairs[tf->pair_first + b].meas].src;
-}
-#endif
-
 void mtt_update_frame(mtt_tracker *trk)
 {
     const uint8_t kind = mtt_modes[trk->par.association].update;
@@ -169,7 +127,7 @@ void mtt_update_frame(mtt_tracker *trk)
         }
 #if MTT_WITH_IMM
         if (trk->par.motion == MTT_MOTION_IMM) {
-            update_imm(trk, i, kind); /* motion imm refuses the contest variant */
+            mtt_imm_update_assoc(trk, i, kind); /* motion imm refuses the contest variant */
         } else
 #endif
         if (one ? tf->assigned < 0 : tf->pair_count == 0u) {

@@ -62,8 +62,7 @@ static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cyc
     trk->R[1] = MTT_ZERO;
     trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
 #if MTT_WITH_CONTEST
-    trk->q_floor = MTT_R(1.0); /* no interval yet: the configured level (ALGORITHMS.md §2.1) */
-    trk->nis_mean = mtt_adapt_nis_mean(gamma, p->pg);
+    mtt_adapt_init(trk); /* the process-noise scale's set-up (ALGORITHMS.md §2.1) */
 #endif
     /* rho is a global constant: tabulate P_r(l|m) once (ALGORITHMS.md §7.2). */
     for (m = 1; m <= MTT_MAX_GATED; ++m) {

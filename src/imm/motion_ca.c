@@ -33,28 +33,6 @@ void mtt_ca_axis(mtt_real dt, mtt_real q, mtt_real F[3][3], mtt_real Q[3][3])
     Q[2][1] = Q[1][2];
 }
 
-void mtt_ca_model(mtt_real dt, mtt_real q, mtt_real F[][MTT_MAX_STATE], mtt_real Q[][MTT_MAX_STATE])
-{
-    mtt_real f[3][3], qa[3][3];
-    int ax, i, j;
-    mtt_ca_axis(dt, q, f, qa);
-    for (i = 0; i < MTT_CA_N; ++i) {
-        for (j = 0; j < MTT_CA_N; ++j) {
-            F[i][j] = MTT_R(0.0);
-            Q[i][j] = MTT_R(0.0);
-        }
-    }
-    /* Axis ax occupies components ax (position), 2 + ax, 4 + ax. */
-    for (ax = 0; ax < 2; ++ax) {
-        for (i = 0; i < 3; ++i) {
-            for (j = 0; j < 3; ++j) {
-                F[2 * i + ax][2 * j + ax] = f[i][j];
-                Q[2 * i + ax][2 * j + ax] = qa[i][j];
-            }
-        }
-    }
-}
-
 /* F B F' of one 3x3 axis block B (rows axis a, columns axis b), written
  * out: F B adds T row 1 and T^2/2 row 2 to row 0, T row 2 to row 1; the
  * product with F' does the same to the columns. */

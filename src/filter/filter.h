@@ -1,0 +1,67 @@
+/* filter.h - the Kalman filter layer: the filter arithmetic, the prediction
+ * and the update stages (ALGORITHMS.md §2, §3, §6, §7.4).  Not installed; not
+ * part of the API.  Included through mtt_internal.h.  Sections "§N" are those
+ * of docs/ALGORITHMS.md. */
+#ifndef MTT_FILTER_H
+#define MTT_FILTER_H
+
+/* ---- kalman.c: Kalman filter on the motion model of motion.h (ALGORITHMS.md §3, §6) ---- */
+/* xp = F x, Pp = F P F' + Q through the model, symmetrised (ALGORITHMS.md §2, §3). */
+void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, mtt_state xp,
+                        mtt_cov Pp);
+/* The same with Q = mtt_motion_q(dt, sw) formed by the caller: the
+ * prediction stage forms it once per frame for every track. */
+void mtt_kalman_predict_q(mtt_real dt, mtt_cov Q, const mtt_state x, mtt_cov P, mtt_state xp,
+                          mtt_cov Pp);
+/* S = H Pp H' + R, its inverse, det and the gain K = Pp H' S^-1.
+ * Returns 0, or -1 when det S is not positive and finite (ALGORITHMS.md §3). */
+int mtt_kalman_innov(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                     mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
+/* d^2 = nu' S^-1 nu (ALGORITHMS.md §4); in the fixed build Q24. */
+mtt_d2 mtt_mahal2(const mtt_real Si[MTT_SYM_SLOTS], mtt_pos nx, mtt_pos ny);
+/* PDA update with m measurements (ALGORITHMS.md §6), K and Si = S^-1 from
+ * mtt_kalman_innov; with m = 1 and beta0 = 1 - beta this is the IHPDA
+ * single-measurement update of ALGORITHMS.md §7.4, and with m = 0, beta0 = 0 it is
+ * the Joseph form P_c = (I-KH) Pp (I-KH)' + K R K' (ALGORITHMS.md §3). */
+#if MTT_WITH_IMM
+/* The same two steps for a model of n <= MTT_MAX_STATE states (IMM, ALGORITHMS.md §14.2). */
+int mtt_kalman_innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                       mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2]);
+void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
+                      const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                      mtt_real beta0, mtt_state x, mtt_cov P);
+#endif
+void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
+                    const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
+                    mtt_real beta0, mtt_state x, mtt_cov P);
+void mtt_sym(mtt_cov P);
+/* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
+ * lower L, diagonal not written): 0, or -1 when a pivot is not positive
+ * and finite.  The one L D L' of the library (kalman.c). */
+int mtt_ldl(int n, mtt_cov A, mtt_cov L, mtt_state d);
+/* 1 when the symmetric P is positive definite with margin: every L D L'
+ * pivot d_i > rel * P_ii (scale-free; rel = a few eps of mtt_real). */
+int mtt_cov_ok(mtt_cov P, mtt_real rel);
+/* Margins: a seeded covariance must leave room for a predict and update;
+ * a track whose covariance falls below the per-frame one is numerically
+ * invalid and deleted (ALGORITHMS.md §3, extended to P). */
+#ifdef MTT_REAL_FIXED
+/* The float build's values (1000 and 16 float epsilons) in Q30: the fixed
+ * mantissas (28 bits) are finer than float's, so the same margins hold. */
+#define MTT_SEED_COV_MARGIN MTT_P(1000.0 * 1.1920929e-7)
+#define MTT_FRAME_COV_MARGIN MTT_P(16.0 * 1.1920929e-7)
+#else
+#define MTT_SEED_COV_MARGIN (MTT_R(1000.0) * MTT_REAL_EPS)
+#define MTT_FRAME_COV_MARGIN (MTT_R(16.0) * MTT_REAL_EPS)
+#endif
+/* Solve A y = b for a symmetric positive definite A by L D L'; returns
+ * d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
+int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
+
+/* ---- predict.c: prediction, S, S^-1 and gain of every track (§2, §3, §11) ---- */
+void mtt_predict_frame(mtt_tracker *trk, mtt_real dt);
+
+/* ---- update.c: state and existence update of every track (ALGORITHMS.md §6, §7.4, §10.3) ---- */
+void mtt_update_frame(mtt_tracker *trk);
+
+#endif /* MTT_FILTER_H */
