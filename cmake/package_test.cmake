@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake/package_test.cmake - the ctest package.consumer.
 #
 # 1. cmake --install <BUILD_DIR> --prefix <WORK_DIR>/prefix

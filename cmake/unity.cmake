@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake/unity.cmake - provide the static library target `mtt_unity`: the Unity
 # C test framework (ThrowTheSwitch), never committed to this repository.
 #

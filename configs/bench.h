@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* configs/bench.h - bounds large enough for 256 targets in clutter: the
  * benchmark build (preset bench, tools/bench/bench.sh, docs/PERFORMANCE.md). */
 #ifndef MTT_CONFIGS_BENCH_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* configs/firmware.h - the firmware configuration: the bounds and switches of
  * the small builds (presets host-float-small, host-fixed, cortex-m0plus-fixed;
  * with configs/firmware_small.h the cortex-m*-small presets), of the firmware

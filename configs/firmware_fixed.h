@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* configs/firmware_fixed.h - the fixed-point build's configuration (presets
  * host-fixed and cortex-m0plus-fixed; docs/FIXED_POINT.md).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* configs/imm_nosplit.h - the IMM without the split-target models
  * (MTT_WITH_SPLIT follows MTT_WITH_IMM by default, mtt/config.h): the
  * documented combination that no other preset builds.  Preset and workflow

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The tables of docs/RESULTS.md "Identity keeping and amplitude".
 
 rows: one `python3 -m mtt_sim.mc` call per row (association mode plus

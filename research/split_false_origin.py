@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Where a scenario's split-off tracks come from (docs/RESULTS.md "Split targets").
 
 For every split-off track (non-empty ``parent`` in the tracks file) of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt_internal.h - the library's common internal header: the constants
  * every layer shares and the internal header of each src/ directory (its
  * stage functions, shared by the source files and the unit tests).  Not

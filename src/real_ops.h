@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* real_ops.h - the arithmetic of mtt_real: private to the library.
  *
  * Every literal goes through a constant macro of mtt/real.h and every
@@ -42,7 +43,7 @@ extern "C" {
  * [MTT_FX_MIN, MTT_FX_MAX] instead of wrapping; the error bounds below are
  * checked by test/test_fixed.c against double references.
  *
- * The definitions in src/fx_math.c are compiled only when MTT_REAL_FIXED
+ * The definitions in src/fixed/fx_math.c are compiled only when MTT_REAL_FIXED
  * (the fixed-point build) or MTT_FX_KERNELS (the kernel unit test) is
  * defined, so a float or double library carries none of them.
  *
@@ -126,7 +127,7 @@ int32_t mtt_fx_log2(uint32_t x, int f);
  * Error <= 2 ulp of Q25 (6.0e-8 absolute). */
 int32_t mtt_fx_ln(uint32_t x, int f);
 
-/* ---- the host boundary (src/fx_double.c) ----------------------------
+/* ---- the host boundary (src/fixed/fx_double.c) ----------------------------
  * The user's numbers (doubles read from the settings JSON and the CSV
  * files, docs/FIXED_POINT.md §3) into a Qf format and back, for the host
  * tools and params_info.c: double arithmetic, so nothing in the tracker

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # test/check_symbols.cmake - the library may reference nothing outside an allow-list.
 #
 #   cmake -DNM=<nm> -DLIB=<libmtt.a> -P check_symbols.cmake

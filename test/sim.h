@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sim.h - deterministic scene simulation for the end-to-end tests:
  * a fixed 64-bit generator (splitmix64), uniform and Gaussian draws.
  * Host test code: double precision is fine here. */

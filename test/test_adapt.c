@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_adapt.c - the noise-adaptive process noise of confirmed lm-ihpda
  * contest tracks (ALGORITHMS.md §2.1, src/contest/adapt_q.c).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_api.c - bounds, bad data and API misuse through the public API only
  * (docs/DESIGN.md "Errors and bad input"); which measurements the cap
  * keeps is checked stage-side in test_measure.c.  Every build: values are

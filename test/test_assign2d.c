@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_assign2d.c - optimal 2-D assignment (ALGORITHMS.md §10.2) and the ihpda-2d
  * mode's cluster stage: TV9 (static matrix), TV8 (optimal result with the
  * final recomputation of ALGORITHMS.md §10.3), and the solver against brute force. */

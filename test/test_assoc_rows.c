@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_assoc_rows.c - the association arithmetic on given likelihoods, in
  * every build, the fixed-point one included: IHPDA rank probabilities (TV4,
  * ALGORITHMS.md §7.2), IHPDA rows (TV5, §7.3) and the LM clutter density

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_caps.c - the per-gate and merge-candidate caps (README 'Limits',
  * ALGORITHMS.md §7.2, §12.3) at the configured bounds, through whole
  * frames: which entries stay, and the counts reported for the dropped. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_cluster.c - clusters of the gating graph by union-find (ALGORITHMS.md §9, TV8b). */
 #include <string.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_contest.c - lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md
  * §10.4) on hand-built meeting cases, and the amplitude likelihood ratio
  * and its row (ALGORITHMS.md §7.6, docs/TEST_VECTORS.md TV15).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_e2e.c - whole-tracker scenarios (end-to-end a-c):
  * deterministic simulated scenes through the public API, asserting tracking
  * outcomes.  Frame counts that the outcome depends on are computed here from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_edges.c - argument checks and numeric edges of the public API and
  * of the stages that other tests reach only on the common path: what is
  * refused, and what a numerically invalid track does in every association

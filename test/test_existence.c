@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_existence.c - Markov chain one prediction (TV7) and the L-form
  * existence update with its clamping (ALGORITHMS.md §6, §11, §16).
  *

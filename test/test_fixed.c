@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_fixed.c - the integer kernels of the fixed-point build
  * (include/mtt/fixed.h, src/fixed/fx_math.c; docs/FIXED_POINT.md) against exact
  * integer references and double references, densely or exhaustively, with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_gate.c - gate threshold, gate area, likelihood, gate test and the
  * gate frame stage.  Expected numbers: docs/TEST_VECTORS.md TV3 (and TV8 for the
  * two-track frame). */

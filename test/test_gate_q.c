@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_gate_q.c - the gate's arithmetic (ALGORITHMS.md §4) on
  * docs/TEST_VECTORS.md TV3 in every build: gamma, the gate area, the slice
  * half-width, d^2 and the likelihood p = N / PG of the five candidates.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_ihpda.c - intensity order statistics (TV4) and the IHPDA
  * per-candidate quantities, selection and update (TV5), ALGORITHMS.md §7. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_imm.c - IMM arithmetic of one track (ALGORITHMS.md §14.1, §14.2):
  * mixing, mode-probability update, combination, the model-mixed likelihood
  * and the apportionment of an association result into per-model quantities.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_imm_tracker.c - IMM through mtt_tracker_step (ALGORITHMS.md §14.2):
  * the modes that run with motion = imm and those that refuse it, the
  * property that an IMM of identical CV models is the CV filter, a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1, TV10) and
  * the intensity-based initial gate f(I) (ALGORITHMS.md §12.2, TV12). */
 #include <string.h>

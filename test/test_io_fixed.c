@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_io_fixed.c - the host boundary of tools/io/ (libmtt_io): the one
  * conversion of the files' doubles into mtt_real (mtt_io_to_real) and back
  * (mtt_io_from_real), as the detections, settings and initial tracks use

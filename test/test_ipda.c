@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_ipda.c - IPDA on the TV5 inputs (TV6): betas, delta, existence,
  * PDA state update, and the non-parametric clutter density (ALGORITHMS.md §5.2, §6). */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_ipda_rows.c - IPDA betas and L (ALGORITHMS.md §6) on TV5's
  * likelihoods (docs/TEST_VECTORS.md TV6), in every build, the fixed-point
  * one included.  The likelihoods are given relative to the clutter

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_jpda.c - the JPDA family on TV13 (ALGORITHMS.md §13): Cheap JPDA raw and
  * normalised, Suboptimal JPDA (N, D, both B choices), exact JPDA (8 events
  * and their weights), NNJPDA, the 2x2 JPDA* case, JIPDA, the N x N claim

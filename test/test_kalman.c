@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_kalman.c - CV model, Kalman predict / innovation / Joseph update,
  * PDA combination with one measurement, Cholesky quadratic form.
  * Expected numbers: docs/TEST_VECTORS.md TV1, TV2 (and TV11 for chol4). */

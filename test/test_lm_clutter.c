@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_lm_clutter.c - LM clutter density (ALGORITHMS.md §8) on TV8: d2 and p per pair,
  * Ptilde, W_j, lambda_tilde, and LM-IPDA betas and existence; also the
  * per-track lambda of ALGORITHMS.md §5.1 / 5.2. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_measure.c - measurement validation and the MTT_MAX_MEAS cap, the
  * stage of measure.c (ALGORITHMS.md §15, §16): which detections are kept,
  * and in which order. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_measure_range.c - input that the build cannot represent is skipped
  * and counted in meas_bad, never wrapped or clamped into range (measure.c,
  * ALGORITHMS.md §16; docs/FIXED_POINT.md §3).  Float and double: NaN and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_merge.c - track merge test and survivor rule (ALGORITHMS.md §12.3, TV11). */
 #include <string.h>
 

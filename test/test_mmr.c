@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_mmr.c - MMR assignment (ALGORITHMS.md §10.1): the static greedy of TV9 and
  * LM-IHPDA with recomputation and the final recomputation of TV8 (10.3). */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_modes.c - every association mode (ALGORITHMS.md §15.1) end to end: invariance
  * to the order of the measurements and of the (seeded) tracks, and a
  * two-target crossing started from measurements alone. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_motion_ca.c - nearly constant acceleration model (motion_ca.c):
  * F and Q in closed form against `python3 tools/ci/imm_vectors.py`
  * (section "CA model": F = expm(A T) by its power series, Q by quadrature

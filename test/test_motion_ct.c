@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_motion_ct.c - coordinated-turn model (motion_ct.c): the transition
  * f(x) and its Jacobian against `python3 tools/ci/imm_vectors.py` (section
  * "CT model": closed form, Jacobian by complex-step differentiation; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_params.c - defaults (docs/FORMATS.md table), validation naming the first
  * bad field, association names, unsupported modes. */
 #include <string.h>

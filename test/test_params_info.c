@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_params_info.c - the public settings table (mtt_params_info, find,
  * set, get): every key round-trips, ranges are those of mtt_params_check,
  * errors change nothing. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_params_modes.c - what mtt_params_check accepts in this build, the
  * fixed-point one included (docs/FIXED_POINT.md: the firmware
  * configuration; every value in its Q format): the four core modes with

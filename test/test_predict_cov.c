@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_predict_cov.c - the CV prediction x^ = F x, P^ = F P F' + Q
  * (ALGORITHMS.md §2, §3) on TV2 and on a long gap, in every build; in the
  * fixed-point one the covariance is a block of mantissas with one exponent

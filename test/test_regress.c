@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_regress.c - regressions found by the fuzzers and the soak
  * (docs/ROBUSTNESS.md).  The raw inputs are replayed by the ctests
  * fuzz.replay.*; these are the same findings as plain API calls. */

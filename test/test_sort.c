@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_sort.c - heap sort and heap sift (sort.c) against a simple
  * reference (insertion sort) on pseudo-random arrays from a fixed LCG,
  * with many duplicates. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_split.c - split-target models (ALGORITHMS.md §14.3): model 5 "just
  * split", model 6 "split" (joint events, coupled update, likelihood), the
  * decoupling test and the conversion into two track states.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_split_tracker.c - split targets through mtt_tracker_step
  * (ALGORITHMS.md §14.3, src/split/split_track.c): a hand-built split (one seeded
  * track, two diverging measurement streams) spawns exactly one child that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_tracker_q.c - the tracker through its public API in every build,
  * written for the fixed-point build (docs/FIXED_POINT.md §3, §7): the
  * settings keys from and to the user's units, the refusals, time as Q16

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test_update_q.c - the PDA update (ALGORITHMS.md §3 Joseph form, §6, §7.4),
  * the L D L' positive-definiteness test and quadratic form (§3, §16) on
  * TV2 and TV6, in every build.  Float and double: the results against the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tv_assert.h - the one tolerance rule of the unit tests (ALGORITHMS.md §16,
  * docs/TEST_VECTORS.md header): double builds 1e-6 relative with a 1e-9 absolute
  * floor; float builds 1e-4 relative with a 1e-6 absolute floor.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tv_cov.h - covariances in and out of the tests in every build: from and
  * to doubles, with the block exponent of the fixed-point build (a block of
  * mantissas at 2^e, docs/FIXED_POINT.md §2).  Include after tv_assert.h. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tv_fixture.h - hand-built tracker states for the stage tests.
  *
  * The stage functions work on an mtt_tracker; these helpers fill just what

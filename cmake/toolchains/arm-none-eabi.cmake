@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake/toolchains/arm-none-eabi.cmake - bare-metal Arm GNU toolchain
 # (Debian: gcc-arm-none-eabi, libnewlib-arm-none-eabi).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake/toolchains/cortex-m0plus.cmake - Cortex-M0+ (ARMv6-M), no FPU,
 # soft-float ABI.  Preset: cortex-m0plus (-Os).
 set(MTT_CPU_FLAGS "-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft")

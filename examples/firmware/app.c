@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* app.c - the firmware example's scenario program, identical on host and
  * target: run the tracker over the built-in scene, print per frame
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fmt.c - integer, fixed-point and hex formatting for the firmware
  * example: no printf, no double, no division by non-constants (and in
  * the fixed-point build no float: fmt_q prints a Q value). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fw.h - the firmware example's shared pieces: the scenario program
  * (app.c), its deterministic measurement generator (scenario.c) and the
  * text formatting (fmt.c).  The same code is compiled for the target

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fw_params.c - the firmware example's tracker parameters, in one place
  * for the three programs that use them: the scenario program (app.c) on
  * the host, on the target (float builds), and the host step of the

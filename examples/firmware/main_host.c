@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* main_host.c - the firmware example's scenario program on the host
  * (stdout, no tick counter), the reference for the target's output. */
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* main_target.c - the firmware example on the target: output through
  * semihosting, SysTick as the tracker's cycle counter (mtt_params
  * .cycle_counter), so mtt_tracker_stats reports ticks per stage.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* prepare_main.c - the host step of the fixed-point firmware example
  * (docs/FIRMWARE.md, "Parameters prepared on the host"): prepares the
  * example's parameters (fw_params.c) with the library built for the host in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* scenario.c - the firmware example's built-in scene: 5 constant-velocity
  * targets (two of them cross near frame 50), detection probability 0.9,
  * 0..7 clutter points per frame, measurement noise sigma 1.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* semihost.c - SYS_WRITE0 and SYS_EXIT through BKPT 0xAB (Thumb: ARMv6-M
  * and ARMv7-M alike).  The debugger (here qemu with -semihosting-config
  * enable=on,target=native) reads r0 = operation, r1 = argument. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* semihost.h - the two Arm semihosting calls the firmware example needs
  * (BKPT 0xAB; Arm "Semihosting for AArch32 and AArch64", v2.0). */
 #ifndef MTT_FW_SEMIHOST_H

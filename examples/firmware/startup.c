@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* startup.c - minimal Cortex-M startup for the firmware example: the
  * vector table, a reset handler that copies .data from flash, zeroes
  * .bss, enables the FPU when the build uses it (Cortex-M4F), calls main

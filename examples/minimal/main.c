@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* examples/minimal/main.c - README.md's "Using the library" as a program:
  * tracker_setup and tracker_frame as the README writes them, fed 20 frames
  * of synthetic detections (one target at constant velocity, one clutter

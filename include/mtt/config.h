@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt/config.h - compile-time bounds of the tracker.
  *
  * sizeof(mtt_tracker) follows from these numbers alone; there is no other

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt/fixed.h - the saturation limits of the fixed-point build
  * (docs/FIXED_POINT.md).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt/mtt.h - public API of mtt, a bounded multi-target tracker.
  *
  * Per frame: constant-velocity Kalman prediction, ellipsoidal gating,

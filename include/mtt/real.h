@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt/real.h - the one real type and its constants.
  *
  * mtt_real is float unless MTT_REAL_DOUBLE is defined; MTT_REAL_FIXED

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mtt/state.h - the layout of the tracker state, mtt_tracker.
  *
  * NOT API.  It is public only so that a caller can allocate the tracker

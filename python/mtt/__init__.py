@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt: the bounded multi-target tracker (LM-IHPDA and the IPDA / JPDA families) in Python.
 
 The C library runs in-process (extension module ``mtt._core``); this package

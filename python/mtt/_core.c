@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* python/mtt/_core.c - mtt._core, the CPython extension behind the mtt package:
  * one mtt_tracker per _core.Tracker object, the parameter table (mtt_params_info),
  * and plain tuples / bytes in and out (no numpy C API: python/mtt/tracker.py

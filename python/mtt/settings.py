@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The settings of docs/FORMATS.md (a dict, or a JSON file) into a parameter set.
 
 The rules and the messages are mtt-track's (tools/io/settings.c): every key is a

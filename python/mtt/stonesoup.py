@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt.stonesoup: the mtt tracker as a Stone Soup tracker (``pip install mtt[stonesoup]``).
 
     from mtt.stonesoup import MttTracker

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt.Tracker and mtt.Track: the C tracker (include/mtt/mtt.h) with numpy in and out.
 
     import numpy as np, mtt

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt_ref: an independent reference of mtt's per-frame pipeline (numpy, double).
 
 Written from docs/ALGORITHMS.md and docs/FORMATS.md only, never from src/:

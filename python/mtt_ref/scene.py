@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The differential scene format, shared by mtt_ref and test/differential/driver.c.
 
 A scene is plain text, one item per line ('#' starts a comment line):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The reference tracker: one frame of ALGORITHMS.md §15, in numpy double.
 
 Written from docs/ALGORITHMS.md (section numbers below) and the public

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt_sim: scenario generation, scoring and Monte Carlo harness for mtt.
 
 Host-side only (Python 3.11, numpy, matplotlib).  Modules:

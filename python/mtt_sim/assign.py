@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Exact linear assignment without scipy.
 
 ``linear_assignment(cost)`` solves min sum cost[i, pi(i)] over one-to-one

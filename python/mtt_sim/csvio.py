@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Readers and writers for the files of docs/FORMATS.md.
 
 In memory, each file is a dict of equal-length numpy arrays (a "table"):

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Draw one run of a scenario: ground truth and detections, and the command that writes them.
 
 Command line: DIR/<name>.det.csv, .truth.csv, .settings.json.

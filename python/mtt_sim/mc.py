@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Monte Carlo runs of a scenario through the mtt tracker, with the papers' tables and plots.
 
     PYTHONPATH=python python3 -m mtt_sim.mc --scenario scenarios/crossing3.json --runs 500 --out out/crossing3 \

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Scoring: pure functions on numpy arrays (no I/O, no global state).
 
 Conventions used throughout

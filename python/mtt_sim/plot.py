@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Figures (matplotlib, Agg backend, PNG), and the command that replots them from a
 Monte Carlo summary or draws one run's scene, model probabilities or split.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Text tables from a summary (the object of summary.json), in the papers' formats.
 
 * [S4] Table 1: confirmed true tracks summed over the runs at given

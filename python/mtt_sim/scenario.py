@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Scenario files: load, apply overrides, validate, expand.
 
 The schema is documented in ``scenarios/README.md``.  In short, a scenario is

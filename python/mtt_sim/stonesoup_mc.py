@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Monte Carlo runs of a scenario through Stone Soup's JPDA: a baseline on mtt's own detections.
 
     PYTHONPATH=python python3 -m mtt_sim.stonesoup_mc --scenario scenarios/split_fast.json --runs 50 \\

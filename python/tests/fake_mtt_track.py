@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """A stand-in for mtt-track used by the harness tests (NOT the project's tracker).
 
 Same command line and files as docs/FORMATS.md's mtt-track:

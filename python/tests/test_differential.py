@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Differential test: the library (double build) against python/mtt_ref.
 
 mtt_ref is an independent reference of the per-frame pipeline, written from

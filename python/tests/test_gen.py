@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt_sim.gen, the generator: determinism, statistics, docs/FORMATS.md conformity, shipped scenarios."""
 
 import copy

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Metrics on small cases whose answers are worked out by hand in the comments."""
 
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Monte Carlo runner end to end: with a stand-in tracker always, with mtt-track if built."""
 
 import json

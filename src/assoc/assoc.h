@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* assoc.h - the association layer: gating, clutter densities, IHPDA, IPDA,
  * clusters, MMR and the association stage (ALGORITHMS.md §4 to §10).  Not
  * installed; not part of the API.  Included through mtt_internal.h.  Sections

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* associate.c - the association stage of every mode, driven by one mode
  * table (ALGORITHMS.md §15.1; the modes' algorithms in §6, §7, §8, §10,
  * §13).

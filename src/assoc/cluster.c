@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* cluster.c - clusters: connected components of the track-measurement
  * gating graph (ALGORITHMS.md §9), by union-find.
  *

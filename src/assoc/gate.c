@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* gate.c - ellipsoidal gating of every track (ALGORITHMS.md §4).
  *
  * gamma = -2 ln(1 - PG); a measurement is gated when d^2 = nu' S^-1 nu <=

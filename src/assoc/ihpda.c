@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* ihpda.c - IHPDA: one selected measurement per track, using the ranks of
  * the gated intensities (ALGORITHMS.md §7).
  *

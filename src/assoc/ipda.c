@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* ipda.c - IPDA association probabilities and the IPDA row of a track
  * (ALGORITHMS.md §6); the association of the ipda and lm-ipda modes.
  *

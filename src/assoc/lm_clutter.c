@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lm_clutter.c - clutter density seen by each gated pair.
  *
  * ALGORITHMS.md §5.1: known uniform lambda; §5.2: when lambda = 0, the per-track

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mmr.c - maximum marginal return assignment with recomputation
  * (ALGORITHMS.md §10.1; [S0] eq. 13; Kolitz 1988).
  *

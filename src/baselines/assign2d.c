@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* assign2d.c - optimal 2-D assignment per cluster, the `ihpda-2d` mode
  * (ALGORITHMS.md §10.2; [S0] eq. 11 and 12; ALGORITHMS.md §15.1).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* baselines.h - the comparison baselines: 2-D assignment and the JPDA family
  * (ALGORITHMS.md §10.2, §13), built with MTT_WITH_BASELINES.  Not installed;
  * not part of the API.  Included through mtt_internal.h.  Sections "§N" are

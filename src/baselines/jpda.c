@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* jpda.c - exact JPDA, JPDA* and JIPDA by event enumeration per cluster
  * (ALGORITHMS.md §13.1, §13.2, §13.6), and the weights A and B of the whole JPDA
  * family (ALGORITHMS.md §13).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* jpda_adaptive.c - adaptive JPDA (ALGORITHMS.md §13.7, CHOICE
  * interpretation of [S1] §3).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* jpda_approx.c - Cheap JPDA and Suboptimal JPDA per cluster (ALGORITHMS.md §13.3,
  * §13.4; [S1] eq. 2 to 5).  Both work on the sparse gated pairs (no cluster
  * bound): A_tj = jp.pa of the pair, B_t = jp.tb of the track (jpda.c).

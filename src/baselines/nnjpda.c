@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* nnjpda.c - NNJPDA (ALGORITHMS.md §13.5; [S1] section 3).
  *
  * The exact JPDA betas of the cluster (jpda.c, Cheap JPDA beyond its

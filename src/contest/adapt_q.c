@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* adapt_q.c - the noise-adaptive process noise of a confirmed track with
  * lm-ihpda's contest variant (ALGORITHMS.md §2.1): Q = s·Q(process_psd)
  * with s in [floor, 1], lowered while the track's normalised innovations

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* amplitude.c - the amplitude likelihood ratio of lm-ihpda's contest
  * variant and its IHPDA row (ALGORITHMS.md §7.6).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* contest.c - the contest test of lm-ihpda with lm_ihpda_variant contest
  * (ALGORITHMS.md §10.4), between MMR (§10.1) and the final recomputation
  * (§10.3).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* contest.h - lm-ihpda's contest variant (ALGORITHMS.md §2.1, §7.6, §10.4),
  * built with MTT_WITH_CONTEST.  Not installed; not part of the API.  Included
  * through mtt_internal.h.  Sections "§N" are those of docs/ALGORITHMS.md. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* core.h - the tracker core: sorting, parameters, existence (ALGORITHMS.md
  * §11), initiation and merging (§12.1 to §12.3), measurement selection
  * (§15) and the track table (§12.4); tracker.c, the pipeline's sequence

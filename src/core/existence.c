@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* existence.c - track existence probability.
  *
  * ALGORITHMS.md §11: Markov chain one prediction P_k|k-1 = p11 P + p21 (1 - P).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* initiate.c - two-point differencing initiation (ALGORITHMS.md §12.1) with the
  * velocity gate |z_k - z_k-1| <= vmax dT, or the intensity-based gate of
  * [S2] (ALGORITHMS.md §12.2): sigma_P = f(I)/sqrt(gamma), accept when

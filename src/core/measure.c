@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* measure.c - measurement validation and selection, pipeline stage 1
  * (ALGORITHMS.md §15, §16).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* merge.c - track merging (ALGORITHMS.md §12.3, [S0] eq. 17).
  *
  * d^2 = (x_a - x_b)' (P_a + P_b)^-1 (x_a - x_b) < t_merge merges.  Only

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* params.c - parameter defaults (docs/FORMATS.md, [S0]'s IR set-up),
  * validation against the ranges of params_table.h that names the first bad
  * field, and the status texts.  In the fixed-point build every value is in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* params_info.c - the settings keys as a public table (mtt_params_info,
  * mtt_params_find) and key-wise access to mtt_params (mtt_params_set,
  * mtt_params_get), for tools and bindings; docs/FORMATS.md "Settings".
@@ -5,7 +6,7 @@
  * The rows are params_table.h's, the range test is params.c's
  * mtt_params_rule_ok: this file adds the texts and the conversion from and
  * to double.  Nothing in the tracker calls it, so a firmware image does not
- * link it (nor the double arithmetic it needs: scripts/ci-firmware.sh checks
+ * link it (nor the double arithmetic it needs: tools/ci/ci-firmware.sh checks
  * that no double helper is linked).  In the fixed-point build the doubles
  * are the user's units, converted from and to each row's Q format
  * (MTT_FX_FRAC_<member>, docs/FIXED_POINT.md §3): rounded to nearest, a

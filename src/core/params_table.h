@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* params_table.h - the settings keys of mtt_params: the one place where a
  * key's name, type, element count, range and meaning are written down.
  *
@@ -7,7 +8,7 @@
  * find / set / get (host only: nothing in the tracker references it, so a
  * firmware image does not link it).  docs/FORMATS.md's settings table is
  * `mtt-track --list-settings`, printed from that public table, and
- * scripts/check_settings_doc.py keeps the two equal.
+ * tools/ci/check_settings_doc.py keeps the two equal.
  *
  * Rows, in docs/FORMATS.md order:
  *   REAL(key, member, count, lo, hi, flags, cross, tier, text)

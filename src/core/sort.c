@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sort.c - heap sort and heap sift over small fixed arrays, the
  * stable x sort of the gating sweep (ALGORITHMS.md §4, §16), and the shift
  * that turns CSR cursors back into starts (gating, clusters §9).

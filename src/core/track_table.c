@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* track_table.c - the track table: append a track, seed a known one with
  * its checks, delete / confirm / compact at the end of a frame
  * (ALGORITHMS.md §12.4, §3), and the read-only views of the live tracks.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tracker.c - the per-frame pipeline (ALGORITHMS.md §15; docs/DESIGN.md
  * stages 1-10): mtt_tracker_init, mtt_tracker_step and the statistics.
  * This file only sequences the stages; each stage computes in its own

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* filter.h - the Kalman filter layer: the filter arithmetic, the prediction
  * and the update stages (ALGORITHMS.md §2, §3, §6, §7.4).  Not installed; not
  * part of the API.  Included through mtt_internal.h.  Sections "§N" are those

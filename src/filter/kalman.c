@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* kalman.c - the Kalman filter steps on the motion model of motion.h
  * (ALGORITHMS.md §3: predict, closed-form S^-1, Joseph-form update,
  * symmetrisation; §6: the PDA combined update, which with one measurement

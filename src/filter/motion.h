@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* motion.h - the motion-model seam (ALGORITHMS.md §2, §3, §12.1).
  *
  * Everything prediction, gating, update, initiation and merging need of a

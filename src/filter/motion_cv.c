@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* motion_cv.c - the constant-velocity motion model behind the seam of
  * motion.h (ALGORITHMS.md §2; its two-point start §12.1).
  *

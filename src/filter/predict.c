@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* predict.c - prediction of every track, pipeline stage 2 (ALGORITHMS.md
  * §2, §3, §11): the motion model's x^ = F x, P^ = F P F' + Q, the Markov
  * existence prediction, and the innovation covariance S = H P^ H' + R

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* update.c - state and existence update of every valid track, by the
  * update kind of its mode's row (associate.c); the association stage has
  * written every beta.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx.h - the fixed-point kernels of src/fixed/ shared by the stages (fixed
  * point only, docs/FIXED_POINT.md; the numerics of ALGORITHMS.md §16).
  * Not installed; not part of the API.  Included through mtt_internal.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx_cov.c - block floating point for the covariances of the fixed-point
  * build (docs/FIXED_POINT.md §2 and its Status, findings 1 and 5): a
  * matrix's values are its int32 mantissas times 2^e, with e in the extra

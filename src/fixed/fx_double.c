@@ -1,10 +1,11 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx_double.c - the host boundary of the fixed-point build: the user's
  * doubles (settings JSON, detections CSV) into the Q formats of
  * docs/FIXED_POINT.md §3 and back (the tracks CSV, mtt_params_get).
  *
  * Host only: double arithmetic.  The tools (io/) and params_info.c call it;
  * nothing in the tracker does, so a firmware image does not link it
- * (scripts/ci-firmware.sh checks the fixed image for float and double
+ * (tools/ci/ci-firmware.sh checks the fixed image for float and double
  * helpers).  Out of range saturates, never wraps: the saturated value is
  * what measure.c skips and counts as a bad detection and what
  * mtt_params_check refuses (ALGORITHMS.md §16). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx_math.c - the integer kernels of the fixed-point build: saturating
  * add, exact product, rounded multiply and divide, square root, exp(-y)
  * and log2 (docs/FIXED_POINT.md; the numerics of ALGORITHMS.md §16).

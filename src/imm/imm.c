@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* imm.c - interacting multiple model (IMM) arithmetic of one track.
  *
  * ALGORITHMS.md §14.1: mixing (c̄_j, μ_{i|j}, x_0j, P_0j) and the combined

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* imm.h - interacting multiple models (ALGORITHMS.md §14), built with
  * MTT_WITH_IMM.  Not installed; not part of the API.  Included through
  * mtt_internal.h.  Sections "§N" are those of docs/ALGORITHMS.md. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* imm_track.c - the IMM stages of one track in the pipeline
  * (ALGORITHMS.md §14.1, §14.2): mixing and the per-model prediction,
  * the union gate with the model-mixed likelihood p*, the apportionment of

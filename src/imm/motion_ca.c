@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* motion_ca.c - nearly constant acceleration (CA) model: F and Q.
  *
  * ALGORITHMS.md §14.1 (a mode of the IMM; [S3] model 4): state

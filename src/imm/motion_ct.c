@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* motion_ct.c - coordinated-turn (CT) model with unknown turn rate: the
  * state transition, its Jacobian (extended Kalman prediction) and Q.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* split.c - split-target mathematics of one track (ALGORITHMS.md §14.3,
  * [S3]): model 5 "just split" (two clusters, per-half PDA update, cross
  * covariance, likelihood with the exponent -(m_i - 1)), model 6 "split"

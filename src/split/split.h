@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* split.h - split targets (ALGORITHMS.md §14.3), built with MTT_WITH_SPLIT.
  * Not installed; not part of the API.  Included through mtt_internal.h;
  * sections "§N" are those of docs/ALGORITHMS.md. */

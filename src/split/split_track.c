@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* split_track.c - the split-target stage (ALGORITHMS.md §14.3): the "just
  * split" (model 5) and "split" (model 6) modes of every confirmed IMM
  * track, their mode probabilities from the model likelihoods over the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 // test/consumer/cxx.cpp - a C++ program using mtt through its public header
 // only: every declaration must have C linkage (a C++ caller otherwise
 // links mangled names that libmtt.a does not define), and the header must

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test/consumer/main.c - uses an installed mtt through its public header only.
  * Prints one line starting with "OK" on success. */
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* test/consumer/mismatch.c - a program compiled with another configuration
  * than the libmtt.a it links (other bounds, the other mtt_real, the other
  * MTT_WITH_BASELINES; test/CMakeLists.txt builds one of each) must get

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* driver.c - runs the library on one differential scene (stdin) and prints
  * every live track after each frame (stdout), for python/tests/test_differential.py.
  *

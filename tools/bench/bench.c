@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bench.c - mtt-bench: per-frame cost of every association mode against
  * load, with a bare Kalman floor (docs/PERFORMANCE.md).
  *

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/bench/bench.sh - the performance figures (docs/PERFORMANCE.md), from one command.
 #
 #   ./tools/bench/bench.sh [--frames N] [--quick]
@@ -22,7 +23,7 @@ while (($#)); do
   case "$1" in
     --frames) frames="$2"; shift 2 ;;
     --quick) frames=100; cg_frames=50; dense=4,16,64; shift ;;
-    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '3,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Tables and the cost-against-load plot of tools/bench/bench.sh (docs/PERFORMANCE.md).
 
 usage: tools/bench/plot_bench.py OUT_DIR

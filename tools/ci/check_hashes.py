@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Check that every commit and tag cited in the repository's Markdown exists.
 
     python3 tools/ci/check_hashes.py [FILE.md ...]

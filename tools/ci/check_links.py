@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Check every relative link and #anchor in the repository's tracked Markdown files.
 
     python3 tools/ci/check_links.py [FILE.md ...]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Check that docs/FORMATS.md's settings table is `mtt-track --list-settings`.
 
     tools/ci/check_settings_doc.py --mtt-track build/host-float/tools/track/mtt-track \

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/ci-firmware.sh - the firmware proof (docs/FIRMWARE.md), one CI step.
 #
 #   1. installs what it needs when missing (Debian, as root; apt-get update

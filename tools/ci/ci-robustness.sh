@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/ci-robustness.sh - the robustness step of CI (docs/ROBUSTNESS.md).
 #
 #   ./tools/ci/ci-robustness.sh [--fuzz-seconds N] [--soak-frames N]
@@ -25,7 +26,7 @@ while (($#)); do
   case "$1" in
     --fuzz-seconds) FUZZ_SECONDS="$2"; shift 2 ;;
     --soak-frames) SOAK_FRAMES="$2"; shift 2 ;;
-    -h|--help) sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '3,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "ci-robustness.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done

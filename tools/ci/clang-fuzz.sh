@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/clang-fuzz.sh - sourced by tools/ci/ci-robustness.sh and tools/fuzz/fuzz-long.sh:
 # the sanitizer flags and a Clang that links libFuzzer (docs/ROBUSTNESS.md).
 #

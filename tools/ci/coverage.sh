@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/coverage.sh - line and branch coverage of src/ by the tests.
 #
 #   ./tools/ci/coverage.sh [--check] [float|firmware ...]
@@ -47,7 +48,7 @@ for a in "$@"; do
   case "$a" in
     --check) check=1 ;;
     float|firmware) configs+=("$a") ;;
-    -h|--help) sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '3,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "coverage.sh: unknown argument $a" >&2; exit 2 ;;
   esac
 done

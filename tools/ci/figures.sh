@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The figure store: docs/reports/figures.tsv holds every figure that the
 # docs cite in more than one place (firmware .text, stack, busiest frame,
 # sizeof(mtt_tracker), coverage, headline results), one line each:
@@ -260,7 +261,7 @@ PY
 }
 
 mode="${1:-}"
-[[ -n "$mode" ]] || { sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+[[ -n "$mode" ]] || { sed -n '3,32p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 shift
 STORE=docs/reports/figures.tsv
 case "$mode" in

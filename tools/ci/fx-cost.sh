@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/fx-cost.sh - cost of the fixed-point kernels on Cortex-M0+
 # (docs/FIXED_POINT.md, "Cost"): .text per kernel (arm-none-eabi-gcc
 # -mcpu=cortex-m0plus -mthumb -Os) and instructions per call under

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/fx-mc.sh - float against fixed point on the same detections
 # (docs/FIXED_POINT.md §7, "Float against fixed"): the Monte Carlo of
 # python/mtt_sim (python3 -m mtt_sim.mc) with the float mtt-track and the

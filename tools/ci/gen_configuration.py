@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Generate docs/CONFIGURATION.md's runtime-key tables from `mtt-track --list-settings`.
 
     tools/ci/gen_configuration.py --mtt-track build/host-float/tools/track/mtt-track

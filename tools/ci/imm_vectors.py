@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Reference numbers for the IMM and motion-model unit tests.
 
     python3 tools/ci/imm_vectors.py

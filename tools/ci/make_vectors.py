@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Independent reference computations for docs/ALGORITHMS.md.
 
 Prints docs/TEST_VECTORS.md (Markdown) to stdout. From the repository root:

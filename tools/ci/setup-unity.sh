@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/ci/setup-unity.sh - put the Unity C test framework (ThrowTheSwitch) into
 # .deps/unity/ without reaching GitHub.
 #
@@ -26,7 +27,7 @@ die() { printf 'setup-unity: error: %s\n' "$*" >&2; exit 1; }
 
 case "${1:-}" in
   -h|--help)
-    sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '3,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     exit 0 ;;
   --force) rm -rf "$DEST" ;;
   "") ;;

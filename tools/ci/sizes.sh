@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Print sizeof(mtt_tracker) for the default bounds and for a small firmware
 # configuration, for float and double.  Usage: tools/ci/sizes.sh [CC]
 set -euo pipefail

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """split_vectors.py - reference numbers of the split-target models
-(docs/ALGORITHMS.md §14.3), derived independently of src/split.c.
+(docs/ALGORITHMS.md §14.3), derived independently of src/split/split.c.
 
 numpy only.  A straightforward implementation of the formulas as written
 in §14.3: explicit H, H^s, R^s and matrix inverses, the textbook (standard,
@@ -12,7 +13,7 @@ asserts the numbers this prints:
     python3 tools/ci/split_vectors.py
 
 Library conventions the C code follows and this script states explicitly:
-likelihoods are also printed as ratios to V^-m (what src/split.c returns);
+likelihoods are also printed as ratios to V^-m (what src/split/split.c returns);
 an undetected target has the factor 1 - PD PG and a detected one PD N with
 N untruncated (ALGORITHMS.md §4; PG = 1 gives [S3]'s 1 - PD); an undetected
 target's innovation is 0 in nu^s(theta).
@@ -278,13 +279,6 @@ def main():
     for e, p in sorted(probs_p.items(), key=lambda kv: tuple(-1 if j is None else j for j in kv[0])):
         print("  {%d, %d, %.10g}," % tuple([-1 if j is None else j for j in e] + [p]))
     print("lik ratio (c / lambda^m) = %.10g" % ratio_p)
-
-    probs_c, _, ratio_c, _, _ = split_events(XPS, PPS, R, Z6, PD6, PG6, GAMMA, V6, 0.0, True)
-    print("\n## model 6, coupled two-detection density (option), non-parametric")
-    print("events (j1, j2; -1 = undetected), P(theta):")
-    for e, p in sorted(probs_c.items(), key=lambda kv: tuple(-1 if j is None else j for j in kv[0])):
-        print("  {%d, %d, %.10g}," % tuple([-1 if j is None else j for j in e] + [p]))
-    print("lik ratio (c V^m / m!) = %.10g" % ratio_c)
 
     print("\n## decoupling")
     print("d2 of the model-6 prediction = %.10g" % decouple_d2(XPS, PPS, R))

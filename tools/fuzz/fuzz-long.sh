@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/fuzz/fuzz-long.sh - a long, unseeded libFuzzer run of one harness, to find
 # new bugs (docs/ROBUSTNESS.md).  CI's smoke runs are
 # tools/ci/ci-robustness.sh; this is the run the execution totals come from.
@@ -29,7 +30,7 @@ set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
-usage() { sed -n '2,29p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '3,30p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 if [[ "${1-}" == "-h" || "${1-}" == "--help" ]]; then usage; exit 0; fi
 if (($# < 2 || $# > 3)); then usage >&2; exit 2; fi
 H="$1"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/fuzz_detections.c - libFuzzer harness: the detections CSV reader of
  * mtt-track, mtt_io_read_detections (tools/io/detections.c), on arbitrary bytes.
  *

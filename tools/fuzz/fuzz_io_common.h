@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/fuzz_io_common.h - shared by the reader harnesses: the input bytes
  * become a file that the reader opens by path (the readers of libmtt_io, tools/io/
  * take a path), and the readers' one-line messages are silenced.

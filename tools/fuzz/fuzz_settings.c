@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/fuzz_settings.c - libFuzzer harness: the settings JSON reader of
  * mtt-track, mtt_io_read_settings (tools/io/settings.c), on arbitrary bytes.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/fuzz_tracker.c - libFuzzer harness: mtt_tracker_step on arbitrary
  * frames with arbitrary (valid) parameters, in every association mode that
  * mtt_params_check accepts.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/mtt_check.h - invariants of a tracker after every frame, shared by
  * the libFuzzer harness tools/fuzz/fuzz_tracker.c and the soak program
  * tools/fuzz/soak.c.  Host only (stdio); header-only so each program

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/replay_main.c - a main() for the harnesses without libFuzzer: runs
  * LLVMFuzzerTestOneInput once on every file named (directories: every file
  * in them, sorted).  Used by ctest to replay the seed corpus and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/fuzz/soak.c - mtt-soak: a long run of the tracker on an evolving random
  * scene, checking every invariant after every frame.
  *

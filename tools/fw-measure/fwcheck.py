@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """fwcheck.py - checks and figures of the firmware proof (docs/FIRMWARE.md).
 
   fwcheck.py doubles --nm NM [--float] ELF...  no double-precision helpers in the images

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx_cost.c - instructions per call of the fixed-point kernels
  * (include/mtt/fixed.h) beside the soft-float helpers they replace, on the
  * Cortex-M0+ build under qemu (docs/FIXED_POINT.md, "Cost").

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fx_stage_cost.c - instructions per track of the prediction stage's
  * arithmetic (mtt_kalman_predict + mtt_kalman_innov: ALGORITHMS.md §2, §3),
  * and of the gate's (ALGORITHMS.md §4: gate area, slice half-widths, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* size_main.c - the two images whose difference is the library's cost in
  * a firmware (docs/FIRMWARE.md, tools/ci/ci-firmware.sh):
  *

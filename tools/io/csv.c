@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/csv.c - the CSV line reader: comments, blank lines, CRLF and a UTF-8 byte
  * order mark; fields split at commas and trimmed; the header check.
  */

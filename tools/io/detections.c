@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/detections.c - the detections file (*.det.csv) of docs/FORMATS.md: read whole and
  * validated row by row; the first problem is reported with its line and field,
  * and a bad file gives nothing.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/error.c - the one-line messages of the host I/O library (mtt_io.h):
  *   PROG: FILE:LINE: field 'NAME': message   and   PROG: FILE: key 'PATH': message.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/file.c - opening an input file (a directory is refused here rather than as a
  * read error), and reading a whole file into memory.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/mtt_io.h - libmtt_io, the host I/O library of mtt-track, mtt-bench
  * and the fuzz harnesses: the settings JSON, the detections CSV and the
  * tracks CSV of docs/FORMATS.md, one job per file:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/number.c - numbers in text files: whole-field parsing (strtod, decimal counts),
  * the one conversion into mtt_real (a Q format in the fixed-point build) and
  * back, and the shortest text that reads back as the same double.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/prepared.c - a prepared parameter set (mtt_prepared, mtt_params_prepare)
  * written as C: the constant a firmware compiles and hands to
  * mtt_tracker_load (docs/FIRMWARE.md, "Parameters prepared on the host").

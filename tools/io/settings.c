@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/settings.c - the settings file (JSON) of docs/FORMATS.md, driven by the library's
  * parameter table (mtt_params_info): every key type- and range-checked, with
  * the JSON key path in the message; initial_tracks; and the table printed for

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/io/tracks.c - the tracks file (*.tracks.csv) of docs/FORMATS.md: one row
  * per live track after each scan, in the user's units (the fixed-point
  * build converts from its formats), with enough digits to read back the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* tools/track/mtt_track.c - mtt-track: run the mtt tracker over a detections file.
  *
  *   mtt-track --config S.json --detections D.det.csv --tracks T.tracks.csv

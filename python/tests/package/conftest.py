@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures of the package tests (pytest): the repository, mtt-track, runs of the scenarios.
 
 These tests import the INSTALLED packages mtt and mtt_sim (`pip install .[stonesoup,test]`;

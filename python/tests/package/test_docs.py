@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python examples of docs/PYTHON.md and README.md run and print what the page says."""
 
 import os

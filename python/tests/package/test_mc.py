@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt_sim's Monte Carlo in-process (through the mtt package) gives the same
 tracks and scores as its process-per-run path (mtt-track)."""
 

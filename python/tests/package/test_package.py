@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt.Tracker against mtt-track: the same tracks (ids, status, states to the
 printed precision) on the bundled scenarios, the same settings errors, and
 bad input that raises and changes nothing."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt.stonesoup.MttTracker in a Stone Soup pipeline: a DetectionReader feeds it,
 Stone Soup's GOSPAMetric (through its MultiManager) scores it, and the figures
 equal those of mtt-track's tracks of the same detections scored the same way."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mtt_sim.stonesoup_mc: Stone Soup's JPDA on the Monte Carlo's own detections, scored as mtt's runs."""
 
 import os

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # tools/track/tests/run.sh - one command-line test of mtt-track (ctest cli.CASE).
 #
 #   sh run.sh MTT_TRACK DATA_DIR WORK_DIR CASE
