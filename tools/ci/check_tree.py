@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Checks of the tree's shape that a review would otherwise do by hand.
 
     python3 tools/ci/check_tree.py            # from anywhere inside the repository
