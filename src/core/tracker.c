@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* tracker.c - the per-frame pipeline (ALGORITHMS.md §15; docs/DESIGN.md
- * stages 1-10): mtt_tracker_init, mtt_tracker_step and the statistics.
+ * its nine stages, the mtt_stage values): mtt_tracker_init, mtt_tracker_step and the statistics.
  * This file only sequences the stages; each stage computes in its own
  * file, and the association mode is a row of the mode table (associate.c).
  * In the fixed-point build (docs/FIXED_POINT.md) time is a Q16 count of
