@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* examples/minimal/main.c - README.md's "Using the library" as a program:
- * tracker_setup and tracker_frame as the README writes them, fed 20 frames
- * of synthetic detections (one target at constant velocity, one clutter
- * point per frame), printing the confirmed tracks of each frame.
+/* examples/minimal/main.c - README.md's "Using the library" as a program.
+ * The block from `#include "mtt/mtt.h"` to the end of tracker_frame is the
+ * README's code verbatim (ctest tree.check compares them); main feeds it 20
+ * frames of synthetic detections (one target at constant velocity, one
+ * clutter point per frame) and prints the confirmed tracks of each frame.
  *
  * Exits 0 when the target's track is confirmed by the last frame, 1
  * otherwise (ctest example.minimal runs it).  stdio is the example's own:
@@ -12,10 +13,6 @@
 #include "mtt/mtt.h"
 
 static mtt_tracker trk;              /* all of the tracker's RAM: static in firmware */
-static int confirmed_seen;           /* the program's check, not the README's */
-
-int tracker_setup(void);
-void tracker_frame(mtt_real t, const mtt_meas *m, size_t n);
 
 int tracker_setup(void)
 {
@@ -35,16 +32,33 @@ void tracker_frame(mtt_real t, const mtt_meas *m, size_t n)   /* once per frame 
         mtt_track_view v;
         if (mtt_tracker_track(&trk, i, &v) == MTT_OK && v.confirmed) {
             /* v.id; v.x[0..3] = x, y, vx, vy; v.P; v.existence */
-            printf("t=%4.1f confirmed track %u: x %7.2f y %6.2f vx %5.2f vy %5.2f existence %.3f\n",
-                   (double)t, (unsigned)v.id, (double)v.x[0], (double)v.x[1], (double)v.x[2],
-                   (double)v.x[3], (double)v.existence);
-            confirmed_seen = 1;
         }
     }
 }
 
+/* ---- the program around it: not the README's ---- */
+
+/* Prints frame t's confirmed tracks; returns whether there was one. */
+static int print_confirmed(mtt_real t)
+{
+    size_t i, count;
+    int seen = 0;
+    if (mtt_tracker_count(&trk, &count) != MTT_OK) return 0;
+    for (i = 0; i < count; ++i) {
+        mtt_track_view v;
+        if (mtt_tracker_track(&trk, i, &v) == MTT_OK && v.confirmed) {
+            printf("t=%4.1f confirmed track %u: x %7.2f y %6.2f vx %5.2f vy %5.2f existence %.3f\n",
+                   (double)t, (unsigned)v.id, (double)v.x[0], (double)v.x[1], (double)v.x[2],
+                   (double)v.x[3], (double)v.existence);
+            seen = 1;
+        }
+    }
+    return seen;
+}
+
 int main(void)
 {
+    int confirmed_seen = 0;
     unsigned lcg = 12345u; /* a fixed sequence: the same clutter every run */
     int k;
     if (tracker_setup() != 0) {
@@ -65,8 +79,8 @@ int main(void)
         z[1].y = MTT_R(20.0) + (mtt_real)((lcg >> 16) % 100u);
         z[1].amplitude = MTT_R(0.0);
         z[1].has_amplitude = 0;
-        confirmed_seen = 0; /* the last frame's tracks decide */
         tracker_frame((mtt_real)k, z, 2);
+        confirmed_seen = print_confirmed((mtt_real)k); /* the last frame's tracks decide */
     }
     if (!confirmed_seen) {
         fprintf(stderr, "minimal: no confirmed track after 20 frames\n");

@@ -11,6 +11,8 @@
    linker script) carries "SPDX-License-Identifier: BSD-3-Clause" in its
    first five lines.
 3. No public header (include/mtt/) includes a header of src/.
+4. README.md's C example stands verbatim in examples/minimal/main.c, which
+   CI compiles and runs (ctest example.minimal).
 
 Prints one line per problem (file: what) and a summary; exits 1 on any.
 """
@@ -63,6 +65,18 @@ def main():
                     s = line.strip()
                     if s.startswith("#") and "include" in s and ('"real_ops.h"' in s or "src/" in s or "_internal.h" in s):
                         problems.append(f"{f}:{n}: a public header includes a private one: {s}")
+    readme = os.path.join(ROOT, "README.md")
+    example = os.path.join(ROOT, "examples", "minimal", "main.c")
+    if os.path.isfile(readme) and os.path.isfile(example):
+        import re
+        with open(readme, encoding="utf-8") as fh:
+            blocks = re.findall(r"```c\n(.*?)```", fh.read(), re.S)
+        with open(example, encoding="utf-8") as fh:
+            code = fh.read()
+        if len(blocks) != 1:
+            problems.append(f"README.md: {len(blocks)} C examples, expected 1")
+        elif blocks[0] not in code:
+            problems.append("README.md: its C example is not verbatim in examples/minimal/main.c")
     for p in problems:
         print(p)
     print(f"check_tree: {len(files)} files, {len(problems)} problem(s)")
