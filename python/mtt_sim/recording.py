@@ -7,7 +7,8 @@ sources:
 
 - a CSV file (``"source": "path/to/file.csv"``, relative to the scenario
   file's folder): a header row naming at least ``time``, ``id`` and either
-  ``lat, lon`` or ``x, y`` (other columns are ignored), ``#`` comment lines,
+  ``lat, lon`` or ``x, y``, optionally ``onground`` (true/false/1/0; other
+  columns are ignored), ``#`` comment lines,
   ``time`` in seconds (any epoch) or an ISO 8601 date-time.  Read with the
   standard library: no pandas needed.
 - a sample of the ``traffic`` package's wheel (``"source":
@@ -17,7 +18,9 @@ sources:
   ``$MTT_SIM_CACHE`` (default ``~/.cache/mtt_sim``), or taken from
   ``$MTT_SIM_TRAFFIC_WHEEL``; its ``.json.gz`` sample is read with pandas
   (columns ``timestamp`` in ms, ``icao24`` or ``flight_id``, ``latitude``,
-  ``longitude``).  Nothing of it is ever written into the repository.
+  ``longitude``, and ``onground`` where the sample has it).  With
+  ``airborne_only`` the samples on the ground are left out (a landed
+  aircraft ends there; one that takes off again is absent in between).  Nothing of it is ever written into the repository.
 
 Projection (lat/lon only): the WGS84 local tangent plane at the origin,
 h = 0: geodetic -> ECEF -> east, north (the up component is dropped; the
@@ -176,7 +179,8 @@ def _read_traffic(name: str):
         d = pd.to_datetime(ts, utc=True)
         t = (d - pd.Timestamp(0, tz="UTC")).dt.total_seconds().to_numpy(float)
     return {"source": src, "time": t, "id": df[idcol].astype(str).to_numpy(),
-            "lat": df["latitude"].to_numpy(float), "lon": df["longitude"].to_numpy(float)}
+            "lat": df["latitude"].to_numpy(float), "lon": df["longitude"].to_numpy(float),
+            **({"onground": df["onground"].fillna(False).astype(bool).to_numpy()} if "onground" in df.columns else {})}
 
 
 def _parse_time(text):
@@ -193,6 +197,9 @@ def _parse_time(text):
     if d.tzinfo is None:
         d = d.replace(tzinfo=_dt.timezone.utc)
     return d.timestamp()
+
+
+_BOOL = {"true": True, "1": True, "false": False, "0": False, "": False}
 
 
 def _read_csv(path: str):
@@ -215,7 +222,8 @@ def _read_csv(path: str):
             raise RecordingError(f"{path}:{hn}: field '{c}': missing column (the header must name time, id "
                                  f"and lat, lon or x, y; it has {', '.join(cols)})")
     idx = {c: cols.index(c) for c in ("time", "id") + pos}
-    t, ids, a, b = [], [], [], []
+    gnd = cols.index("onground") if "onground" in cols else None
+    t, ids, a, b, g = [], [], [], [], []
     for n, row in zip((n for n, _ in lines[1:]), csv.reader([ln for _, ln in lines[1:]])):
         if len(row) != len(cols):
             raise RecordingError(f"{path}:{n}: {len(row)} fields, the header has {len(cols)}")
@@ -237,6 +245,11 @@ def _read_csv(path: str):
             vals.append(v)
         if pos == ("lat", "lon") and not (-90.0 <= vals[0] <= 90.0 and -180.0 <= vals[1] <= 360.0):
             raise RecordingError(f"{path}:{n}: field 'lat'/'lon': {vals[0]}, {vals[1]} out of range")
+        if gnd is not None:
+            gs = row[gnd].strip().lower()
+            if gs not in _BOOL:
+                raise RecordingError(f"{path}:{n}: field 'onground': '{row[gnd]}' is not true/false/1/0/empty")
+            g.append(_BOOL[gs])
         t.append(tv)
         ids.append(tid)
         a.append(vals[0])
@@ -246,6 +259,8 @@ def _read_csv(path: str):
     out = {"source": path, "time": np.array(t, float), "id": np.array(ids, dtype=object)}
     out[pos[0]] = np.array(a, float)
     out[pos[1]] = np.array(b, float)
+    if gnd is not None:
+        out["onground"] = np.array(g, bool)
     return out
 
 
@@ -285,7 +300,7 @@ def _spec_dir(scn):
 
 
 def _planar(rec, spec):
-    """(time, id, x, y) arrays of the recording in the scenario's plane, after the ids filter."""
+    """(time, id, x, y) arrays of the recording in the scenario's plane, after the ids and onground filters."""
     keep = np.ones(len(rec["time"]), bool)
     if spec.get("ids") is not None:
         want = {str(i) for i in spec["ids"]}
@@ -293,6 +308,11 @@ def _planar(rec, spec):
         missing = want - set(str(i) for i in rec["id"][keep])
         if missing:
             raise RecordingError(f"{rec['source']}: ids {', '.join(sorted(missing))} not in the recording")
+    if spec.get("airborne_only"):
+        if "onground" not in rec:
+            raise RecordingError(f"{rec['source']}: 'airborne_only' needs an 'onground' column; "
+                                 f"this recording has none")
+        keep &= ~rec["onground"]
     if "lat" in rec:
         origin = spec.get("origin")
         if origin is None:

@@ -66,7 +66,8 @@ _TOP_KEYS = {
     "random_targets", "splits", "truth", "tracker", "tracker_notes", "metrics", "report",
 }
 _TRUTH_KEYS = {"recording"}
-_RECORDING_KEYS = {"source", "origin", "start", "duration", "ids", "min_points", "max_gap", "first_id"}
+_RECORDING_KEYS = {"source", "origin", "start", "duration", "ids", "min_points", "max_gap", "first_id",
+                   "airborne_only"}
 _AREA_KEYS = {"x", "y"}
 _SCAN_KEYS = {"count", "dt", "t0"}
 _CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
@@ -282,6 +283,8 @@ def _recording(scn, ids, source):
         if (not isinstance(v, list) or not v
                 or any(isinstance(a, bool) or not isinstance(a, (str, int)) for a in v)):
             _err(source, w + ".ids", "must be a non-empty list of the recording's ids (strings or integers)")
+    if "airborne_only" in rec and not isinstance(rec["airborne_only"], bool):
+        _err(source, w + ".airborne_only", "must be true or false")
     for k in ("targets", "groups", "random_targets", "splits", "truth_process_psd"):
         if k in scn:
             _err(source, k, "not with truth.recording (the recording is the whole truth)")

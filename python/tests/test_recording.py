@@ -177,6 +177,19 @@ class TestCsvTruth(unittest.TestCase):
         scn = scn_file(d, overrides=["truth.recording.min_points=4"])
         self.assertEqual(sorted(by_target(gen.generate(scn, 0)["truth"])), [9])  # 7 has 3 samples
 
+    def test_airborne_only(self):
+        d = tmpdir(self)
+        text = "time,id,x,y,onground\n100,5,0,0,true\n102,5,10,0,1\n104,5,20,0,false\n106,5,30,0,\n108,5,40,0,0\n"
+        self.assertEqual(sorted(by_target(gen.generate(scn_file(d, text), 0)["truth"])[5]), [0, 1, 2, 3, 4])
+        scn = scn_file(d, text, overrides=["truth.recording.airborne_only=true"])
+        self.assertEqual(sorted(by_target(gen.generate(scn, 0)["truth"])[5]), [2, 3, 4])  # the taxi is left out
+        with self.assertRaisesRegex(scenario.ScenarioError, r"rec\.csv:3: field 'onground': 'yes'"):
+            scn_file(d, text.replace(",1\n", ",yes\n"))
+        with self.assertRaisesRegex(scenario.ScenarioError, r"'airborne_only' needs an 'onground' column"):
+            gen.generate(scn_file(d, overrides=["truth.recording.airborne_only=true"]), 0)
+        with self.assertRaisesRegex(scenario.ScenarioError, r"key 'truth\.recording\.airborne_only': must be true or false"):
+            scn_file(d, overrides=["truth.recording.airborne_only=1"])
+
     def test_lat_lon_and_iso_times(self):
         d = tmpdir(self)
         text = ("time,id,lat,lon\n"
@@ -271,11 +284,11 @@ def fake_wheel(path, samples):
 
 ORBIT = [  # a traffic-like sample: epoch ms, icao24, degrees, and columns the reader ignores
     {"timestamp": 1515748470000 + 5000 * i, "icao24": "39b415", "latitude": 0.0, "longitude": 0.002 * i,
-     "groundspeed": 158, "track": 90, "callsign": "CALIBRA", "altitude": 1000}
+     "groundspeed": 158, "track": 90, "callsign": "CALIBRA", "altitude": 1000, "onground": False}
     for i in range(5)
 ] + [
     {"timestamp": 1515748480000 + 5000 * i, "icao24": "400123", "latitude": 0.001 * i, "longitude": 0.0,
-     "groundspeed": 100, "track": 0, "callsign": "X", "altitude": 2000}
+     "groundspeed": 100, "track": 0, "callsign": "X", "altitude": 2000, "onground": i == 0}
     for i in range(3)
 ]
 
@@ -316,6 +329,9 @@ class TestTrafficWheel(unittest.TestCase):
         self.assertEqual(sorted(tr[1]), [2, 3, 4])  # starts 10 s after the first sample
         north = 6378137.0 * (1 - 0.0066943799901413165) * math.sin(math.radians(0.001))
         self.assertAlmostEqual(tr[1][4][2], 2 * north, delta=1e-2)
+        # airborne_only: 400123's first sample (10 s) is on the ground
+        scn = scenario.loads(json.dumps(s), "t.json", ["truth.recording.airborne_only=true"])
+        self.assertEqual(sorted(by_target(gen.generate(scn, 0)["truth"])[1]), [3, 4])
 
     def test_unknown_sample_lists_available(self):
         s = copy.deepcopy(BASE)
