@@ -164,7 +164,8 @@ def _read_traffic(name: str):
     with zipfile.ZipFile(wheel) as z:
         with z.open(member) as fh:
             try:
-                df = pd.read_json(fh, compression="gzip", dtype={"icao24": str, "flight_id": str})
+                df = pd.read_json(fh, compression="gzip", dtype={"icao24": str, "flight_id": str},
+                                  precise_float=True)  # exact decimal parsing: the same bytes everywhere
             except ValueError as e:
                 raise RecordingError(f"{src}: not a JSON records file: {e}") from None
     idcol = "flight_id" if "flight_id" in df.columns else "icao24"

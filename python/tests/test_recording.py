@@ -14,8 +14,6 @@ import tempfile
 import unittest
 import zipfile
 
-import numpy as np
-
 from mtt_sim import csvio, gen, recording, scenario
 
 HERE = os.path.dirname(os.path.abspath(__file__))
