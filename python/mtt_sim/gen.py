@@ -21,6 +21,10 @@ Model (every number comes from the scenario, see scenarios/README.md):
   ``truth_process_psd`` Sw > 0, each scan adds w ~ N(0, Q) with
   Q = Sw [[dt^3/3, dt^2/2], [dt^2/2, dt]] per axis (continuous white-noise
   acceleration, the tracker's own model); with Sw = 0 the motion is exact.
+- With ``"truth": {"recording": ...}`` the targets are a recording's instead
+  (mtt_sim/recording.py: the local tangent plane, linear interpolation at
+  the scan times, absent in gaps longer than ``max_gap``); it draws nothing
+  from the truth stream, and everything below applies unchanged.
 - A target is in the sensor's field at scan k when first_scan <= k <=
   last_scan and its position is inside the area (bounds inclusive).  Only
   then does it have a truth row and a chance to be detected.

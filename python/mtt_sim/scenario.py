@@ -3,7 +3,8 @@
 
 The schema is documented in ``scenarios/README.md``.  In short, a scenario is
 one JSON object describing the sensor (area, scans, PD, noise, clutter,
-amplitudes), the targets (explicit, grouped formations, random, splits), the
+amplitudes), the targets (explicit, grouped formations, random, splits, or
+a recording: ``truth.recording``, mtt_sim/recording.py), the
 tracker settings object passed verbatim to ``mtt-track`` (key ``tracker``),
 and scoring / reporting parameters (``metrics``, ``report``).
 
