@@ -21,6 +21,10 @@ Model (every number comes from the scenario, see scenarios/README.md):
   ``truth_process_psd`` Sw > 0, each scan adds w ~ N(0, Q) with
   Q = Sw [[dt^3/3, dt^2/2], [dt^2/2, dt]] per axis (continuous white-noise
   acceleration, the tracker's own model); with Sw = 0 the motion is exact.
+- With ``"truth": {"recording": ...}`` the targets are a recording's instead
+  (mtt_sim/recording.py: the local tangent plane, linear interpolation at
+  the scan times, absent in gaps longer than ``max_gap``); it draws nothing
+  from the truth stream, and everything below applies unchanged.
 - A target is in the sensor's field at scan k when first_scan <= k <=
   last_scan and its position is inside the area (bounds inclusive).  Only
   then does it have a truth row and a chance to be detected.
@@ -116,8 +120,31 @@ def _turn(s, w, dt):
     s[3] = sn * vx + cs * vy
 
 
+def _recorded_truth(scn, times):
+    """_truth for ``truth.recording``: interpolated recorded positions, clipped to the area."""
+    from . import recording  # noqa: PLC0415 (only for a recording)
+
+    a = scn["area"]
+    pd = float(scn["pd"])
+    tracks = recording.truth_tracks(scn, times)
+    rows = []
+    present = [[] for _ in times]
+    for tid in sorted(tracks):
+        pres, x, y, vx, vy = tracks[tid]
+        inside = pres & (x >= a["x"][0]) & (x <= a["x"][1]) & (y >= a["y"][0]) & (y <= a["y"][1])
+        for k in np.flatnonzero(inside):
+            present[k].append((tid, float(x[k]), float(y[k]), pd, None))
+    for k, pres in enumerate(present):  # rows in scan order, ids ascending within a scan
+        for tid, x, y, _, _ in pres:
+            rows.append((k, times[k], tid, x, y, float(tracks[tid][3][k]), float(tracks[tid][4][k])))
+    return rows, present
+
+
 def _truth(scn, rng, times):
     """Return (truth table, per-scan list of (id, x, y, pd) present)."""
+    if "truth" in scn:
+        rows, present = _recorded_truth(scn, times)
+        return _truth_table(rows), present
     nscan = len(times)
     dt = float(scn["scans"]["dt"])
     psd = float(scn.get("truth_process_psd", 0.0))
@@ -183,13 +210,17 @@ def _truth(scn, rng, times):
                 rows.append((k, times[k], tid, s[0], s[1], s[2], s[3]))
                 pres.append((tid, s[0], s[1], byid[tid]["pd"], byid[tid].get("rho")))
         present.append(pres)
+    return _truth_table(rows), present
+
+
+def _truth_table(rows):
     truth = csvio.empty_truth()
     if rows:
         c = list(zip(*rows))
         truth = {"scan": np.array(c[0], int), "time": np.array(c[1], float), "target": np.array(c[2], int),
                  "x": np.array(c[3], float), "y": np.array(c[4], float),
                  "vx": np.array(c[5], float), "vy": np.array(c[6], float)}
-    return truth, present
+    return truth
 
 
 def _merge_unresolved(xy, amp, origin, r):

@@ -446,6 +446,8 @@ def monte_carlo(scn: dict, modes, runs: int, exe: str, jobs: int | None = None, 
         ctx = multiprocessing.get_context("fork")
         pool = ctx.Pool(jobs, initializer=_init_worker, initargs=(scn, exe, keep_root, timeout))
         it = pool.imap_unordered(_work, items, chunksize=1)
+    if progress is not None:  # a long run (a recording) shows the line before its first result
+        _progress(0, len(items), t0, progress)
     try:
         for res in it:
             aggs[res["mode"]].add(res)

@@ -3,7 +3,8 @@
 
 The schema is documented in ``scenarios/README.md``.  In short, a scenario is
 one JSON object describing the sensor (area, scans, PD, noise, clutter,
-amplitudes), the targets (explicit, grouped formations, random, splits), the
+amplitudes), the targets (explicit, grouped formations, random, splits, or
+a recording: ``truth.recording``, mtt_sim/recording.py), the
 tracker settings object passed verbatim to ``mtt-track`` (key ``tracker``),
 and scoring / reporting parameters (``metrics``, ``report``).
 
@@ -63,8 +64,11 @@ TRACKER_DEFAULTS = {"meas_sigma": [1.0, 1.0], "pg": 0.999, "association": "lm-ih
 _TOP_KEYS = {
     "name", "description", "source", "units", "area", "scans", "pd", "meas_sigma",
     "clutter", "amplitude", "truth_process_psd", "resolution", "targets", "groups",
-    "random_targets", "splits", "tracker", "tracker_notes", "metrics", "report",
+    "random_targets", "splits", "truth", "tracker", "tracker_notes", "metrics", "report",
 }
+_TRUTH_KEYS = {"recording"}
+_RECORDING_KEYS = {"source", "origin", "start", "duration", "ids", "min_points", "max_gap", "first_id",
+                   "airborne_only"}
 _AREA_KEYS = {"x", "y"}
 _SCAN_KEYS = {"count", "dt", "t0"}
 _CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
@@ -112,6 +116,10 @@ def loads(text: str, source: str = "<string>", overrides=None) -> dict:
         apply_overrides(scn, overrides, source)
     validate(scn, source)
     scn["_source"] = source
+    if "truth" in scn and "count" not in scn["scans"]:
+        from . import recording  # noqa: PLC0415 (reads a file: only for a recording)
+
+        scn["scans"]["count"] = recording.scan_count(scn)
     return scn
 
 
@@ -250,6 +258,41 @@ def _manoeuvres(t, source, where):
         end = int(k0) + int(m["scans"])
 
 
+def _recording(scn, ids, source):
+    """``truth``: {"recording": {...}}, the truth from a recording (mtt_sim/recording.py)."""
+    tr = scn["truth"]
+    _check_keys(tr, _TRUTH_KEYS, source, "truth")
+    if "recording" not in tr:
+        _err(source, "truth.recording", "missing")
+    w = "truth.recording"
+    rec = tr["recording"]
+    _check_keys(rec, _RECORDING_KEYS, source, w)
+    src = rec.get("source")
+    if not isinstance(src, str) or not src.strip():
+        _err(source, w + ".source", "must be 'traffic:NAME' or a CSV path (columns time,id,lat,lon or time,id,x,y)")
+    if rec.get("origin") is not None:
+        o = _pair(rec, "origin", source, w)
+        if not (-90 <= o[0] <= 90 and -180 <= o[1] <= 360):
+            _err(source, w + ".origin", "must be [lat, lon] in degrees")
+    _num(rec, "start", source, w, lo=0, required=False)
+    _num(rec, "duration", source, w, lo=0, lo_open=True, required=False)
+    _num(rec, "min_points", source, w, lo=2, integer=True, required=False)
+    _num(rec, "max_gap", source, w, lo=0, lo_open=True, required=False)
+    _num(rec, "first_id", source, w, lo=0, integer=True, required=False)
+    if rec.get("ids") is not None:
+        v = rec["ids"]
+        if (not isinstance(v, list) or not v
+                or any(isinstance(a, bool) or not isinstance(a, (str, int)) for a in v)):
+            _err(source, w + ".ids", "must be a non-empty list of the recording's ids (strings or integers)")
+    if "airborne_only" in rec and not isinstance(rec["airborne_only"], bool):
+        _err(source, w + ".airborne_only", "must be true or false")
+    for k in ("targets", "groups", "random_targets", "splits", "truth_process_psd"):
+        if k in scn:
+            _err(source, k, "not with truth.recording (the recording is the whole truth)")
+    if scn["tracker"].get("initial_tracks") if isinstance(scn.get("tracker"), dict) else False:
+        _err(source, "tracker.initial_tracks", "not with truth.recording (no seeded targets)")
+
+
 def validate(scn: dict, source: str = "<string>") -> None:
     """Raise ScenarioError naming the first bad key; return None if valid."""
     _check_keys(scn, _TOP_KEYS, source, "")
@@ -260,7 +303,7 @@ def validate(scn: dict, source: str = "<string>") -> None:
     _pair(scn["area"], "x", source, "area", increasing=True)
     _pair(scn["area"], "y", source, "area", increasing=True)
     _check_keys(scn.get("scans"), _SCAN_KEYS, source, "scans")
-    _num(scn["scans"], "count", source, "scans", lo=1, integer=True)
+    _num(scn["scans"], "count", source, "scans", lo=1, integer=True, required="truth" not in scn)
     _num(scn["scans"], "dt", source, "scans", lo=0, lo_open=True)
     _num(scn["scans"], "t0", source, "scans", required=False)
     _num(scn, "pd", source, "", lo=0, hi=1)
@@ -341,7 +384,9 @@ def validate(scn: dict, source: str = "<string>") -> None:
         if s["child"] in ids:
             _err(source, w + ".child", "target id already used")
         ids.add(int(s["child"]))
-    if not ids:
+    if "truth" in scn:
+        _recording(scn, ids, source)
+    elif not ids:
         _err(source, "targets", "the scenario has no target")
 
     trk = scn.get("tracker")
