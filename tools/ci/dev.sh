@@ -35,7 +35,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
-PY_MODULES=(numpy matplotlib)
+PY_MODULES=(numpy matplotlib pandas)
 WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
@@ -113,9 +113,9 @@ deps_python() {
   # A Debian system python refuses pip (PEP 668): take Debian's packages.
   if [[ "$(command -v python3)" == /usr/bin/python3 ]] && is_root && command -v apt-get >/dev/null 2>&1; then
     apt_update_once
-    say "apt-get install python3-numpy python3-matplotlib"
+    say "apt-get install python3-numpy python3-matplotlib python3-pandas"
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-      python3-numpy python3-matplotlib >/dev/null
+      python3-numpy python3-matplotlib python3-pandas >/dev/null
     python3 -c "import $mods" && return 0
   fi
   die "could not install python modules ${PY_MODULES[*]}"
