@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""The tables of docs/RESULTS.md "Identity keeping and amplitude".
+"""The tables of docs/reports/IDENTITY.md.
 
 rows: one `python3 -m mtt_sim.mc` call per row (association mode plus
 settings overrides), all on seeds 0..N-1, so every row sees the same

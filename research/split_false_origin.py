@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Where a scenario's split-off tracks come from (docs/RESULTS.md "Split targets").
+"""Where a scenario's split-off tracks come from (docs/reports/MOTION.md "Split targets").
 
 For every split-off track (non-empty ``parent`` in the tracks file) of
 RUNS runs: the detection nearest its first estimate (within 3 sigma) and

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Figures of docs/RESULTS.md "Reproducing the papers": our Monte Carlo results beside the papers' numbers.
+"""Figures of docs/reports/RESULTS.md: our Monte Carlo results beside the papers' numbers.
 
     PYTHONPATH=python python3 -m mtt_sim.plot_papers crossing3 out/crossing3/summary.json --out docs/img/crossing3_confirmed_true.png
     PYTHONPATH=python python3 -m mtt_sim.plot_papers rates --out docs/img/coalesce3_rates.png \\

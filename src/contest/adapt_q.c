@@ -22,7 +22,7 @@
 
 void mtt_adapt_defaults(mtt_params *p)
 {
-    /* ALGORITHMS.md §2.1 [CHOICE, measured in docs/RESULTS.md] */
+    /* ALGORITHMS.md §2.1 [CHOICE, measured in docs/reports/IDENTITY.md] */
     p->adapt_s_min = MTT_R(0.01);
     p->adapt_index = MTT_R(1.0);
     p->adapt_memory = MTT_R(0.8);

@@ -30,7 +30,7 @@
  * transition matrix, the rest of each row spread evenly, every track
  * starting in model 0; the slots beyond r are 0.  (0.99 rather than a
  * quicker 0.95: on straight targets in heavy clutter every switch into the
- * manoeuvre model costs; docs/RESULTS.md "Manoeuvring targets: IMM".) */
+ * manoeuvre model costs; docs/reports/MOTION.md "Manoeuvring targets: IMM".) */
 void mtt_params_imm_reset(mtt_params *p, uint8_t r)
 {
     uint8_t i, j;
@@ -171,7 +171,7 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
 #if MTT_WITH_SPLIT
     p->split_confirm = PDEF(split_confirm, 0.97);
     /* [CHOICE, measured on the seeds 1000+ of split_fast.json,
-     * crossing3.json and formations.json, docs/RESULTS.md "Split targets"] */
+     * crossing3.json and formations.json, docs/reports/MOTION.md "Split targets"] */
     p->split_decide = PDEF(split_decide, 0.9);
     p->split_provisional_exist = PDEF(split_provisional_exist, 0.6);
     p->split_provisional_scans = PDEF(split_provisional_scans, 3.0);

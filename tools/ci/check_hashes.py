@@ -25,6 +25,7 @@ clone misses old commits: run it on a full clone (CI: fetch-depth 0).
 Prints one line per unresolved citation (file:line: text: reason) and exits
 1 if there is any, else prints a summary and exits 0. Standard library only.
 """
+import bisect
 import os
 import re
 import subprocess
@@ -82,14 +83,7 @@ def citations(text):
         starts.append(starts[-1] + len(line) + 1)
 
     def line_of(pos):
-        lo, hi = 0, len(starts) - 1
-        while lo < hi:
-            mid = (lo + hi + 1) // 2
-            if starts[mid] <= pos:
-                lo = mid
-            else:
-                hi = mid - 1
-        return lo + 1
+        return bisect.bisect_right(starts, pos)
 
     seen = set()
     for rx in (SPAN_HASH, WORD_HASH):

@@ -4,9 +4,9 @@
 
     python3 tools/ci/check_tree.py            # from anywhere inside the repository
 
-1. Size caps of the docs: README.md <= 10 KB, a reference doc in docs/ <=
-   40 KB, docs/ALGORITHMS.md <= 80 KB (the reports in docs/reports/ and
-   CHANGELOG.md have none).
+1. Size caps of the docs: README.md <= 10 KB, a reference doc in docs/ or
+   a report in docs/reports/ <= 40 KB, docs/ALGORITHMS.md <= 80 KB
+   (CHANGELOG.md, the history, has none).
 2. Every tracked source file (C, C++, headers, Python, shell, CMake, the
    linker script) carries "SPDX-License-Identifier: BSD-3-Clause" in its
    first five lines.
@@ -50,7 +50,7 @@ def main():
             continue
         size = os.path.getsize(path)
         cap = CAPS.get(f)
-        if cap is None and f.startswith("docs/") and f.endswith(".md") and f.count("/") == 1:
+        if cap is None and f.startswith("docs/") and f.endswith(".md") and f.count("/") <= 2:
             cap = REF_CAP
         if cap is not None and size > cap:
             problems.append(f"{f}: {size} bytes, over its cap of {cap}")

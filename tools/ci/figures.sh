@@ -33,13 +33,10 @@
 set -euo pipefail
 ROOT="$(git -C "$(dirname "$0")" rev-parse --show-toplevel)"
 cd "$ROOT"
-# the measuring scripts live in tools/ci/ (scripts/ before the layout change)
+# the measuring scripts, beside this one
 find_script() {
-  local d
-  for d in tools/ci scripts; do
-    [[ -f "$d/$1" ]] && { echo "$d/$1"; return 0; }
-  done
-  echo "figures.sh: $1 not found in tools/ci/ or scripts/" >&2
+  [[ -f "tools/ci/$1" ]] && { echo "tools/ci/$1"; return 0; }
+  echo "figures.sh: tools/ci/$1 not found" >&2
   return 1
 }
 # the checker, updater and parser (Python 3, standard library only)
