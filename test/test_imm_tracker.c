@@ -115,6 +115,34 @@ static void compare_runs(const mtt_params *pa, const mtt_params *pb,
     }
 }
 
+/* Both runs side by side; `seen` on the tracks of equal index while the
+ * counts agree, differing += 1 per frame where they do not. */
+static size_t differing;
+static void compare_runs_free(const mtt_params *pa, const mtt_params *pb,
+                              void (*seen)(const mtt_track_view *va, const mtt_track_view *vb))
+{
+    int k;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, pa));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, pb));
+    for (k = 0; k < FRAMES; ++k) {
+        size_t na, nb, i;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, (mtt_real)k, scene[k], (size_t)scene_n[k]));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
+        if (na != nb) {
+            ++differing;
+            continue;
+        }
+        for (i = 0; i < na; ++i) {
+            mtt_track_view va, vb;
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
+            seen(&va, &vb);
+        }
+    }
+}
+
 static void same_as_cv(const mtt_track_view *va, const mtt_track_view *vb)
 {
     int j;
@@ -297,7 +325,10 @@ static void test_nees_manoeuvre(void)
 }
 
 /* Confirmed tracks with existence > 0.5 after the scene, from initiation;
- * their model probabilities sum to 1. */
+ * their model probabilities sum to 1.  g_contest: the contest variant;
+ * g_accel > 0: the motion from max_accel = g_accel. */
+static int g_contest;
+static mtt_real g_accel;
 static size_t run_found(mtt_assoc mode, mtt_motion motion)
 {
     mtt_params p;
@@ -305,6 +336,13 @@ static size_t run_found(mtt_assoc mode, mtt_motion motion)
     int k;
     base_params(&p, mode);
     p.motion = motion; /* imm: the defaults, CV + CA, both with Sw */
+    if (g_contest) {
+        p.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
+    }
+    if (g_accel > MTT_R(0.0)) {
+        p.max_accel = g_accel; /* the motion from max_accel (ALGORITHMS.md §2.2) */
+        p.process_psd = MTT_R(0.0);
+    }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, NULL));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     for (k = 0; k < FRAMES; ++k) {
@@ -320,7 +358,7 @@ static size_t run_found(mtt_assoc mode, mtt_motion motion)
         }
         if (v.confirmed && v.existence > MTT_R(0.5)) {
             ++conf;
-            TEST_ASSERT_EQUAL_UINT8(motion == MTT_MOTION_IMM ? 2u : 1u, v.n_models);
+            TEST_ASSERT_EQUAL_UINT8(motion != MTT_MOTION_CV ? 2u : 1u, v.n_models);
             TEST_ASSERT_FLOAT_WITHIN(1e-4, 1.0, (double)(v.mu[0] + v.mu[1]));
         }
     }
@@ -371,25 +409,79 @@ static void test_unsupported_modes_refuse(void)
     }
 }
 
-/* The contest variant of lm-ihpda (ALGORITHMS.md §10.4) has no IMM form:
- * with motion imm lm-ihpda runs [S0] whatever the variant (the default is
- * contest, so IMM settings need not name s0): accepted, and frame for
- * frame identical to s0. */
-static void bit_identical(const mtt_track_view *va, const mtt_track_view *vb)
+/* The contest variant of lm-ihpda (ALGORITHMS.md §10.4, §2.1) with IMM: it
+ * holds the three crossing targets as [S0] does, and its contested updates
+ * and noise scale make it another filter (not frame for frame [S0]). */
+static void count_differing(const mtt_track_view *va, const mtt_track_view *vb)
 {
-    TEST_ASSERT_EQUAL_INT32(va->meas, vb->meas);
-    TEST_ASSERT_TRUE(va->x[0] == vb->x[0] && va->x[1] == vb->x[1] && va->existence == vb->existence);
+    differing += (va->x[0] != vb->x[0] || va->x[1] != vb->x[1]) ? 1u : 0u;
 }
 
-static void test_contest_with_imm_runs_s0(void)
+static void test_contest_with_imm(void)
 {
     mtt_params pa, pb;
     make_scene();
+    g_contest = 1;
+    TEST_ASSERT_EQUAL_UINT64(3u, (uint64_t)run_found(MTT_ASSOC_LM_IHPDA, MTT_MOTION_IMM));
+    g_contest = 0;
     base_params(&pa, MTT_ASSOC_LM_IHPDA);
     pa.motion = MTT_MOTION_IMM;
     pb = pa;
     pb.lm_ihpda_variant = MTT_LM_IHPDA_CONTEST;
-    compare_runs(&pa, &pb, bit_identical);
+    pb.adapt_s_max = MTT_R(100.0);
+    differing = 0;
+    compare_runs_free(&pa, &pb, count_differing);
+    TEST_ASSERT_TRUE(differing > 0u);
+}
+
+/* max_accel alone (ALGORITHMS.md §2.2): motion auto resolves to two cv
+ * models, steady (a/10)^2 dT and manoeuvring a^2 dT, with switching from
+ * the manoeuvre time vmax/a; explicit keys override; the derived tracker
+ * holds the three targets. */
+static void test_motion_from_max_accel(void)
+{
+    mtt_params p, r;
+    size_t found;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.max_accel = MTT_R(2.0);
+    p.vmax = MTT_R(40.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_IMM, r.motion);
+    TEST_ASSERT_EQUAL_UINT8(2u, r.imm_n_models);
+    TEST_ASSERT_EQUAL_INT(MTT_MODEL_CV, r.imm_model[0]);
+    TEST_ASSERT_EQUAL_INT(MTT_MODEL_CV, r.imm_model[1]);
+    TV_ASSERT_REAL(4.0, r.process_psd);  /* a^2 at dT = 1 */
+    TV_ASSERT_REAL(0.04, r.imm_psd[0]);  /* (a/10)^2 */
+    TV_ASSERT_REAL(4.0, r.imm_psd[1]);
+    /* leaving the manoeuvre at 1/tau = a/vmax = 0.05, entering at 0.005:
+     * Pi01 = 0.005 (1 - e^-0.055)/0.055 */
+    TEST_ASSERT_FLOAT_WITHIN(1e-6, 0.005 * (1.0 - exp(-0.055)) / 0.055, (double)r.imm_transition[0][1]);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6, 0.05 * (1.0 - exp(-0.055)) / 0.055, (double)r.imm_transition[1][0]);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6, 1.0, (double)(r.imm_transition[1][0] + r.imm_transition[1][1]));
+    TV_ASSERT_REAL(2.0, r.split_dv);     /* a dT */
+    /* an explicit process_psd: the plain cv filter of §2 */
+    p.process_psd = MTT_R(3.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_CV, r.motion);
+    TV_ASSERT_REAL(3.0, r.process_psd);
+    /* neither given: 5 */
+    p.process_psd = MTT_R(0.0);
+    p.max_accel = MTT_R(0.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_CV, r.motion);
+    TV_ASSERT_REAL(5.0, r.process_psd);
+    /* a mode without the IMM: cv with a^2 dT */
+    p.max_accel = MTT_R(2.0);
+    p.association = MTT_ASSOC_IHPDA_2D;
+    if (MTT_WITH_BASELINES) {
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+        TEST_ASSERT_EQUAL_INT(MTT_MOTION_CV, r.motion);
+    }
+    make_scene();
+    g_accel = MTT_R(1.0);
+    found = run_found(MTT_ASSOC_LM_IHPDA, MTT_MOTION_AUTO);
+    g_accel = MTT_R(0.0);
+    TEST_ASSERT_EQUAL_UINT64(3u, (uint64_t)found);
 }
 
 static void test_imm_keys_checked(void)
@@ -410,11 +502,12 @@ static void test_imm_keys_checked(void)
     TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
     TEST_ASSERT_EQUAL_STRING("imm_models", bad);
     base_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.imm_psd[0] = MTT_R(1.0); /* imm_models given in part: model 1's psd 0 */
     p.imm_psd[1] = MTT_R(0.0);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
     TEST_ASSERT_EQUAL_STRING("imm_models", bad);
     base_params(&p, MTT_ASSOC_LM_IHPDA);
-    p.motion = (mtt_motion)2;
+    p.motion = (mtt_motion)3;
     TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
     TEST_ASSERT_EQUAL_STRING("motion", bad);
 }
@@ -501,7 +594,8 @@ int main(void)
 #if MTT_WITH_IMM
     RUN_TEST(test_imm_keys_checked);
     RUN_TEST(test_unsupported_modes_refuse);
-    RUN_TEST(test_contest_with_imm_runs_s0);
+    RUN_TEST(test_contest_with_imm);
+    RUN_TEST(test_motion_from_max_accel);
     RUN_TEST(test_supported_modes_run);
     RUN_TEST(test_identical_cv_models_are_cv);
     RUN_TEST(test_nees_manoeuvre);

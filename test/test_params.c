@@ -20,7 +20,9 @@ static void test_defaults_match_formats_table(void)
     memset(&p, 0xa5, sizeof p);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     TEST_ASSERT_EQUAL_INT(MTT_ASSOC_LM_IHPDA, p.association); /* lm-ihpda */
-    TV_ASSERT_REAL(5.0, p.process_psd);
+    TV_ASSERT_REAL(0.0, p.process_psd); /* not given: from max_accel, else 5 (ALGORITHMS.md §2.2) */
+    TV_ASSERT_REAL(0.0, p.max_accel);
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_AUTO, p.motion);
     TV_ASSERT_REAL(1.0, p.meas_sigma[0]);
     TV_ASSERT_REAL(1.0, p.meas_sigma[1]);
     TV_ASSERT_REAL(0.9, p.pd);
@@ -132,7 +134,7 @@ static void check_good(enum field f, mtt_real v, const char *name)
 static void test_each_field_out_of_range(void)
 {
     static const struct bad_case cases[] = {
-        {F_PSD, 0.0, "process_psd"}, {F_PSD, -1.0, "process_psd"},
+        {F_PSD, -1.0, "process_psd"},
         {F_SX, 0.0, "meas_sigma"}, {F_SY, -2.0, "meas_sigma"},
         {F_PD, 0.0, "pd"}, {F_PD, 1.5, "pd"}, {F_PD, -0.1, "pd"},
         {F_PG, 0.0, "pg"}, {F_PG, 1.0, "pg"},

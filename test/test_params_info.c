@@ -32,10 +32,10 @@ static size_t n_values(const mtt_param_info *info)
 static void test_table_lists_the_settings_keys(void)
 {
     static const char *const keys[] = {
-        "association", "lm_ihpda_variant", "contest_beta", "process_psd", "meas_sigma", "pd",
+        "association", "lm_ihpda_variant", "contest_beta", "process_psd", "max_accel", "meas_sigma", "pd",
         "pg", "clutter_density", "snr_rho", "amplitude_eta",
 #if MTT_WITH_CONTEST
-        "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis",
+        "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "adapt_s_max",
 #endif
         "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
         "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
@@ -63,7 +63,7 @@ static void test_table_lists_the_settings_keys(void)
                                                               : info->per_model == 1 || info->type == MTT_PARAM_MODELS
                                                                   ? MTT_MAX_MODELS : 3));
     }
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(4, &info));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(5, &info));
     TEST_ASSERT_EQUAL_UINT(2, info->count); /* meas_sigma */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_find("intensity_gate.f1", &i));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_info(i, &info));

@@ -85,11 +85,17 @@ static void test_estimated_density(void)
 }
 
 #ifdef MTT_REAL_FIXED
-/* The defaults in their formats: PD 0.9 (Q30), process_psd 5 (Q16), vmax 60 px per frame. */
+/* The defaults in their formats: PD 0.9 (Q30), process_psd 0 resolved to 5 (Q16), vmax 60 px per frame. */
 static void test_defaults_in_formats(void)
 {
     TEST_ASSERT_EQUAL_INT32(966367642, p.pd);
-    TEST_ASSERT_EQUAL_INT32(5 * 65536, p.process_psd);
+    TEST_ASSERT_EQUAL_INT32(0, p.process_psd); /* not given: 5 as resolved (ALGORITHMS.md §2.2) */
+    {
+        mtt_params r;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+        TEST_ASSERT_EQUAL_INT32(5 * 65536, r.process_psd);
+        TEST_ASSERT_EQUAL_INT(MTT_MOTION_CV, r.motion);
+    }
     TEST_ASSERT_EQUAL_INT32(60 * (1 << MTT_FX_POS_FRAC), p.vmax);
 }
 #endif

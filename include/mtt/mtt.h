@@ -96,8 +96,10 @@ typedef enum mtt_assoc {
 /** Motion model of every track (docs/FORMATS.md `motion`, ALGORITHMS.md §2, §14). */
 typedef enum mtt_motion {
     MTT_MOTION_CV = 0,  /**< one constant-velocity filter (ALGORITHMS.md §2) */
-    MTT_MOTION_IMM = 1  /**< interacting multiple models imm_model[] (ALGORITHMS.md §14); needs MTT_WITH_IMM
+    MTT_MOTION_IMM = 1, /**< interacting multiple models imm_model[] (ALGORITHMS.md §14); needs MTT_WITH_IMM
                              and lm-ihpda, ihpda, lm-ipda, ipda or jipda, else MTT_ERR_UNSUPPORTED */
+    MTT_MOTION_AUTO = 2 /**< the default: imm when the motion follows max_accel (process_psd 0) and the build
+                             and the association mode have the IMM, else cv (ALGORITHMS.md §2.2) */
 } mtt_motion;
 
 /** A model of an IMM track (docs/FORMATS.md `imm_models`). */
@@ -147,7 +149,8 @@ typedef struct mtt_params {
     mtt_assoc association;      /**< association mode */
     mtt_lm_ihpda_variant lm_ihpda_variant; /**< lm-ihpda: [S0] or the contest-aware rule */
     mtt_real contest_beta;      /**< contest threshold on the LM-IPDA beta (ALGORITHMS.md §10.4) */
-    mtt_real process_psd;       /**< Sw of the CV model */
+    mtt_real process_psd;       /**< Sw of the CV model; 0: derived from max_accel (ALGORITHMS.md §2.2) */
+    mtt_real max_accel;         /**< largest target acceleration, length/time^2; 0: not given */
     mtt_real meas_sigma[2];     /**< sx, sy (sigma^2 stays a normal float) */
     mtt_real pd;                /**< detection probability; PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability */
@@ -159,7 +162,8 @@ typedef struct mtt_params {
     mtt_real adapt_index;       /**< the scale stays >= process_psd dt^3 / (sigma^2 adapt_index) */
     mtt_real adapt_memory;      /**< its NIS average's fading factor */
     mtt_real adapt_gain;        /**< its update gain */
-    mtt_real adapt_reset_nis;   /**< a NIS above this resets the scale to 1; 0 never */
+    mtt_real adapt_reset_nis;   /**< a NIS above this raises the scale to at least 1 at once; 0 never */
+    mtt_real adapt_s_max;       /**< largest scale: the scale rises above 1 up to this */
 #endif
     mtt_real markov_p11;        /**< existence Markov chain: stays */
     mtt_real markov_p21;        /**< existence Markov chain: appears */
@@ -178,22 +182,26 @@ typedef struct mtt_params {
     mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta */
     mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas */
     mtt_real adaptive_jpda_shrink;  /**< gate shrink factor */
-    mtt_motion motion;              /**< cv, or imm (ALGORITHMS.md §14) */
+    mtt_motion motion;              /**< cv, imm (ALGORITHMS.md §14), or auto (the default, §2.2) */
     uint8_t imm_n_models;           /**< r: models of an IMM track, 2..MTT_MAX_MODELS */
     mtt_model_kind imm_model[MTT_MAX_MODELS]; /**< model j (imm_models[j].model) */
-    mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd) */
+    mtt_real imm_psd[MTT_MAX_MODELS];         /**< its process noise (imm_models[j].process_psd); all 0:
+                                                   imm_models not given (ALGORITHMS.md §2.2) */
 #if MTT_WITH_IMM
     mtt_real imm_turn_psd[MTT_MAX_MODELS];    /**< its turn-rate noise (imm_models[j].turn_psd): > 0 for ct,
                                                    0 for the other models; only in a build with the IMM */
 #endif
-    mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum to 1 */
-    mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1 */
+    mtt_real imm_transition[MTT_MAX_MODELS][MTT_MAX_MODELS]; /**< P(model j at k | model i at k-1), rows sum
+                                                   to 1; all 0: not given (ALGORITHMS.md §2.2) */
+    mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1; all 0:
+                                                   not given */
     int split;                      /**< nonzero: split-target detection (ALGORITHMS.md §14.3); needs
                                          motion = imm, a cv entry in imm_models and MTT_WITH_SPLIT */
     mtt_real split_p25;             /**< per scan: cv -> "just split" */
     mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
     mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */
-    mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std) */
+    mtt_real split_dv;              /**< velocity change of a split, length/time per axis (std); 0 with
+                                         max_accel: max_accel dt (ALGORITHMS.md §2.2) */
 #if MTT_WITH_SPLIT
     mtt_real split_confirm;         /**< a split-off track's existence at or above: confirmed at once */
     mtt_real split_decide;          /**< μ_5 + μ_6 at or above: a decoupled split is two tracks */
@@ -376,6 +384,17 @@ MTT_MUST_CHECK mtt_status mtt_params_default_checked(mtt_params *p, size_t param
 #define mtt_params_check(p, bad_field) mtt_params_check_checked((p), (bad_field), MTT_PARAMS_GUARD_)
 MTT_MUST_CHECK mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
                                                    size_t params_size, uint32_t config_id);
+
+/** The parameters as the tracker runs them (ALGORITHMS.md §2.2): out = p with
+ *  the keys left out resolved: motion auto to cv or imm, process_psd 0 and
+ *  imm_models, imm_transition, imm_initial not given and split_dv 0 to their
+ *  values, from max_accel where the motion follows it.  Values that follow the
+ *  scan interval ΔT (process_psd = max_accel² ΔT, ...) are given at ΔT = 1.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_CONFIG; the errors of
+ *          mtt_params_check (out is then unchanged). */
+#define mtt_params_resolve(p, out) mtt_params_resolve_checked((p), (out), MTT_PARAMS_GUARD_)
+MTT_MUST_CHECK mtt_status mtt_params_resolve_checked(const mtt_params *p, mtt_params *out,
+                                                     size_t params_size, uint32_t config_id);
 
 /** The i-th settings key, 0 <= i < number of keys, in docs/FORMATS.md order.
  *  Host use (tools, bindings): a firmware that never calls the mtt_params_info /

@@ -262,10 +262,21 @@ typedef struct mtt_merge_cand {
     uint16_t a, b;       /* track indices, a < b */
 } mtt_merge_cand;
 
+/** The levels of the motion that max_accel derives (ALGORITHMS.md §2.2),
+ *  each per unit of the scan interval: a frame's value is level x dT. */
+typedef struct mtt_manoeuvre {
+    uint8_t bits;                   /* MTT_DERIVE_*: which of par's values follow dT */
+    mtt_real cv;                    /* process_psd = cv dT (cv = a^2) */
+    mtt_real dv;                    /* split_dv = dv dT (dv = a) */
+    mtt_real imm[MTT_MAX_MODELS];   /* imm_psd[j] = imm[j] dT */
+    mtt_real rate[2];               /* switching rates 0 -> 1, 1 -> 0 of the two-model chain */
+} mtt_manoeuvre;
+
 /** The tracker: all state.  Allocate it, then call mtt_tracker_init. */
 typedef struct mtt_tracker {
     uint32_t magic;                 /* init marker */
-    mtt_params par;
+    mtt_params par;                 /* resolved (ALGORITHMS.md §2.2); the derived values at this frame's dT */
+    mtt_manoeuvre lv;               /* the levels of the derived motion */
     mtt_real gamma;                 /* gate threshold from pg */
     mtt_real R[3];                  /* measurement covariance (sym) */
     mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */

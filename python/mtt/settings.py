@@ -407,19 +407,6 @@ class _Reader:
     def _row(key):
         return next(r for r in params_table() if r.key == key)
 
-    def default_models(self, settings: dict):
-        """imm_models not given: the default follows process_psd (tools/io/settings.c default_models)."""
-        if "imm_models" in settings:
-            return
-        row = self._row("imm_models")
-        _, v = self.core.get_param(row.key, n_values(row))
-        if int(v[0]) < 2:
-            return  # a build without IMM
-        _, p = self.core.get_param("process_psd", 1)
-        w = list(v)
-        w[2] = w[2 + _core.MODEL_VALUES] = p[0]  # cv and ca, both with process_psd
-        self.core.set_param(row.key, tuple(w))
-
     def check(self):
         st, bad = self.core.check()
         if st == 0:
@@ -503,6 +490,5 @@ def apply_settings(core, settings, source: str = "settings") -> list:
         raise SettingsError(source, None, f"the settings must be a JSON object, found {_json_type(settings)}")
     r = _Reader(source, core)
     r.obj(settings, "")
-    r.default_models(settings)
     r.check()
     return r.seeds

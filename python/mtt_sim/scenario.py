@@ -45,12 +45,12 @@ class ScenarioError(ValueError):
 
 # docs/FORMATS.md "Tracker settings" keys.
 TRACKER_KEYS = {
-    "association", "lm_ihpda_variant", "contest_beta", "process_psd", "meas_sigma", "pd",
-    "pg", "clutter_density", "snr_rho", "amplitude_eta", "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "markov_p11", "markov_p21",
+    "association", "lm_ihpda_variant", "contest_beta", "process_psd", "max_accel", "meas_sigma", "pd",
+    "pg", "clutter_density", "snr_rho", "amplitude_eta", "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "adapt_s_max", "markov_p11", "markov_p21",
     "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
     "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
-    "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
+    "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_decide", "split_provisional_exist", "split_provisional_scans", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
 }
 
 ASSOC_MODES = (
@@ -512,8 +512,11 @@ def seeded_targets(scn: dict):
 
 
 def tracker_settings(scn: dict, association: str | None = None) -> dict:
-    """The settings object to hand to mtt-track (a copy), optionally with another mode."""
-    trk = copy.deepcopy(scn["tracker"])
+    """The settings object to hand to mtt-track (a copy), optionally with another mode.
+
+    A key whose value is null is left out (``--set tracker.process_psd=null``
+    removes the scenario's process_psd: the tracker's default applies)."""
+    trk = {k: v for k, v in copy.deepcopy(scn["tracker"]).items() if v is not None}
     if association is not None:
         if association not in ASSOC_MODES:
             raise ScenarioError(f"association '{association}' is not one of {', '.join(ASSOC_MODES)}")

@@ -380,11 +380,14 @@ class TestShippedRecordedScenarios(unittest.TestCase):
                 quick = scn["name"] == "quickstart"
                 self.assertEqual(src, "traffic:collections/quickstart" if quick
                                  else "traffic:calibration/" + scn["name"][len("calibration_"):])
-                dt, sigma, mean, psd = (4.0, 50.0, 100, 50) if quick else (5.0, 30.0, 64, 500)
+                dt, sigma, mean = (4.0, 50.0, 100) if quick else (5.0, 30.0, 64)
                 self.assertEqual((scn["scans"]["dt"], scn["meas_sigma"], scn["pd"]), (dt, [sigma, sigma], 0.9))
                 self.assertEqual(scn["clutter"], {"model": "poisson", "mean": mean})
                 t = scn["tracker"]
-                self.assertEqual((t["meas_sigma"], t["pd"], t["process_psd"]), ([sigma, sigma], 0.9, psd))
+                # the sensor's facts and max_accel only (#25): no process_psd, no motion
+                self.assertEqual((t["meas_sigma"], t["pd"], t["max_accel"], t["vmax"]), ([sigma, sigma], 0.9, 10, 350))
+                self.assertFalse({"process_psd", "motion"} & set(t))
+                self.assertEqual(scn["metrics"], {"match_distance": 10 * sigma, "gospa_c": 10 * sigma})
                 self.assertAlmostEqual(t["clutter_density"] * scenario.area_size(scn) / mean, 1.0, delta=1e-9)
 
 

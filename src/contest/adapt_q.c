@@ -28,6 +28,7 @@ void mtt_adapt_defaults(mtt_params *p)
     p->adapt_memory = MTT_R(0.8);
     p->adapt_gain = MTT_R(2.0);
     p->adapt_reset_nis = MTT_R(8.0);
+    p->adapt_s_max = MTT_R(0.0); /* auto: resolved with the motion (ALGORITHMS.md §2.2) */
 }
 
 void mtt_adapt_init(mtt_tracker *trk)
@@ -92,20 +93,38 @@ void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
     }
     pp = &trk->pairs[tf->assigned];
     ms = &trk->meas[pp->meas];
-    dx = ms->x - tf->xp[0];
-    dy = ms->y - tf->xp[1];
-    nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
+#if MTT_WITH_IMM
+    if (p->motion == MTT_MOTION_IMM) {
+        /* the best-fitting model's NIS: the levels are too low only when
+         * every model sees larger innovations than it expects */
+        uint8_t j;
+        nis = MTT_REAL_MAX;
+        for (j = 0; j < p->imm_n_models; ++j) {
+            const mtt_real d2 = mtt_mahal2(tf->Sim[j], ms->x - tf->xpm[j][0], ms->y - tf->xpm[j][1]);
+            nis = (d2 < nis) ? d2 : nis;
+        }
+    } else
+#endif
+    {
+        dx = ms->x - tf->xp[0];
+        dy = ms->y - tf->xp[1];
+        nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
+    }
     /* weight beta_s: the NIS is the target's with that probability */
     w = (MTT_R(1.0) - p->adapt_memory) * pp->beta;
     t->nis_ratio += w * (nis / trk->nis_mean - t->nis_ratio);
     if (p->adapt_reset_nis > MTT_R(0.0) && nis > p->adapt_reset_nis) {
-        t->q_scale = MTT_R(1.0); /* a manoeuvre: back to the configured level at once */
-        t->nis_ratio = MTT_R(1.0);
-        return;
+        if (t->q_scale < MTT_R(1.0)) {
+            t->q_scale = MTT_R(1.0); /* a manoeuvre: back to the configured level at once */
+        }
+        if (!(p->adapt_s_max > MTT_R(1.0))) {
+            t->nis_ratio = MTT_R(1.0); /* no rise above it: the average restarts */
+            return;
+        }
     }
     s = t->q_scale * mtt_exp(p->adapt_gain * (t->nis_ratio - MTT_R(1.0)));
-    if (s > MTT_R(1.0)) {
-        s = MTT_R(1.0);
+    if (s > p->adapt_s_max) {
+        s = p->adapt_s_max;
     }
     if (s < trk->q_floor) {
         s = trk->q_floor;

@@ -5,14 +5,14 @@
 #ifndef MTT_CONTEST_H
 #define MTT_CONTEST_H
 
-/* lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md §7.6, §10.4): the
- * amplitude ratio in p, the amplitude rows and the contest-aware update.
- * Not with motion imm: the contest update has no IMM form yet, so an IMM
- * lm-ihpda runs [S0] whatever the variant.  Constant 0 with
- * MTT_WITH_CONTEST 0, so the compiler drops that code. */
+/* lm-ihpda with lm_ihpda_variant contest (ALGORITHMS.md §7.6, §10.4, §2.1):
+ * the amplitude ratio in p, the amplitude rows, the contest-aware update and
+ * the adaptive process noise, with motion cv and imm (an IMM track's
+ * contested update is its PDA update over the models, §14.2).  Constant 0
+ * with MTT_WITH_CONTEST 0, so the compiler drops that code. */
 #define MTT_CONTEST_ON(trk)                                                                        \
     (MTT_WITH_CONTEST && (trk)->par.association == MTT_ASSOC_LM_IHPDA &&                           \
-     (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST && (trk)->par.motion != MTT_MOTION_IMM)
+     (trk)->par.lm_ihpda_variant == MTT_LM_IHPDA_CONTEST)
 
 /* ---- contest.c: the contest test of lm-ihpda contest (ALGORITHMS.md §10.4) ---- */
 /* tf.contest of a track: no LM-IPDA row this frame (its IHPDA row stands),
@@ -70,8 +70,8 @@ void mtt_adapt_predict(mtt_real dt, mtt_cov Q, mtt_real s, const mtt_state x, mt
 /* The lowest scale for an interval dt: max(adapt_s_min, Lambda^2 / adapt_index), at most 1. */
 mtt_real mtt_adapt_floor(const mtt_tracker *trk, mtt_real dt);
 /* The prediction stage's hook (predict.c, per track with dt > 0, not IMM):
- * s raised to this interval's floor; a track below the configured level
- * (s < 1: a confirmed contest track) predicts with s Q and 1 is returned,
+ * s raised to this interval's floor; a track off the configured level
+ * (s != 1: a confirmed contest track) predicts with s Q and 1 is returned,
  * else 0 (the caller's plain prediction).  Inline: the hot path. */
 static inline int mtt_adapt_predict_track(const mtt_tracker *trk, mtt_real dt, mtt_cov Q,
                                           mtt_track *t, mtt_track_frame *tf)
@@ -79,11 +79,23 @@ static inline int mtt_adapt_predict_track(const mtt_tracker *trk, mtt_real dt, m
     if (t->q_scale < trk->q_floor) {
         t->q_scale = trk->q_floor; /* this interval's floor (ALGORITHMS.md §2.1) */
     }
-    if (t->q_scale < MTT_R(1.0)) {
+    if (t->q_scale != MTT_R(1.0)) {
         mtt_adapt_predict(dt, Q, t->q_scale, t->x, t->P, tf->xp, tf->Pp);
         return 1;
     }
     return 0;
+}
+/* An IMM track's scale for this interval (imm_track.c): raised to the
+ * floor, 1 without the contest variant. */
+static inline mtt_real mtt_adapt_imm_scale(const mtt_tracker *trk, mtt_track *t)
+{
+    if (!MTT_CONTEST_ON(trk)) {
+        return MTT_R(1.0);
+    }
+    if (t->q_scale < trk->q_floor) {
+        t->q_scale = trk->q_floor;
+    }
+    return t->q_scale;
 }
 /* E[NIS] of a gated target detection: chi-square 2 truncated at gamma. */
 mtt_real mtt_adapt_nis_mean(mtt_real gamma, mtt_real pg);

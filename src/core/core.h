@@ -27,8 +27,10 @@ void mtt_csr_unshift(uint16_t *first, uint16_t n);
 
 /* ---- params.c ---- */
 #if MTT_WITH_IMM
-/* imm_transition and imm_initial: docs/FORMATS.md's defaults for r models. */
+/* r models, imm_transition and imm_initial not given (ALGORITHMS.md §2.2). */
 void mtt_params_imm_reset(mtt_params *p, uint8_t r);
+/* imm_transition: docs/FORMATS.md's default for imm_n_models models. */
+void mtt_params_imm_pi_default(mtt_params *p);
 /* Index of the first cv model of imm_models, imm_n_models when there is none
  * (the model the split modes build on, ALGORITHMS.md §14.3). */
 uint8_t mtt_params_cv_model(const mtt_params *p);

@@ -26,17 +26,17 @@
 #endif
 
 #if MTT_WITH_IMM
-/* docs/FORMATS.md's IMM defaults for r models: 0.99 on the diagonal of the
- * transition matrix, the rest of each row spread evenly, every track
- * starting in model 0; the slots beyond r are 0.  (0.99 rather than a
- * quicker 0.95: on straight targets in heavy clutter every switch into the
- * manoeuvre model costs; docs/reports/MOTION.md "Manoeuvring targets: IMM".) */
-void mtt_params_imm_reset(mtt_params *p, uint8_t r)
+/* docs/FORMATS.md's IMM transitions for r = imm_n_models models when
+ * imm_transition is not given and the motion does not follow max_accel:
+ * 0.99 on the diagonal, the rest of each row spread evenly; the slots beyond
+ * r are 0.  (0.99 rather than a quicker 0.95: on straight targets in heavy
+ * clutter every switch into the manoeuvre model costs;
+ * docs/reports/MOTION.md "Manoeuvring targets: IMM".) */
+void mtt_params_imm_pi_default(mtt_params *p)
 {
+    const uint8_t r = p->imm_n_models;
     uint8_t i, j;
-    p->imm_n_models = r;
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
-        p->imm_initial[i] = (i == 0u) ? MTT_R(1.0) : MTT_R(0.0);
         for (j = 0; j < MTT_MAX_MODELS; ++j) {
             mtt_real v = MTT_R(0.0);
             if (i < r && j < r) {
@@ -47,15 +47,24 @@ void mtt_params_imm_reset(mtt_params *p, uint8_t r)
     }
 }
 
-/* imm_models' default: [cv with process_psd, ca with process_psd] (the
- * same number as the CA model's jerk psd; one cv model in a build with
- * MTT_MAX_MODELS 1); unused slots cv with process_psd. */
+/* r models; imm_transition and imm_initial not given (ALGORITHMS.md §2.2:
+ * resolved with the rest at set-up). */
+void mtt_params_imm_reset(mtt_params *p, uint8_t r)
+{
+    p->imm_n_models = r;
+    memset(p->imm_transition, 0, sizeof p->imm_transition);
+    memset(p->imm_initial, 0, sizeof p->imm_initial);
+}
+
+/* imm_models' default: not given (every psd 0; ALGORITHMS.md §2.2), kinds
+ * [cv, ca] (one cv model in a build with MTT_MAX_MODELS 1): with the motion
+ * from max_accel two cv models, else cv and ca with process_psd. */
 static void imm_default(mtt_params *p)
 {
     uint8_t i;
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         p->imm_model[i] = (i == 1u) ? MTT_MODEL_CA : MTT_MODEL_CV;
-        p->imm_psd[i] = p->process_psd;
+        p->imm_psd[i] = MTT_R(0.0);
     }
     mtt_params_imm_reset(p, (MTT_MAX_MODELS >= 2) ? 2u : 1u);
 }
@@ -81,6 +90,9 @@ static const char *check_imm(const mtt_params *p)
         mtt_real s = MTT_R(0.0);
         if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CT)) {
             return "imm_models";
+        }
+        if (i < r && !(p->imm_psd[i] > MTT_R(0.0))) {
+            return "imm_models"; /* a model's psd 0: imm_models given only in part */
         }
         /* the turn-rate noise: > 0 (and finite) for ct, 0 for the others */
         if (i < r && ((p->imm_model[i] == MTT_MODEL_CT) ? !(p->imm_turn_psd[i] > MTT_R(0.0) && p->imm_turn_psd[i] <= MTT_REAL_MAX)
@@ -122,7 +134,8 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     /* the contest-aware rule where it is built (ALGORITHMS.md §10.4), else [S0] */
     p->lm_ihpda_variant = MTT_WITH_CONTEST ? MTT_LM_IHPDA_CONTEST : MTT_LM_IHPDA_S0;
     p->contest_beta = PDEF(contest_beta, 0.1);
-    p->process_psd = PDEF(process_psd, 5.0);
+    p->process_psd = PDEF(process_psd, 0.0); /* not given: from max_accel, else 5 (ALGORITHMS.md §2.2) */
+    p->max_accel = PDEF(max_accel, 0.0);
     p->meas_sigma[0] = PDEF(meas_sigma, 1.0);
     p->meas_sigma[1] = PDEF(meas_sigma, 1.0);
     p->pd = PDEF(pd, 0.9);
@@ -156,7 +169,7 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     p->nnjpda_threshold = PDEF(nnjpda_threshold, 0.0);
     p->adaptive_jpda_distance = PDEF(adaptive_jpda_distance, 9.0);
     p->adaptive_jpda_shrink = PDEF(adaptive_jpda_shrink, 3.0);
-    p->motion = MTT_MOTION_CV;
+    p->motion = MTT_MOTION_AUTO;
 #if MTT_WITH_IMM
     imm_default(p);
 #endif
@@ -213,7 +226,7 @@ static const range_rule rules[MTT_RULE_COUNT] = {
 
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
 const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
-const char *const mtt_motion_names[2] = {"cv", "imm"};
+const char *const mtt_motion_names[3] = {"cv", "imm", "auto"};
 const char *const mtt_model_names[3] = {"cv", "ca", "ct"};
 
 mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
@@ -283,21 +296,30 @@ mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
             bad = rules[k].name;
         }
     }
-#if MTT_WITH_IMM
     if (bad == NULL) {
-        bad = check_imm(p);
-    }
+        /* the cross rules on the keys as the tracker resolves them (ALGORITHMS.md §2.2) */
+        mtt_params q = *p;
+        mtt_manoeuvre lv;
+        mtt_manoeuvre_resolve(&q, &lv);
+#if MTT_WITH_IMM
+        bad = check_imm(&q);
 #endif
-    if (bad == NULL && p->motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[p->association].imm)) {
-        bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
-        st = MTT_ERR_UNSUPPORTED;
-    }
-    if (bad == NULL && p->split &&
-        (!MTT_WITH_SPLIT || p->motion != MTT_MOTION_IMM || mtt_params_cv_model(p) >= p->imm_n_models)) {
-        bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
-        st = MTT_ERR_UNSUPPORTED;
+        if (bad == NULL && q.motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[q.association].imm)) {
+            bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
+            st = MTT_ERR_UNSUPPORTED;
+        }
+        if (bad == NULL && q.split &&
+            (!MTT_WITH_SPLIT || q.motion != MTT_MOTION_IMM || mtt_params_cv_model(&q) >= q.imm_n_models)) {
+            bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
+            st = MTT_ERR_UNSUPPORTED;
+        }
     }
 #ifdef MTT_REAL_FIXED
+    if (bad == NULL && mtt_manoeuvre_derived(p)) {
+        /* the derived motion's a^2 dT has no format here yet (docs/FIXED_POINT.md) */
+        bad = "max_accel";
+        st = MTT_ERR_UNSUPPORTED;
+    }
     if (bad == NULL && !(p->clutter_density > 0)) {
         /* the fixed-point build holds densities relative to lambda
          * (docs/FIXED_POINT.md §2): the estimated density (0) has no
@@ -329,6 +351,25 @@ mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
         *bad_field = bad;
     }
     return st;
+}
+
+mtt_status mtt_params_resolve_checked(const mtt_params *p, mtt_params *out, size_t params_size,
+                                      uint32_t config_id)
+{
+    mtt_manoeuvre lv;
+    mtt_params q;
+    mtt_status st;
+    if (p == NULL || out == NULL) {
+        return MTT_ERR_NULL;
+    }
+    st = mtt_params_check_checked(p, NULL, params_size, config_id);
+    if (st != MTT_OK) {
+        return st;
+    }
+    q = *p;
+    mtt_manoeuvre_resolve(&q, &lv);
+    *out = q;
+    return MTT_OK;
 }
 
 mtt_status mtt_status_text(mtt_status s, const char **text)

@@ -137,9 +137,10 @@ static void set_int(mtt_params *p, const info_row *r, int value)
 
 #if MTT_WITH_IMM
 /* imm_models: v = r, then (model, psd, turn psd) per slot; slots from r on keep
- * their values.  A new r resets imm_transition and imm_initial to their
- * defaults for r models (so a settings file that sets only imm_models is
- * valid). */
+ * their values.  A new r resets imm_transition and imm_initial to not given
+ * (so a settings file that sets only imm_models is valid).  Every psd 0 is
+ * imm_models not given (mtt_params_default's, ALGORITHMS.md §2.2), so a get
+ * of the defaults sets back; some 0 and some not is an error. */
 static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
 {
     mtt_params q = *p;
@@ -153,14 +154,21 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
         const double kind = s[0], psd = s[1], turn = s[2];
         if (!(kind >= 0.0 && kind < (double)r->info.n_names && kind == (double)(int)kind) ||
             !(psd > 0.0 && psd <= (double)MTT_REAL_MAX) || !(turn >= 0.0 && turn <= (double)MTT_REAL_MAX)) {
-            return MTT_ERR_PARAM;
+            if (!(psd == 0.0 && v[2] == 0.0 && turn == 0.0 && kind >= 0.0 && kind < (double)r->info.n_names)) {
+                return MTT_ERR_PARAM; /* psd 0 only as "not given": the first slot's psd 0 too */
+            }
+        } else if (v[2] == 0.0) {
+            return MTT_ERR_PARAM; /* the first slot not given, this one given */
         }
         q.imm_model[k] = (mtt_model_kind)(int)kind;
         q.imm_psd[k] = (mtt_real)psd;
         q.imm_turn_psd[k] = (mtt_real)turn;
+        if (v[2] != 0.0 && !(q.imm_psd[k] > MTT_R(0.0))) {
+            return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
+        }
     }
     if (!mtt_params_rule_ok(&q, r->rule, 0)) {
-        return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
+        return MTT_ERR_PARAM;
     }
     for (k = 0; k < m; ++k) {
         /* turn psd: > 0 (not rounded to 0) for ct, 0 for the others */
@@ -227,6 +235,9 @@ mtt_status mtt_params_set_checked(mtt_params *p, const char *key, const double *
     for (k = 0; k < n; ++k) {
         if (!to_real(v[k], ROW_FRAC(r), &mtt_params_rule_at(&q, r->rule)[k])) {
             return MTT_ERR_PARAM;
+        }
+        if (v[k] != 0.0 && mtt_params_rule_at(&q, r->rule)[k] == MTT_ZERO) {
+            return MTT_ERR_PARAM; /* rounds to 0, which means "not given" or "off" for several keys */
         }
     }
     if (!mtt_params_rule_ok(&q, r->rule, 0)) {

@@ -51,21 +51,21 @@ enum {
 extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
 extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_lm_ihpda_variant_names[2];
-extern const char *const mtt_motion_names[2];
+extern const char *const mtt_motion_names[3];
 extern const char *const mtt_model_names[3];
 
 /* The IMM rows (ALGORITHMS.md §14): only in a build with MTT_WITH_IMM; without
  * it only `motion` is a key (and `imm` is refused). */
 #if MTT_WITH_IMM
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                      \
-    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_OPEN_LO | PF_MODELS, NULL, TUNING,           \
-         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³), `ca` (constant acceleration, white-noise jerk, q in length²/time⁵) or `ct` (coordinated turn with unknown turn rate: q as cv on the velocity, and `turn_psd`, the turn rate's white-noise psd in rad²/time³, > 0, given for ct only); not given: cv and ca, both with process_psd (§14.1)") \
+    REAL("imm_models", imm_psd, MTT_MAX_MODELS, 0.0, MTT_REAL_MAX, PF_MODELS, NULL, TUNING,           \
+         "with `imm`: the models, a list of {\"model\": M, \"process_psd\": q}; M is `cv` (white-noise acceleration, q in length²/time³), `ca` (constant acceleration, white-noise jerk, q in length²/time⁵) or `ct` (coordinated turn with unknown turn rate: q as cv on the velocity, and `turn_psd`, the turn rate's white-noise psd in rad²/time³, > 0, given for ct only); not given: with the motion from max_accel two cv models, steady and manoeuvring (§2.2), else cv and ca, both with process_psd (§14.1)") \
     REAL("imm_transition", imm_transition, MTT_MAX_MODELS * MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL2,       \
          "r rows of r (r models), each row summing to 1", TUNING,                                           \
-         "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1)") \
+         "with `imm`: the model transition matrix per scan, Π[i][j] = P(model j at k given model i at k − 1), in imm_models order (§14.1); not given: from the manoeuvre time vmax/max_accel with the motion from max_accel (§2.2), else 0.99 on the diagonal and the rest of each row spread evenly") \
     REAL("imm_initial", imm_initial, MTT_MAX_MODELS, 0.0, 1.0, PF_PER_MODEL,                         \
          "one per model, summing to 1", TUNING,                                                               \
-         "with `imm`: the model probabilities of a new or seeded track (§14.2)")
+         "with `imm`: the model probabilities of a new or seeded track (§14.2); not given: all in the first model")
 #else
 #define MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)
 #endif
@@ -81,7 +81,7 @@ extern const char *const mtt_model_names[3];
     REAL("split_p62", split_p62, 1, 0.0, 1.0, 0, NULL, TUNING,                                            \
          "with `split`: per-scan probability that two split targets recombine (\"split\" → cv, §14.3)") \
     REAL("split_dv", split_dv, 1, 0.0, MTT_REAL_MAX, 0, NULL, TUNING,                                     \
-         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: the cv model's prediction (§14.3)") \
+         "with `split`: standard deviation of a split's velocity change per axis, length/time; the \"just split\" model predicts with this velocity impulse added, which widens its gate; 0: max_accel·ΔT when max_accel is given (§2.2), else the cv model's prediction (§14.3)") \
     REAL("split_confirm", split_confirm, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                           \
          "with `split`: a track that splits off is confirmed at once when its existence, P(parent) P(split), is at least this and its parent is confirmed; else it starts tentative (§14.3)") \
     REAL("split_decide", split_decide, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                      \
@@ -105,7 +105,7 @@ extern const char *const mtt_model_names[3];
 #if MTT_WITH_CONTEST
 #define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)                                                    \
     REAL("adapt_s_min", adapt_s_min, 1, 0.0, 1.0, PF_OPEN_LO, NULL, TUNING,                               \
-         "lm_ihpda_variant contest: smallest scale s of a confirmed track's process noise, s·process_psd, lowered while its innovations are smaller than the filter expects and raised when they grow; 1 turns the adaptation off (§2.1)") \
+         "lm_ihpda_variant contest: smallest scale s of a confirmed track's process noise (every model's with motion imm), lowered while its innovations are smaller than the filter expects and raised when they grow; 1 with adapt_s_max 1 turns the adaptation off (§2.1)") \
     REAL("adapt_index", adapt_index, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, TUNING,                      \
          "lm_ihpda_variant contest: s stays at or above Λ²/adapt_index, Λ² = process_psd·ΔT³/σ² the squared tracking index (σ² the mean of σx², σy²): the stronger the configured manoeuvres against the measurement noise, the less the level is lowered (§2.1)") \
     REAL("adapt_memory", adapt_memory, 1, 0.0, 1.0, PF_OPEN_HI, NULL, TUNING,                             \
@@ -113,7 +113,9 @@ extern const char *const mtt_model_names[3];
     REAL("adapt_gain", adapt_gain, 1, 0.0, 100.0, PF_OPEN_LO, NULL, TUNING,                               \
          "lm_ihpda_variant contest: gain κ of s's update, s ← s·exp(κ(r̄ − 1)) with r̄ the average NIS over its expectation (§2.1)") \
     REAL("adapt_reset_nis", adapt_reset_nis, 1, 0.0, MTT_REAL_MAX, 0, NULL, TUNING,                       \
-         "lm_ihpda_variant contest: a confirmed track whose measurement has a normalised innovation squared above this returns to s = 1 at once (a manoeuvre); 0 never (§2.1)")
+         "lm_ihpda_variant contest: a confirmed track whose measurement has a normalised innovation squared above this returns to s = 1 at once if s is below 1 (a manoeuvre); 0 never (§2.1)") \
+    REAL("adapt_s_max", adapt_s_max, 1, 0.0, MTT_REAL_MAX, 0, NULL, TUNING,                                \
+         "lm_ihpda_variant contest: largest scale s: a track whose innovations stay larger than the filter expects raises s above 1 up to this, so an under-guessed max_accel recovers; 1: never above the configured level; 0 (default): 100 with the motion from max_accel, 1 with process_psd given (§2.1, §2.2)")
 #else
 #define MTT_PARAM_ADAPT_ROWS(REAL, FLAG, ENUM)
 #endif
@@ -122,11 +124,13 @@ extern const char *const mtt_model_names[3];
     ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names, TUNING,                \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
     ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, TUNING, \
-         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio (§10.4, §7.6), the default where built (MTT_WITH_CONTEST); with motion imm lm-ihpda runs s0") \
+         "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio and the adaptive process noise (§10.4, §7.6, §2.1), with motion cv and imm, the default where built (MTT_WITH_CONTEST)") \
     REAL("contest_beta", contest_beta, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL, TUNING,                  \
          "lm_ihpda_variant contest: a measurement that two tracks give an LM-IPDA β >= this is contested (§10.4)") \
-    REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, PF_OPEN_LO, NULL, SENSOR,                            \
-         "power spectral density Sw of the constant-velocity model's white-noise acceleration, length²/time³ (§2)")  \
+    REAL("process_psd", process_psd, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                                    \
+         "power spectral density Sw of the constant-velocity model's white-noise acceleration, length²/time³ (§2); 0 (not given): derived from max_accel, or 5 when max_accel is not given either (§2.2)")  \
+    REAL("max_accel", max_accel, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                                        \
+         "largest acceleration a target pulls, length/time² (an airliner about 5 m/s², a fighter 90 m/s²); with process_psd not given it derives the motion: the noise of every model per scan, the IMM's models and transitions, split_dv; explicit keys override it; 0: not given (§2.2)")  \
     REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL, SENSOR,                                    \
          "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²)")                                       \
     REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, SENSOR, "probability of detection PD")                   \
@@ -174,8 +178,8 @@ extern const char *const mtt_model_names[3];
          "adaptive JPDA: tracks closer than this many measurement sigmas overlap (§13.7)")                 \
     REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL, BASELINE,                   \
          "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
-    ENUM("motion", motion, mtt_motion, 2, mtt_motion_names, TUNING,                                        \
-         "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda") \
+    ENUM("motion", motion, mtt_motion, 3, mtt_motion_names, TUNING,                                        \
+         "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda; `auto` (the default): imm when the motion follows max_accel (process_psd not given) and the build and the mode have it, else cv (§2.2)") \
     MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                          \
     FLAG("split", split, TUNING,                                                                           \
          "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \
@@ -187,6 +191,7 @@ extern const char *const mtt_model_names[3];
 #ifdef MTT_REAL_FIXED
 #define MTT_FX_FRAC_contest_beta MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
+#define MTT_FX_FRAC_max_accel MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_meas_sigma MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_pd MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_pg MTT_FX_PROB_FRAC

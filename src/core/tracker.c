@@ -56,6 +56,7 @@ static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cyc
     uint16_t m;
     memset(trk, 0, sizeof *trk);
     trk->par = *p;
+    mtt_manoeuvre_resolve(&trk->par, &trk->lv); /* the keys left out (ALGORITHMS.md §2.2) */
     trk->par.cycle_counter = fn;
     trk->par.cycle_ctx = ctx;
     trk->gamma = gamma;

@@ -59,6 +59,17 @@ int mtt_cov_ok(mtt_cov P, mtt_real rel);
  * d = b' A^-1 b in *d2, or -1 if A is not positive definite. */
 int mtt_chol_quad(mtt_cov A, const mtt_state b, mtt_real *d2);
 
+/* ---- manoeuvre.c: the motion that max_accel derives (ALGORITHMS.md §2.2) ---- */
+enum { MTT_DERIVE_CV = 1, MTT_DERIVE_MODELS = 2, MTT_DERIVE_PI = 4, MTT_DERIVE_DV = 8 };
+/* process_psd 0 and max_accel > 0: the motion follows max_accel. */
+int mtt_manoeuvre_derived(const mtt_params *p);
+/* Resolve in p the keys a user left out (motion auto, process_psd 0, the
+ * IMM keys not given, split_dv 0) and write the derived levels to lv; p's
+ * derived values are those at dT = 1 until mtt_manoeuvre_frame. */
+void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv);
+/* trk->par's derived values at this frame's dt > 0. */
+void mtt_manoeuvre_frame(mtt_tracker *trk, mtt_real dt);
+
 /* ---- predict.c: prediction, S, S^-1 and gain of every track (§2, §3, §11) ---- */
 void mtt_predict_frame(mtt_tracker *trk, mtt_real dt);
 

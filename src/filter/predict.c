@@ -16,6 +16,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
     mtt_cov Q; /* Q(dt): one dt and one Sw for every track of the frame */
     uint16_t i;
     if (dt > MTT_ZERO) {
+        mtt_manoeuvre_frame(trk, dt); /* the derived motion at this dt (ALGORITHMS.md §2.2) */
         mtt_motion_q(dt, trk->par.process_psd, Q);
 #if MTT_WITH_CONTEST
         trk->q_floor = mtt_adapt_floor(trk, dt);

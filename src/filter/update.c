@@ -63,11 +63,22 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     t->meas = (int32_t)ms->src;
 }
 
-/* PDA update with the beta row, beta_0 and existence of the association
- * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta.
- * A contested lm-ihpda track also marks its measurements with beta >=
+/* A contested lm-ihpda track marks its measurements with beta >=
  * contest_beta used (ALGORITHMS.md §10.4 step 5: after every final
  * recomputation, which has run by now). */
+static void mark_contested_used(mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t k;
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        if (trk->pairs[k].beta >= trk->par.contest_beta) {
+            trk->meas[trk->pairs[k].meas].used = 1;
+        }
+    }
+}
+
+/* PDA update with the beta row, beta_0 and existence of the association
+ * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta. */
 static void update_pda(mtt_tracker *trk, uint16_t ti)
 {
     mtt_track *t = &trk->tracks[ti];
@@ -85,9 +96,9 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
         if (beta[j] > beta[b]) {
             b = j;
         }
-        if (MTT_CONTESTED(tf) && beta[j] >= trk->par.contest_beta) {
-            meas[pp->meas].used = 1;
-        }
+    }
+    if (MTT_CONTESTED(tf)) {
+        mark_contested_used(trk, ti);
     }
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
     t->existence = tf->ex_post;
@@ -128,7 +139,11 @@ void mtt_update_frame(mtt_tracker *trk)
         }
 #if MTT_WITH_IMM
         if (trk->par.motion == MTT_MOTION_IMM) {
-            mtt_imm_update_assoc(trk, i, kind); /* motion imm refuses the contest variant */
+            /* a contested track: the PDA update over its models (ALGORITHMS.md §10.4, §14.2) */
+            mtt_imm_update_assoc(trk, i, MTT_CONTESTED(tf) ? (uint8_t)MTT_UPDATE_PDA : kind);
+            if (MTT_CONTESTED(tf)) {
+                mark_contested_used(trk, i);
+            }
         } else
 #endif
         if (one ? tf->assigned < 0 : tf->pair_count == 0u) {

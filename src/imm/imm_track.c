@@ -33,15 +33,16 @@ static uint8_t model_n(mtt_model_kind k)
 
 /* xp = F x, Pp = F P F' + Q of model j (ALGORITHMS.md §2 for CV, §14.1
  * for CA and CT), symmetric; in place (xp = x, Pp = P) allowed. */
-static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, const mtt_state x, mtt_cov P,
-                          mtt_state xp, mtt_cov Pp)
+static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real s, const mtt_state x,
+                          mtt_cov P, mtt_state xp, mtt_cov Pp)
 {
+    const mtt_real q = s * p->imm_psd[j]; /* the track's scale of the noise (ALGORITHMS.md §2.1) */
     if (p->imm_model[j] == MTT_MODEL_CV) {
-        mtt_kalman_predict(dt, p->imm_psd[j], x, P, xp, Pp);
+        mtt_kalman_predict(dt, q, x, P, xp, Pp);
     } else if (p->imm_model[j] == MTT_MODEL_CA) {
-        mtt_ca_predict(dt, p->imm_psd[j], x, P, xp, Pp);
+        mtt_ca_predict(dt, q, x, P, xp, Pp);
     } else {
-        mtt_ct_predict(dt, p->imm_psd[j], p->imm_turn_psd[j], x, P, xp, Pp);
+        mtt_ct_predict(dt, q, p->imm_turn_psd[j], x, P, xp, Pp);
     }
 }
 
@@ -61,8 +62,13 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         (void)mtt_imm_mix_weights(r, (mtt_real(*)[MTT_MAX_MODELS])p->imm_transition, t->mu, tf->cbar, mix);
         /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
         (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
+#if MTT_WITH_CONTEST
+        const mtt_real s = mtt_adapt_imm_scale(trk, t);
+#else
+        const mtt_real s = MTT_R(1.0);
+#endif
         for (j = 0; j < r; ++j) {
-            model_predict(p, j, dt, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
+            model_predict(p, j, dt, s, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
         }
     } else {
         /* First frame: the state is already at this time (seeded tracks). */

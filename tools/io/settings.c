@@ -864,22 +864,6 @@ void mtt_io_list_settings(FILE *out)
           out);
 }
 
-/* imm_models not given: docs/FORMATS.md's default follows process_psd,
- * [cv with process_psd, ca with process_psd], keeping imm_transition and
- * imm_initial as read (r stays 2). */
-static int default_models(const sctx *c)
-{
-    mtt_params *p = &c->s->params;
-    uint8_t i;
-    if (p->imm_n_models < 2u)
-        return MTT_IO_OK; /* a build without IMM */
-    (void)c;
-    for (i = 0; i < 2u && i < MTT_MAX_MODELS; ++i) {
-        p->imm_psd[i] = p->process_psd;
-    }
-    return MTT_IO_OK;
-}
-
 /* cJSON stops just past the offending token: report the line of the last
  * token before that point, and show that line. */
 static void report_json_error(const char *path, const char *text, const char *at)
@@ -957,8 +941,6 @@ int mtt_io_read_settings(const char *path, mtt_io_settings *s)
         rc = MTT_IO_EINPUT;
     } else {
         rc = parse_object(&c, root, "");
-        if (rc == MTT_IO_OK && cJSON_GetObjectItemCaseSensitive(root, "imm_models") == NULL)
-            rc = default_models(&c);
         if (rc == MTT_IO_OK)
             rc = check_params(&c);
     }

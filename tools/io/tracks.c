@@ -57,8 +57,10 @@ mtt_status mtt_io_write_tracks(FILE *out, const mtt_tracker *trk, const mtt_io_s
     return MTT_OK;
 }
 
-void mtt_io_write_tracks_header(FILE *out, const mtt_params *p)
+void mtt_io_write_tracks_header(FILE *out, const mtt_params *given)
 {
+    mtt_params r;
+    const mtt_params *p = (mtt_params_resolve(given, &r) == MTT_OK) ? &r : given; /* motion auto */
     uint8_t k;
     fputs(MTT_IO_TRACKS_HEADER, out);
     for (k = 0; p->motion == MTT_MOTION_IMM && k < p->imm_n_models; ++k)
