@@ -76,8 +76,9 @@ static void check(mtt_status st, const char *what)
 
 /* 1 when mode a is built into this library (its default parameters pass
  * mtt_params_check); *name receives its docs/FORMATS.md name. */
-/* --motion: cv (default), or imm with the default models of
- * docs/FORMATS.md (CV + CA); modes that refuse IMM are skipped. */
+/* --motion: cv (default), imm with the default models of docs/FORMATS.md
+ * (CV + CA), or auto (with --set process_psd=0 --set max_accel=A the motion
+ * of ALGORITHMS.md §2.2); modes that refuse IMM are skipped. */
 static mtt_motion g_motion = MTT_MOTION_CV;
 
 static int mode_built(mtt_assoc a, const char **name)
@@ -382,8 +383,8 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
         return -1;
     }
     s.params.association = mode;
-    if (g_motion == MTT_MOTION_IMM) {
-        s.params.motion = MTT_MOTION_IMM; /* the settings file's imm_models, or the defaults */
+    if (g_motion != MTT_MOTION_CV) {
+        s.params.motion = g_motion; /* the settings file's imm_models, or the defaults */
     }
     s.params.cycle_counter = ns_counter;
     apply_variant_and_sets(&s.params);
@@ -442,7 +443,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: mtt-bench [--frames N] [--dense N,N,...] [--modes m,m,...]\n"
             "                 [--det D.det.csv --config S.json] [--json OUT.json]\n"
-            "                 [--motion cv|imm]\n"
+            "                 [--motion cv|imm|auto]\n"
             "\n"
             "Per-frame cost of each association mode against load, beside a floor of\n"
             "bare Kalman predict+update on the same tracks.\n"
@@ -456,8 +457,10 @@ static void usage(FILE *f)
             "               (default: s0 for dense, the config's for the replay)\n"
             "  --set K=V    a numeric setting of every workload (repeatable, up to 8)\n"
             "  --list-modes print the modes built into this library and exit\n"
-            "  --motion M   cv (default) or imm (the default CV + CA models, or the\n"
-            "               --config file's imm_models); modes without IMM are skipped\n"
+            "  --motion M   cv (default), imm (the default CV + CA models, or the\n"
+            "               --config file's imm_models) or auto (with --set process_psd=0\n"
+            "               --set max_accel=A: the motion from max_accel, ALGORITHMS.md\n"
+            "               section 2.2); modes without IMM are skipped\n"
             "Columns: tracks, pairs = mean per timed frame; med/worst/floor in us;\n"
             "ratio = median / floor median; ns/(t+p) = median ns per (track + gated pair);\n"
             "then the share of each stage (cycle-counter callback).\n");
@@ -518,8 +521,9 @@ int main(int argc, char **argv)
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--motion") &&
-                   (!strcmp(argv[i + 1], "cv") || !strcmp(argv[i + 1], "imm"))) {
-            g_motion = !strcmp(argv[++i], "imm") ? MTT_MOTION_IMM : MTT_MOTION_CV;
+                   (!strcmp(argv[i + 1], "cv") || !strcmp(argv[i + 1], "imm") || !strcmp(argv[i + 1], "auto"))) {
+            ++i;
+            g_motion = !strcmp(argv[i], "imm") ? MTT_MOTION_IMM : !strcmp(argv[i], "auto") ? MTT_MOTION_AUTO : MTT_MOTION_CV;
         } else {
             fprintf(stderr, "mtt-bench: unknown or incomplete option '%s'\n", argv[i]);
             usage(stderr);

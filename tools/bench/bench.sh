@@ -11,7 +11,9 @@
 # 4. instructions: the same workloads under valgrind --tool=callgrind, with
 #    the counters zeroed when the timed frames start; per frame =
 #    inclusive Ir of mtt_tracker_step (and of the floor) / timed frames;
-# 5. tables and plots in out/bench/ (bench.md, cost_vs_n.png).
+# 5. the real-target default (max_accel) against CV in instructions
+#    (out/bench/default_vs_cv.tsv);
+# 6. tables and plots in out/bench/ (bench.md, cost_vs_n.png).
 # --quick: 100 timed frames and N = 4, 16, 64 (a smoke run).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -68,4 +70,25 @@ for mode in $modes; do
   done
 done
 echo >&2
+
+# The default of the real-target settings (ALGORITHMS.md §2.2: lm-ihpda
+# contest, the motion from max_accel) against the CV frame of the same
+# settings with process_psd (contest, CV): max_accel = sqrt(5), so the
+# manoeuvring model's level is the CV level 5 at dT = 1.
+echo "== default (max_accel) against CV, lm-ihpda contest (callgrind, $cg_frames frames)" >&2
+printf 'workload\tcv\tdefault\tratio\n' > "$out/default_vs_cv.tsv"
+for n in 16 64; do
+  ir() {
+    local f="$out/cg.default.$n"
+    valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" --frames "$cg_frames" --dense "$n" \
+      --modes lm-ihpda --variant contest "$@" >/dev/null 2>&1
+    callgrind_annotate --inclusive=yes "$f" 2>/dev/null |
+      awk -v fr="$cg_frames" '/mtt_tracker_step/ {gsub(",", "", $1); printf "%.0f", $1 / fr; exit}'
+    rm -f "$f"
+  }
+  cv=$(ir)
+  dflt=$(ir --motion auto --set process_psd=0 --set max_accel=2.2360680)
+  awk -v n="$n" -v a="$cv" -v b="$dflt" 'BEGIN {printf "dense-%s\t%s\t%s\t%.2f\n", n, a, b, b / a}' >> "$out/default_vs_cv.tsv"
+done
+cat "$out/default_vs_cv.tsv"
 python3 tools/bench/plot_bench.py "$out"
