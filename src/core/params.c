@@ -303,8 +303,10 @@ mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
         mtt_manoeuvre_resolve(&q, &lv);
 #if MTT_WITH_IMM
         bad = check_imm(&q);
+        if (bad == NULL && q.motion == MTT_MOTION_IMM && !mtt_modes[q.association].imm) {
+#else
+        if (q.motion == MTT_MOTION_IMM) {
 #endif
-        if (bad == NULL && q.motion == MTT_MOTION_IMM && (!MTT_WITH_IMM || !mtt_modes[q.association].imm)) {
             bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
             st = MTT_ERR_UNSUPPORTED;
         }

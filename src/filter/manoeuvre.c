@@ -123,7 +123,7 @@ void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
                 }
             }
         }
-        if (all_zero(&p->imm_transition[0][0], MTT_MAX_MODELS * MTT_MAX_MODELS)) {
+        if (all_zero(&p->imm_transition[0][0], (size_t)MTT_MAX_MODELS * (size_t)MTT_MAX_MODELS)) {
             if (derive && p->imm_n_models == 2u && (lv->bits & MTT_DERIVE_MODELS)) {
                 lv->rate[1] = p->max_accel / p->vmax; /* 1/τ: leaving the manoeuvre */
                 lv->rate[0] = MTT_R(ENTER_OVER_LEAVE) * lv->rate[1];
