@@ -430,7 +430,7 @@ class _Reader:
         if st == _core.ERR_UNSUPPORTED and bad == "split":
             _, m = self.core.get_param("motion", 1)
             self.fail(bad, "split = true needs motion = imm with a cv model in imm_models, and a build with "
-                      f"MTT_WITH_SPLIT (motion is {'imm' if int(m[0]) == 1 else 'cv'})")
+                      f"MTT_WITH_SPLIT (motion is {self._row('motion').names[int(m[0])]})")
         if st == _core.ERR_UNSUPPORTED and row is not None and row.type == ENUM:
             _, v = self.core.get_param(bad, 1)
             self.fail(bad, f"{bad} '{row.names[int(v[0])]}' is not implemented in this version "

@@ -123,13 +123,7 @@ def table(name: str, rows: list[dict], acc: dict | None) -> str:
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--scenario", nargs="+", required=True, help="scenario JSON file(s)")
-    ap.add_argument("--runs", type=int, default=5, help="Monte Carlo runs per row (default 5)")
-    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="worker processes (default: cores)")
-    ap.add_argument("--out", required=True, help="output directory")
-    ap.add_argument("--seed0", type=int, default=0, help="seed of run 0 (default 0)")
-    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                    help="override a scenario value by dotted path, in every scenario (repeatable)")
+    mc.add_run_arguments(ap, scenarios=True, runs=5, per="row")
     ap.add_argument("--sweep", type=float, nargs="+", default=list(SWEEP), metavar="Q",
                     help="process_psd values of the CV rows (default 1 5 20 100 500 2000)")
     ap.add_argument("--imm", help="settings JSON object of the hand-tuned IMM row (default: cv 5 + cv 500)")

@@ -485,10 +485,17 @@ def build_summary(scn: dict, scenario_file: str, overrides, modes, runs, seed0, 
     })
 
 
-def add_run_arguments(ap: argparse.ArgumentParser) -> None:
-    """The options of every Monte Carlo command: scenario, runs, jobs, out, seed0, set."""
-    ap.add_argument("--scenario", required=True, help="scenario JSON file")
-    ap.add_argument("--runs", type=int, default=100, help="Monte Carlo runs per mode (default 100)")
+def add_run_arguments(ap: argparse.ArgumentParser, scenarios: bool = False, runs: int = 100,
+                      per: str = "mode") -> None:
+    """The options of every Monte Carlo command: scenario, runs, jobs, out, seed0, set.
+
+    ``scenarios``: --scenario takes one or more files; ``runs``: the default
+    of --runs; ``per``: what --runs counts runs of, in its help."""
+    if scenarios:
+        ap.add_argument("--scenario", nargs="+", required=True, help="scenario JSON file(s)")
+    else:
+        ap.add_argument("--scenario", required=True, help="scenario JSON file")
+    ap.add_argument("--runs", type=int, default=runs, help=f"Monte Carlo runs per {per} (default {runs})")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="worker processes (default: cores)")
     ap.add_argument("--out", required=True, help="output directory")
     ap.add_argument("--seed0", type=int, default=0, help="seed of run 0 (default 0)")

@@ -266,26 +266,14 @@ int mtt_params_rule_ok(const mtt_params *p, size_t rule, int cross)
         bad = key;                                                                                 \
     }
 
-mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field, size_t params_size,
-                                    uint32_t config_id)
+/* mtt_params_check after its guards, with the keys as the tracker
+ * resolves them in *q (written once the ranges hold; resolved when
+ * MTT_OK). */
+static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_params *q)
 {
     const char *bad = NULL;
     mtt_status st = MTT_ERR_PARAM;
     size_t k;
-    if (p == NULL) {
-        if (bad_field != NULL) {
-            *bad_field = NULL;
-        }
-        return MTT_ERR_NULL;
-    }
-    /* Before p is read or bad_field written: the caller's mtt_params may
-     * have another layout than ours. */
-    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
-        return MTT_ERR_CONFIG;
-    }
-    if (bad_field != NULL) {
-        *bad_field = NULL;
-    }
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, MTT_PARAM_NO_FLAG, CHECK_ENUM)
     if (bad == NULL && !MTT_WITH_BASELINES && mtt_modes[p->association].baseline) {
         bad = "association"; /* a baseline, built with MTT_WITH_BASELINES 0 */
@@ -298,20 +286,20 @@ mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
     }
     if (bad == NULL) {
         /* the cross rules on the keys as the tracker resolves them (ALGORITHMS.md §2.2) */
-        mtt_params q = *p;
         mtt_manoeuvre lv;
-        mtt_manoeuvre_resolve(&q, &lv);
+        *q = *p;
+        mtt_manoeuvre_resolve(q, &lv);
 #if MTT_WITH_IMM
-        bad = check_imm(&q);
-        if (bad == NULL && q.motion == MTT_MOTION_IMM && !mtt_modes[q.association].imm) {
+        bad = check_imm(q);
+        if (bad == NULL && q->motion == MTT_MOTION_IMM && !mtt_modes[q->association].imm) {
 #else
-        if (q.motion == MTT_MOTION_IMM) {
+        if (q->motion == MTT_MOTION_IMM) {
 #endif
             bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
             st = MTT_ERR_UNSUPPORTED;
         }
-        if (bad == NULL && q.split &&
-            (!MTT_WITH_SPLIT || q.motion != MTT_MOTION_IMM || mtt_params_cv_model(&q) >= q.imm_n_models)) {
+        if (bad == NULL && q->split &&
+            (!MTT_WITH_SPLIT || q->motion != MTT_MOTION_IMM || mtt_params_cv_model(q) >= q->imm_n_models)) {
             bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
             st = MTT_ERR_UNSUPPORTED;
         }
@@ -355,23 +343,43 @@ mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
     return st;
 }
 
+mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field, size_t params_size,
+                                    uint32_t config_id)
+{
+    mtt_params q;
+    if (p == NULL) {
+        if (bad_field != NULL) {
+            *bad_field = NULL;
+        }
+        return MTT_ERR_NULL;
+    }
+    /* Before p is read or bad_field written: the caller's mtt_params may
+     * have another layout than ours. */
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
+    }
+    if (bad_field != NULL) {
+        *bad_field = NULL;
+    }
+    return check_into(p, bad_field, &q);
+}
+
 mtt_status mtt_params_resolve_checked(const mtt_params *p, mtt_params *out, size_t params_size,
                                       uint32_t config_id)
 {
-    mtt_manoeuvre lv;
     mtt_params q;
     mtt_status st;
     if (p == NULL || out == NULL) {
         return MTT_ERR_NULL;
     }
-    st = mtt_params_check_checked(p, NULL, params_size, config_id);
-    if (st != MTT_OK) {
-        return st;
+    if (params_size != sizeof(mtt_params) || config_id != (uint32_t)(MTT_CONFIG_ID)) {
+        return MTT_ERR_CONFIG;
     }
-    q = *p;
-    mtt_manoeuvre_resolve(&q, &lv);
-    *out = q;
-    return MTT_OK;
+    st = check_into(p, NULL, &q);
+    if (st == MTT_OK) {
+        *out = q; /* on error out is unchanged */
+    }
+    return st;
 }
 
 mtt_status mtt_status_text(mtt_status s, const char **text)

@@ -63,6 +63,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     t->meas = (int32_t)ms->src;
 }
 
+#if MTT_WITH_CONTEST
 /* A contested lm-ihpda track marks its measurements with beta >=
  * contest_beta used (ALGORITHMS.md §10.4 step 5: after every final
  * recomputation, which has run by now). */
@@ -76,6 +77,7 @@ static void mark_contested_used(mtt_tracker *trk, uint16_t ti)
         }
     }
 }
+#endif
 
 /* PDA update with the beta row, beta_0 and existence of the association
  * stage (ALGORITHMS.md §6, §13.8); the reported measurement is the largest beta. */
@@ -97,9 +99,11 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
             b = j;
         }
     }
+#if MTT_WITH_CONTEST
     if (MTT_CONTESTED(tf)) {
         mark_contested_used(trk, ti);
     }
+#endif
     mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
     t->existence = tf->ex_post;
     t->meas = (int32_t)meas[pairs[b].meas].src;
@@ -141,9 +145,11 @@ void mtt_update_frame(mtt_tracker *trk)
         if (trk->par.motion == MTT_MOTION_IMM) {
             /* a contested track: the PDA update over its models (ALGORITHMS.md §10.4, §14.2) */
             mtt_imm_update_assoc(trk, i, MTT_CONTESTED(tf) ? (uint8_t)MTT_UPDATE_PDA : kind);
+#if MTT_WITH_CONTEST
             if (MTT_CONTESTED(tf)) {
                 mark_contested_used(trk, i);
             }
+#endif
         } else
 #endif
         if (one ? tf->assigned < 0 : tf->pair_count == 0u) {

@@ -5,7 +5,7 @@
     python3 tools/ci/check_tree.py            # from anywhere inside the repository
 
 1. Size caps of the docs: README.md <= 10 KB, a reference doc in docs/ or
-   a report in docs/reports/ <= 40 KB, docs/ALGORITHMS.md <= 84 KB
+   a report in docs/reports/ <= 40 KB, docs/ALGORITHMS.md <= 80 KiB
    (CHANGELOG.md, the history, has none).
 2. Every tracked source file (C, C++, headers, Python, shell, CMake, the
    linker script) carries "SPDX-License-Identifier: BSD-3-Clause" in its
@@ -22,7 +22,7 @@ import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 SPDX = "SPDX-License-Identifier: BSD-3-Clause"
-CAPS = {"README.md": 10_000, "docs/ALGORITHMS.md": 84_000}
+CAPS = {"README.md": 10_000, "docs/ALGORITHMS.md": 81_920}
 REF_CAP = 40_000
 SOURCE_ENDINGS = (".c", ".h", ".cpp", ".py", ".sh", ".cmake", ".ld", ".toml", ".cmake.in")
 SOURCE_NAMES = ("CMakeLists.txt", "run")

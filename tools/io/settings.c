@@ -692,6 +692,17 @@ static int parse_object(const sctx *c, const cJSON *obj, const char *prefix)
 
 /* mtt_params_check judges the parameters together; every key passed
  * mtt_params_set, so a bad field breaks a rule between keys (its `cross`). */
+/* The name of value v of enum key `key` (the library's table), "?" if none. */
+static const char *enum_name(const char *key, int v)
+{
+    const mtt_param_info *info = NULL;
+    size_t row;
+    if (mtt_params_find(key, &row) != MTT_OK || mtt_params_info(row, &info) != MTT_OK ||
+        info->names == NULL || v < 0 || v >= (int)info->n_names)
+        return "?";
+    return info->names[v];
+}
+
 static int check_params(const sctx *c)
 {
     const char *bad = NULL, *text = "?";
@@ -730,7 +741,7 @@ static int check_params(const sctx *c)
         if (bad != NULL && strcmp(bad, "split") == 0) {
             mtt_io_error_key(c->file, bad, "split = true needs motion = imm with a cv model in "
                              "imm_models, and a build with MTT_WITH_SPLIT (motion is %s)",
-                             c->s->params.motion == MTT_MOTION_IMM ? "imm" : "cv");
+                             enum_name("motion", (int)c->s->params.motion));
             return MTT_IO_EINPUT;
         }
         if (bad == NULL || mtt_params_find(bad, &row) != MTT_OK ||
