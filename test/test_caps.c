@@ -28,13 +28,14 @@ static void seed(mtt_real x, mtt_real y)
 }
 
 /* One track, MTT_MAX_GATED + 6 measurements in its gate (S = 2 I: the
- * first frame predicts nothing; d^2 = |z|^2 / 2), met by the gate's x sweep
- * in this order: G - 2 near ones (inputs 3..G, x < 0); inputs 1 and 2 at
- * (0, -1), which fill the gate; input G + 1 at (0.5, 0), nearer than the
- * worst kept, replaces input 2 (equal d^2: the higher index is the worst);
- * input 0 at (1, 0) replaces input 1 (equal d^2, lower index); input G + 5
- * at (1, 0) too does not (equal d^2, higher index); three far ones do not.
- * Kept: the near ones, G + 1 and 0; 6 dropped. */
+ * first frame predicts nothing; d^2 = |z|^2 / 2), stored in the canonical
+ * (x) order and met by the gate's x sweep in that order: G - 2 near ones
+ * (inputs 3..G, x < 0); inputs 1 and 2 at (0, -1), which fill the gate;
+ * input G + 1 at (0.5, 0), nearer than the worst kept, replaces input 2
+ * (equal d^2: the higher stored index is the worst); input 0 at (1, 0)
+ * does not replace input 1 (equal d^2, higher stored index), nor does
+ * input G + 5 at (1, 0) too; three far ones do not.  Kept: the near ones,
+ * 1 and G + 1; 6 dropped. */
 static void test_gate_cap_keeps_smallest_d2_then_lower_index(void)
 {
     const uint32_t G = MTT_MAX_GATED, n = MTT_MAX_GATED + 6u;
@@ -70,7 +71,7 @@ static void test_gate_cap_keeps_smallest_d2_then_lower_index(void)
         kept[TV_MEAS_SRC(&trk, TV_PAIR_MEAS(&trk, k))] = 1;
     }
     for (i = 0; i < n; ++i) {
-        const int want = (i == 0u) || (i >= 3u && i <= G + 1u);
+        const int want = (i == 1u) || (i >= 3u && i <= G + 1u);
         TEST_ASSERT_EQUAL_INT_MESSAGE(want, kept[i], "input kept in the gate");
     }
 }

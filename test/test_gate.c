@@ -213,25 +213,32 @@ static void test_tv8_two_track_gate_frame(void)
 
 static void test_gate_frame_unsorted_input(void)
 {
-    /* Same as TV8 with the measurements in reverse input order: the pairs
-     * still come sorted by (track, measurement index). */
+    /* Same as TV8 with the measurements in reverse input order: measure.c
+     * stores them in the canonical (x) order, so the pairs are TV8's, and
+     * each stored measurement keeps its input index. */
     mtt_params p;
+    mtt_meas in[3];
+    in[0].x = MTT_R(6.8), in[0].y = MTT_R(2.5), in[0].amplitude = MTT_R(70.0);   /* z3 */
+    in[1].x = MTT_R(2.4), in[1].y = MTT_R(0.9), in[1].amplitude = MTT_R(120.0);  /* z2 */
+    in[2].x = MTT_R(-1.5), in[2].y = MTT_R(0.5), in[2].amplitude = MTT_R(50.0);  /* z1 */
+    in[0].has_amplitude = in[1].has_amplitude = in[2].has_amplitude = 1;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     p.pg = MTT_R(0.99);
     tv_init(&trk, &p);
     (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(4.0), MTT_R(1.0), MTT_R(3.0), MTT_R(0.8));
     (void)tv_add_track_s(&trk, MTT_R(5.0), MTT_R(1.0), MTT_R(3.0), MTT_R(-0.5), MTT_R(5.0), MTT_R(0.5));
-    (void)tv_add_meas(&trk, MTT_R(6.8), MTT_R(2.5), MTT_R(70.0), 1);  /* z3 */
-    (void)tv_add_meas(&trk, MTT_R(2.4), MTT_R(0.9), MTT_R(120.0), 1); /* z2 */
-    (void)tv_add_meas(&trk, MTT_R(-1.5), MTT_R(0.5), MTT_R(50.0), 1); /* z1 */
+    mtt_measure_select(&trk, in, 3u);
+    TEST_ASSERT_EQUAL_UINT32(2u, TV_MEAS_SRC(&trk, 0)); /* z1 */
+    TEST_ASSERT_EQUAL_UINT32(1u, TV_MEAS_SRC(&trk, 1)); /* z2 */
+    TEST_ASSERT_EQUAL_UINT32(0u, TV_MEAS_SRC(&trk, 2)); /* z3 */
     mtt_gate_frame(&trk);
     TEST_ASSERT_EQUAL_UINT(4, TV_N_PAIRS(&trk));
-    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 0)); /* T1 z2 */
-    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_MEAS(&trk, 1)); /* T1 z1 */
-    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_MEAS(&trk, 2)); /* T2 z3 */
-    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 3)); /* T2 z2 */
-    TV_ASSERT_REAL(1.472727273, tv_pair_d2(&trk, 0)); /* TV8 T1 z2 */
-    TV_ASSERT_REAL(1.738983051, tv_pair_d2(&trk, 2)); /* TV8 T2 z3 */
+    TEST_ASSERT_EQUAL_UINT(0, TV_PAIR_MEAS(&trk, 0)); /* T1 z1 */
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 1)); /* T1 z2 */
+    TEST_ASSERT_EQUAL_UINT(1, TV_PAIR_MEAS(&trk, 2)); /* T2 z2 */
+    TEST_ASSERT_EQUAL_UINT(2, TV_PAIR_MEAS(&trk, 3)); /* T2 z3 */
+    TV_ASSERT_REAL(1.472727273, tv_pair_d2(&trk, 1)); /* TV8 T1 z2 */
+    TV_ASSERT_REAL(1.738983051, tv_pair_d2(&trk, 3)); /* TV8 T2 z3 */
 }
 
 /* MTT_SMALL_LOG's ln against libm's over 1 - PG in [1e-7, 1) and beyond:

@@ -22,11 +22,11 @@ void setUp(void)
 void tearDown(void) {}
 
 /* 3 x MTT_MAX_MEAS detections: exactly the strongest MTT_MAX_MEAS stay,
- * in input order. */
-static void test_cap_keeps_strongest_in_input_order(void)
+ * in the canonical order (x, then y). */
+static void test_cap_keeps_strongest_in_canonical_order(void)
 {
     const uint32_t n = 3u * MTT_MAX_MEAS;
-    uint32_t i, prev = 0;
+    uint32_t i;
     TEST_ASSERT_TRUE(n % 7u != 0u);
     sim_amplitude_permutation(many, n);
     mtt_measure_select(&trk, many, n);
@@ -36,13 +36,14 @@ static void test_cap_keeps_strongest_in_input_order(void)
         const uint32_t src = tv_meas_src(&trk, (uint16_t)i);
         TEST_ASSERT_TRUE((src * 7u) % n >= 2u * MTT_MAX_MEAS);
         if (i > 0u) {
-            TEST_ASSERT_TRUE(src > prev); /* input order kept */
+            const mtt_mstore *a = &TV_MEAS(&trk, i - 1u), *b = &TV_MEAS(&trk, i);
+            TEST_ASSERT_TRUE(a->x < b->x || (a->x == b->x && a->y < b->y));
         }
-        prev = src;
     }
 }
 
-/* Without amplitudes the first MTT_MAX_MEAS inputs stay. */
+/* Without amplitudes the first MTT_MAX_MEAS in the canonical order stay
+ * (here the first inputs: x = i). */
 static void test_cap_without_amplitude_keeps_first(void)
 {
     const uint32_t n = MTT_MAX_MEAS + 5u;
@@ -58,8 +59,8 @@ static void test_cap_without_amplitude_keeps_first(void)
 }
 
 /* Exactly MTT_MAX_MEAS valid detections (amplitudes in no order, two bad
- * ones among them): nothing is dropped and all stay in input order, as
- * below the cap.  (The cap's heap is built on reaching MTT_MAX_MEAS even
+ * ones among them, x = i): nothing is dropped and all stay in the
+ * canonical order, here the input's, as below the cap.  (The cap's heap is built on reaching MTT_MAX_MEAS even
  * when no further detection comes.) */
 static void test_exactly_max_valid_keeps_input_order(void)
 {
@@ -88,7 +89,8 @@ static void test_exactly_max_valid_keeps_input_order(void)
     TEST_ASSERT_EQUAL_UINT32(MTT_MAX_MEAS, j);
 }
 
-/* Bad detections are skipped and counted; the good ones keep their input index. */
+/* Bad detections are skipped and counted; the good ones keep their input
+ * index, stored in the canonical order ((5, 5) before (10, 20)). */
 static void test_bad_detections_skipped(void)
 {
     mtt_meas m[7];
@@ -96,14 +98,14 @@ static void test_bad_detections_skipped(void)
     mtt_measure_select(&trk, m, 7);
     TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT(2u, tv_meas_count(&trk));
-    TEST_ASSERT_EQUAL_UINT32(4u, tv_meas_src(&trk, 0));
-    TEST_ASSERT_EQUAL_UINT32(5u, tv_meas_src(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT32(5u, tv_meas_src(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT32(4u, tv_meas_src(&trk, 1));
 }
 
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_cap_keeps_strongest_in_input_order);
+    RUN_TEST(test_cap_keeps_strongest_in_canonical_order);
     RUN_TEST(test_cap_without_amplitude_keeps_first);
     RUN_TEST(test_exactly_max_valid_keeps_input_order);
     RUN_TEST(test_bad_detections_skipped);

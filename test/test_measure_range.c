@@ -45,12 +45,13 @@ static void test_unrepresentable_skipped_and_counted(void)
     TEST_ASSERT_EQUAL_UINT(3u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_dropped);
-    TEST_ASSERT_EQUAL_UINT32(0u, tv_meas_src(&trk, 0));
-    TEST_ASSERT_EQUAL_UINT32(3u, tv_meas_src(&trk, 1));
-    TEST_ASSERT_EQUAL_UINT32(7u, tv_meas_src(&trk, 2));
+    /* stored in the canonical (x) order */
+    TEST_ASSERT_EQUAL_UINT32(7u, tv_meas_src(&trk, 0));
+    TEST_ASSERT_EQUAL_UINT32(0u, tv_meas_src(&trk, 1));
+    TEST_ASSERT_EQUAL_UINT32(3u, tv_meas_src(&trk, 2));
     /* kept values are stored exactly, the edge included */
-    TEST_ASSERT_TRUE(TV_MEAS_X(&trk, 1) == edge && TV_MEAS(&trk, 1).y == -edge);
-    TEST_ASSERT_TRUE(TV_MEAS_X(&trk, 2) == MTT_POS(-5.0) && TV_MEAS(&trk, 2).y == MTT_POS(6.0));
+    TEST_ASSERT_TRUE(TV_MEAS_X(&trk, 2) == edge && TV_MEAS(&trk, 2).y == -edge);
+    TEST_ASSERT_TRUE(TV_MEAS_X(&trk, 0) == MTT_POS(-5.0) && TV_MEAS(&trk, 0).y == MTT_POS(6.0));
 }
 
 int main(void)

@@ -104,20 +104,27 @@ static void seed_tracks(mtt_tracker *t, int reverse)
     }
 }
 
-/* Run the scene; perm != 0 permutes every frame's measurements. */
+/* Run the scene; perm 1 permutes every frame's measurements, 2 reverses
+ * them; reverse: the seeded tracks in reverse order, -1: none seeded. */
 static void run(mtt_tracker *t, mtt_assoc mode, int perm, int reverse)
 {
     mtt_params p;
     int k;
     params(&p, mode);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(t, &p));
-    seed_tracks(t, reverse);
+    if (reverse >= 0) {
+        seed_tracks(t, reverse);
+    }
     rng = 99u;
     for (k = 0; k < FRAMES; ++k) {
         mtt_meas z[MAXM];
         int n = sc.n[k], i;
         memcpy(z, sc.z[k], sizeof z);
-        if (perm) {
+        if (perm == 2) {
+            for (i = 0; i < n; ++i) {
+                z[i] = sc.z[k][n - 1 - i];
+            }
+        } else if (perm) {
             for (i = n - 1; i > 0; --i) { /* Fisher-Yates, fixed seed */
                 int j = (int)(unit() * (i + 1));
                 mtt_meas tmp = z[i];
@@ -184,6 +191,50 @@ static void test_order_invariance_all_modes(void)
         assert_same_tracks(name);
         run(&tb, (mtt_assoc)mode, 1, 1); /* and seeded tracks in reverse order */
         assert_same_tracks(name);
+    }
+}
+
+/* Tracks started from the measurements alone: any order of a frame's
+ * detections gives the same tracks, bit for bit, with the same identities
+ * in the same slots (measure.c's canonical order, ALGORITHMS.md §15). */
+static void assert_same_identities(const char *name)
+{
+    size_t na, nb, i;
+    mtt_stats st;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &na));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&tb, &nb));
+    TEST_ASSERT_EQUAL_MESSAGE(na, nb, name);
+    TEST_ASSERT_TRUE_MESSAGE(na >= 4u, name);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+    TEST_ASSERT_TRUE_MESSAGE(st.total.births > 4u, name); /* more births than targets: clutter ones too */
+    for (i = 0; i < na; ++i) {
+        mtt_track_view va, vb;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &va));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, i, &vb));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(va.id, vb.id, name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(va.confirmed, vb.confirmed, name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(va.age, vb.age, name);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(va.x, vb.x, sizeof va.x, name);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(va.P, vb.P, sizeof va.P, name);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&va.existence, &vb.existence, sizeof va.existence, name);
+    }
+}
+
+static void test_identities_invariant_all_modes(void)
+{
+    int mode;
+    make_scene(6, 0.9);
+    for (mode = 0; mode < (int)MTT_ASSOC_COUNT; ++mode) {
+        const char *name = NULL;
+        if (!built(mode)) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_assoc_name((mtt_assoc)mode, &name));
+        run(&ta, (mtt_assoc)mode, 0, -1);
+        run(&tb, (mtt_assoc)mode, 1, -1); /* permuted */
+        assert_same_identities(name);
+        run(&tb, (mtt_assoc)mode, 2, -1); /* reversed */
+        assert_same_identities(name);
     }
 }
 
@@ -266,6 +317,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_built_modes);
     RUN_TEST(test_order_invariance_all_modes);
+    RUN_TEST(test_identities_invariant_all_modes);
     RUN_TEST(test_crossing_every_mode_confirms_both);
     return UNITY_END();
 }

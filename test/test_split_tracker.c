@@ -326,7 +326,7 @@ static double held_by_neighbour(int mode)
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)f, z, (size_t)m));
     }
     for (k = 0; k < TV_PAIR_COUNT(&trk, 1); ++k) {
-        in_gate |= TV_PAIR_MEAS(&trk, TV_PAIR_FIRST(&trk, 1) + k) == 2u;
+        in_gate |= TV_MEAS_SRC(&trk, TV_PAIR_MEAS(&trk, TV_PAIR_FIRST(&trk, 1) + k)) == 2u; /* input 2 */
     }
     TEST_ASSERT_EQUAL_INT(mode != 1, in_gate);               /* +6 is in the neighbour's gate, -6 not */
     TEST_ASSERT_EQUAL_INT32(1, TV_TRACK(&trk, 1)->meas);    /* the neighbour reports its own detection */

@@ -475,7 +475,9 @@ MTT_MUST_CHECK mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_p
 /** Run one frame at time `time` with n measurements (meas may be NULL when n = 0).
  *  Bad detections are skipped and counted; beyond MTT_MAX_MEAS the strongest
  *  amplitudes are kept (detections without amplitude rank below any amplitude,
- *  then by input order).
+ *  then by position).  The order of meas does not matter: the kept ones are
+ *  stored by position (x, then y, then amplitude), so the tracks and their
+ *  identities are the same for any order (ALGORITHMS.md §15).
  *  Cost, every mode: O(n log n + tracks + pairs) for validation, gating,
  *  the LM densities, clusters, update and initiation (an x sweep), plus
  *  merging O(sum over clusters of tracks^2).  Association per cluster of

@@ -293,7 +293,6 @@ typedef struct mtt_tracker {
     /* frame scratch */
     uint16_t n_meas;
     mtt_mstore meas[MTT_MAX_MEAS];
-    uint16_t order[MTT_MAX_MEAS];   /* measurements sorted by x (gating sweep) */
     uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
     uint16_t n_pairs;
     mtt_pair pairs[MTT_MAX_PAIRS];
@@ -317,8 +316,6 @@ typedef struct mtt_tracker {
     /* previous frame's unused measurements (U_{k-1}, ALGORITHMS.md §12.1) */
     uint16_t n_prev;
     mtt_mstore prev[MTT_MAX_MEAS];
-    uint16_t prev_order[MTT_MAX_MEAS]; /* U_{k-1} sorted by x (initiation sweep) */
-    uint16_t init_cand[MTT_MAX_MEAS];  /* U_{k-1} within reach of one z_k */
 #if MTT_WITH_SPLIT
     mtt_split_slot split[MTT_MAX_SPLIT_TRACKS]; /* split = true: the pool (ALGORITHMS.md §14.3) */
     mtt_split_scratch split_scr;

@@ -88,8 +88,9 @@ class MttTracker(_SSTracker):
 
     def update_tracker(self, timestamp, detections):
         """Run one scan; returns (timestamp, confirmed tracks).  ``detections``:
-        any iterable of Detections, given to mtt in its iteration order (a list
-        keeps a file's order; mtt's tie rules look at the order).  Raises ValueError
+        any iterable of Detections, a set included: mtt stores a scan's
+        detections in a canonical order, so the tracks and their identities
+        do not depend on the iteration order.  Raises ValueError
         (and changes nothing) for a timestamp not later than the last one or a
         detection that is not a 2-D position."""
         seconds = self._seconds(timestamp)

@@ -3,9 +3,10 @@
  *
  * gamma = -2 ln(1 - PG); a measurement is gated when d^2 = nu' S^-1 nu <=
  * gamma; V_G = pi gamma sqrt(det S); p = N(nu; 0, S) / PG.
- * Measurements are sorted once along x; each track scans only the slice
- * its gate can reach (|nu_x| <= sqrt(gamma s11)), so the cost is
- * O(n log n + sum of slice lengths), not tracks x measurements. */
+ * The measurements are stored sorted along x (measure.c's canonical
+ * order); each track scans only the slice its gate can reach
+ * (|nu_x| <= sqrt(gamma s11)), so the cost is O(n log n + sum of slice
+ * lengths), not tracks x measurements. */
 #include "mtt_internal.h"
 
 #ifdef MTT_REAL_FIXED
@@ -226,13 +227,13 @@ static int less_pair(const void *a, const void *b, const void *ctx)
     return p->meas < q->meas;
 }
 
-/* First position in the x-sorted order whose x >= v. */
-static uint16_t lower_bound_x(const mtt_mstore *meas, const uint16_t *order, uint16_t n, mtt_pos v)
+/* First measurement (stored in x order, measure.c) whose x >= v. */
+static uint16_t lower_bound_x(const mtt_mstore *meas, uint16_t n, mtt_pos v)
 {
     uint16_t lo = 0, hi = n;
     while (lo < hi) {
         uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-        if (meas[order[mid]].x < v) {
+        if (meas[mid].x < v) {
             lo = (uint16_t)(mid + 1u);
         } else {
             hi = mid;
@@ -268,13 +269,12 @@ void mtt_gate_frame(mtt_tracker *trk)
     /* the tracker's arrays in locals: on Thumb-1 their fields lie beyond a
      * load's offset (docs/FIXED_POINT.md, "Size measures") */
     const mtt_mstore *meas = trk->meas;
-    uint16_t *order = trk->order;
     mtt_pair *pairs = trk->pairs;
     mtt_track_frame *tfs = trk->tf;
     uint16_t *mp_first = trk->mp_first;
     uint16_t cm[MTT_MAX_GATED];
     mtt_d2 cd[MTT_MAX_GATED];
-    uint16_t i, k;
+    uint16_t i, j, k;
     int resort = 0;
 #ifdef MTT_REAL_FIXED
     int32_t gc[4];
@@ -283,10 +283,6 @@ void mtt_gate_frame(mtt_tracker *trk)
     const int imm = trk->par.motion == MTT_MOTION_IMM;
 #endif
 
-    for (i = 0; i < n; ++i) {
-        order[i] = i;
-    }
-    mtt_sort_by_x(order, trk->init_cand, n, meas);
     trk->n_pairs = 0;
 #ifdef MTT_REAL_FIXED
     /* one gamma for every track: no adaptive JPDA in the fixed build */
@@ -322,8 +318,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
-        for (k = lower_bound_x(meas, order, n, MTT_SUBS(zx, wx)); k < n; ++k) {
-            uint16_t j = order[k];
+        for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
             mtt_pos dx = MTT_SUBS(meas[j].x, zx), dy = MTT_SUBS(meas[j].y, zy);
             mtt_d2 d2;
             if (dx > wx) {
@@ -420,7 +415,7 @@ void mtt_gate_frame(mtt_tracker *trk)
     /* Fill with mp_first[j] as the cursor of j; it then holds the end of j,
      * which is the start of j + 1: shift back by one. */
     for (k = 0; k < trk->n_pairs; ++k) {
-        uint16_t j = pairs[k].meas;
+        j = pairs[k].meas;
         trk->mp_list[mp_first[j]] = k;
         mp_first[j]++;
     }

@@ -18,7 +18,6 @@ void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less
 /* Sort idx[0..n) ascending by meas[idx].x, ties by index (stable merge
  * sort, bottom-up: no recursion; tmp holds n entries).  The hot-path sort:
  * typed compares, no byte swaps. */
-void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas);
 
 /* CSR lists filled with first[c] as the cursor of c hold in first[c] the
  * end of c, which is the start of c + 1: shift first[0..n] back by one

@@ -89,12 +89,6 @@ int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_msto
     return IN_CIRCLE(dx, dy, MTT_MUL_T(dt, trk->par.vmax));
 }
 
-static int idx_less(const void *a, const void *b, const void *ctx)
-{
-    (void)ctx;
-    return *(const uint16_t *)a < *(const uint16_t *)b;
-}
-
 /* Largest |dx| any pair gate can accept this frame: vmax dT for the circle;
  * for the intensity gate the x-extent of d' S0^-1 d <= gamma, which is
  * sqrt(gamma (sigma_P^2 + R_xx)) = sqrt(f^2 + gamma R_xx). */
@@ -136,16 +130,17 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
     /* The arrays once in locals: Thumb-1 loads a large field offset from a
      * literal at every use (a firmware's .text). */
     mtt_mstore *const meas = trk->meas, *const prev = trk->prev;
-    uint16_t *const cand = trk->init_cand, *const prev_order = trk->prev_order;
-    uint16_t j, a, k;
+    uint16_t j, k;
     if (trk->par.initiate && dt > MTT_ZERO && trk->n_prev > 0u) {
-        /* U_k-1 sorted along x once: each z_k scans only the slice within
-         * reach, O((n + pairs) log n) instead of |U_k| x |U_k-1|. */
+        /* U_k and U_k-1 are stored in the canonical order, sorted by x
+         * (measure.c): each z_k scans only the slice of U_k-1 within reach,
+         * O((n + pairs) log n) instead of |U_k| x |U_k-1|, and the births
+         * come in that order whatever the input's (ALGORITHMS.md §12.1). */
         const mtt_real r = reach_x(trk, dt);
         for (j = 0; j < trk->n_meas; ++j) {
             mtt_mstore *b = &meas[j];
             mtt_pos x_lo, x_hi; /* the slice within reach */
-            uint16_t lo = 0, hi = trk->n_prev, nc = 0;
+            uint16_t lo = 0, hi = trk->n_prev;
             int started = 0;
             if (b->used) {
                 continue;
@@ -154,31 +149,14 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             x_hi = MTT_ADDS(b->x, r);
             while (lo < hi) {
                 uint16_t mid = (uint16_t)(lo + (hi - lo) / 2u);
-                if (prev[prev_order[mid]].x < x_lo) {
+                if (prev[mid].x < x_lo) {
                     lo = (uint16_t)(mid + 1u);
                 } else {
                     hi = mid;
                 }
             }
-            for (k = lo; k < trk->n_prev && prev[prev_order[k]].x <= x_hi; ++k) {
-                cand[nc++] = prev_order[k];
-            }
-            /* Births in input order of z_k-1, as a plain double loop would;
-             * the slice is short, so insertion sort unless it is not. */
-            if (nc > 16u) {
-                mtt_sort(cand, nc, sizeof cand[0], idx_less, NULL);
-            } else {
-                uint16_t q, v;
-                for (k = 1; k < nc; ++k) {
-                    v = cand[k];
-                    for (q = k; q > 0u && cand[q - 1u] > v; --q) {
-                        cand[q] = cand[q - 1u];
-                    }
-                    cand[q] = v;
-                }
-            }
-            for (k = 0; k < nc; ++k) {
-                const mtt_mstore *pa = &prev[cand[k]];
+            for (k = lo; k < trk->n_prev && prev[k].x <= x_hi; ++k) {
+                const mtt_mstore *pa = &prev[k];
                 mtt_state x;
                 mtt_cov P;
                 if (!mtt_init_pair_ok(trk, pa, b, dt)) {
@@ -206,20 +184,11 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
             }
         }
     }
-    /* Store U_k for the next frame, with its x order taken from this
-     * frame's gating sort (order[]), so the next frame sorts nothing;
-     * init_cand maps a measurement to its place in prev. */
+    /* Store U_k for the next frame, in the same order. */
     trk->n_prev = 0;
     for (j = 0; j < trk->n_meas; ++j) {
         if (!meas[j].used) {
-            cand[j] = trk->n_prev;
             prev[trk->n_prev++] = meas[j];
-        }
-    }
-    for (k = 0, a = 0; k < trk->n_meas; ++k) {
-        j = trk->order[k];
-        if (!meas[j].used) {
-            prev_order[a++] = cand[j];
         }
     }
 }

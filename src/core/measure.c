@@ -6,11 +6,35 @@
  * is skipped and counted; in the fixed-point build so is a coordinate
  * outside the declared range +-MTT_FX_POS_LIMIT or a saturated amplitude
  * (docs/FIXED_POINT.md §3: never wrapped).  Beyond MTT_MAX_MEAS the strongest stay: an
- * amplitude beats none, a larger amplitude a smaller, then the earlier
- * input wins.  A heap of the kept input indices holds the weakest at its
- * root, so the cap costs O(n log MTT_MAX_MEAS); the kept ones are then
- * stored in input order. */
+ * amplitude beats none, a larger amplitude a smaller, then the canonical
+ * order below.  A heap of the kept input indices holds the weakest at its
+ * root, so the cap costs O(n log MTT_MAX_MEAS).
+ *
+ * The kept ones are stored in the canonical order (x, y, amplitude; the
+ * input index only between equal detections), so every later stage, births
+ * and their identities included, is the same for any order of the input
+ * (ALGORITHMS.md §15), and the gating and initiation sweeps find them
+ * sorted by x. */
 #include "mtt_internal.h"
+
+/* The canonical order: by value, the input index only between equal
+ * detections (whose outputs are the same either way). */
+static int before(const mtt_meas *m, uint32_t i, uint32_t j)
+{
+    if (m[i].x != m[j].x) {
+        return m[i].x < m[j].x;
+    }
+    if (m[i].y != m[j].y) {
+        return m[i].y < m[j].y;
+    }
+    if (m[i].has_amplitude != m[j].has_amplitude) {
+        return m[i].has_amplitude == 0;
+    }
+    if (m[i].has_amplitude && m[i].amplitude != m[j].amplitude) {
+        return m[i].amplitude < m[j].amplitude;
+    }
+    return i < j;
+}
 
 /* Strength order for the MTT_MAX_MEAS cap. */
 static int stronger(const mtt_meas *m, uint32_t i, uint32_t j)
@@ -21,7 +45,7 @@ static int stronger(const mtt_meas *m, uint32_t i, uint32_t j)
     if (m[i].has_amplitude && m[i].amplitude != m[j].amplitude) {
         return m[i].amplitude > m[j].amplitude;
     }
-    return i < j;
+    return before(m, i, j);
 }
 
 /* Heap order with the weakest kept measurement at the root. */
@@ -30,10 +54,9 @@ static int sel_less(const void *a, const void *b, const void *ctx)
     return stronger((const mtt_meas *)ctx, *(const uint32_t *)a, *(const uint32_t *)b);
 }
 
-static int idx_less(const void *a, const void *b, const void *ctx)
+static int canon_less(const void *a, const void *b, const void *ctx)
 {
-    (void)ctx;
-    return *(const uint32_t *)a < *(const uint32_t *)b;
+    return before((const mtt_meas *)ctx, *(const uint32_t *)a, *(const uint32_t *)b);
 }
 
 static int meas_ok(const mtt_meas *m)
@@ -79,10 +102,7 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
         }
     }
     trk->stats.last.meas_dropped = valid - kept;
-    if (kept == MTT_MAX_MEAS) {
-        /* the heap was built (even with nothing dropped): back to input order */
-        mtt_sort(sel, kept, sizeof sel[0], idx_less, NULL);
-    }
+    mtt_sort(sel, kept, sizeof sel[0], canon_less, meas);
     for (i = 0; i < kept; ++i) {
         store_meas(&trk->meas[i], &meas[sel[i]], sel[i]);
     }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* sort.c - heap sort and heap sift over small fixed arrays, the
- * stable x sort of the gating sweep (ALGORITHMS.md §4, §16), and the shift
- * that turns CSR cursors back into starts (gating, clusters §9).
+/* sort.c - heap sort and heap sift over small fixed arrays (the
+ * measurements' canonical order, ALGORITHMS.md §15, §16), and the shift
+ * that turns CSR cursors back into starts (gating §4, clusters §9).
  *
  * Heap sort because it is O(n log n) in the worst case, needs no recursion
  * and no scratch memory (docs/DESIGN.md: bounded cost, no recursion).  It is not
@@ -52,34 +52,6 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
     for (i = n - 1u; i > 0u; --i) {
         swap_bytes(a, a + i * size, size);
         mtt_heap_sift(base, i, size, 0u, less, ctx);
-    }
-}
-
-void mtt_sort_by_x(uint16_t *idx, uint16_t *tmp, uint16_t n, const mtt_mstore *meas)
-{
-    uint16_t *src = idx, *dst = tmp, *t;
-    uint32_t width, lo;
-    /* Runs of 1, 2, 4, ...: at most log2(n) passes of n moves each. */
-    for (width = 1u; width < n; width *= 2u) {
-        for (lo = 0; lo < n; lo += 2u * width) {
-            uint32_t mid = lo + width < n ? lo + width : n;
-            uint32_t hi = lo + 2u * width < n ? lo + 2u * width : n;
-            uint32_t i = lo, j = mid, k;
-            /* One loop takes from either run ('<=' keeps equal keys in
-             * their current (index) order): less code than a merge loop
-             * and two tails (a firmware's .text). */
-            for (k = lo; k < hi; ++k) {
-                dst[k] = (j >= hi || (i < mid && meas[src[i]].x <= meas[src[j]].x)) ? src[i++] : src[j++];
-            }
-        }
-        t = src;
-        src = dst;
-        dst = t;
-    }
-    if (src != idx) {
-        for (lo = 0; lo < n; ++lo) {
-            idx[lo] = src[lo];
-        }
     }
 }
 

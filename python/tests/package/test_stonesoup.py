@@ -132,6 +132,39 @@ def test_pipeline_gospa_equals_mtt_track(name, seed, ss, mtt_track, scenario_run
           f"mtt-track {np.mean(list(theirs.values())):.6f}")
 
 
+def test_identities_same_for_sets_in_any_order(ss, scenario_run):
+    """A detector that yields sets (Stone Soup's readers do): the confirmed tracks, their
+    identities and states are the same whatever order each scan's set iterates in."""
+    import random
+    from mtt_sim import csvio
+    from mtt.stonesoup import MttTracker
+    from stonesoup.types.detection import Detection
+
+    scn, run, files = scenario_run("crossing3", 3)
+    det, times = csvio.read_det(files["det"])
+    order = [None, random.Random(7), "reversed"]
+    trackers = [MttTracker(settings=files["settings"]) for _ in order]
+    births = 0
+    for k in sorted(times):
+        ts = T0 + datetime.timedelta(seconds=times[k] - times[min(times)])
+        sel = np.flatnonzero(det["scan"] == k)
+        dets = {Detection(np.array([[det["x"][i]], [det["y"][i]]]), timestamp=ts,
+                          metadata={} if np.isnan(det["amp"][i]) else {"amplitude": float(det["amp"][i])})
+                for i in sel}
+        out = []
+        for how, trk in zip(order, trackers):
+            lst = sorted(dets, key=lambda d: (d.state_vector[0, 0], d.state_vector[1, 0]))
+            if how == "reversed":
+                lst.reverse()
+            elif how is not None:
+                how.shuffle(lst)
+            _, tracks = trk.update_tracker(ts, set(lst) if how is None else lst)
+            out.append({t.id: t.state_vector.ravel().tolist() for t in tracks | trk.tentative_tracks})
+        assert out[1] == out[0] and out[2] == out[0], f"scan {k}"
+        births = max(births, max((int(i) for i in out[0]), default=-1) + 1)
+    assert births > 3  # identities were handed out: the targets' and clutter's
+
+
 def test_track_objects_stable_and_cv_order(ss):
     from mtt.stonesoup import MttTracker
     from stonesoup.types.detection import Detection
