@@ -326,6 +326,27 @@ def _planar(rec, spec):
     return rec["time"][keep], rec["id"][keep], np.asarray(x, float), np.asarray(y, float)
 
 
+def sample_accelerations(t, ids, x, y, dt):
+    """|second difference| / dt^2 of each id's track resampled every dt (linear interpolation).
+
+    These are the accelerations that the truth itself has at a scan period dt,
+    as the scenario's linear interpolation makes it: the recording's own
+    noise and its gaps bridged by straight lines included."""
+    out = []
+    for u in sorted(set(ids)):
+        m = ids == u
+        o = np.argsort(t[m], kind="stable")
+        tt, xx, yy = t[m][o], x[m][o], y[m][o]
+        keep = np.concatenate([[True], np.diff(tt) > 0])
+        tt, xx, yy = tt[keep], xx[keep], yy[keep]
+        tau = np.arange(tt[0], tt[-1] + 1e-9, dt) if len(tt) else tt
+        if len(tau) < 3:
+            continue
+        px, py = np.interp(tau, tt, xx), np.interp(tau, tt, yy)
+        out.append(np.hypot(np.diff(px, 2), np.diff(py, 2)) / (dt * dt))
+    return np.concatenate(out) if out else np.zeros(0)
+
+
 def _int_ids(ids, first_id):
     """Target number of each distinct id: the id itself if all are integers >= 0, else first_id + sorted rank."""
     uniq = sorted(set(str(i) for i in ids))
@@ -411,9 +432,12 @@ def main(argv=None):
     import argparse
 
     ap = argparse.ArgumentParser(description="List the traffic samples, or summarise recordings "
-                                             "(extent in the local plane, targets, duration, sample interval).")
+                                             "(extent in the local plane, targets, duration, sample interval, the "
+                                             "truth's own accelerations between samples).")
     ap.add_argument("source", nargs="*", help="traffic:NAME or a CSV path; none: list the traffic samples")
     ap.add_argument("--origin", type=float, nargs=2, metavar=("LAT", "LON"), help="projection origin")
+    ap.add_argument("--dt", type=float, help="period (s) of the truth's accelerations (default: the median "
+                                             "sample interval; a scenario's scans.dt to see what its tracker meets)")
     a = ap.parse_args(argv)
     try:
         if not a.source:
@@ -429,6 +453,14 @@ def main(argv=None):
                 o = a.origin or (float(np.mean(rec['lat'])), float(np.mean(rec['lon'])))
                 print(f"  origin (lat, lon) {o[0]:.6f}, {o[1]:.6f}")
             print(f"  x [{x.min():.0f}, {x.max():.0f}] m, y [{y.min():.0f}, {y.max():.0f}] m")
+            step = a.dt or (float(np.median(d)) if len(d) else None)
+            acc = sample_accelerations(t, ids, x, y, step) if step and step > 0 else np.zeros(0)
+            if len(acc):
+                q = np.quantile(acc, [0.5, 0.9, 0.99])
+                print(f"  the truth's acceleration at a {step:g} s period: median {q[0]:.1f}, 90 % {q[1]:.1f}, "
+                      f"99 % {q[2]:.1f}, max {acc.max():.1f} (length/time^2); {int((acc > 20.0).sum())} of "
+                      f"{len(acc)} steps above 20 m/s^2 = 2 g, beyond an aircraft's (the recording's noise, "
+                      f"or a gap bridged by a straight line)")
     except RecordingError as e:
         print(f"recording: {e}", file=sys.stderr)
         return 2

@@ -291,6 +291,25 @@ ORBIT = [  # a traffic-like sample: epoch ms, icao24, degrees, and columns the r
 ]
 
 
+class TestTruthAccelerations(unittest.TestCase):
+    def test_circle_and_bridged_gap(self):
+        import numpy as np
+        # a circle r 2000 m at 100 m/s sampled every second, seen every 5 s:
+        # the second difference of a chord polygon, 2 r (1 - cos(w 5)) / 5^2
+        t = np.arange(0.0, 200.0, 1.0)
+        w = 100.0 / 2000.0
+        x, y = 2000.0 * np.cos(w * t), 2000.0 * np.sin(w * t)
+        a = recording.sample_accelerations(t, np.array(["c"] * len(t), dtype=object), x, y, 5.0)
+        self.assertEqual(len(a), len(np.arange(0.0, 199.0 + 1e-9, 5.0)) - 2)
+        np.testing.assert_allclose(a, 2 * 2000.0 * (1 - math.cos(w * 5.0)) / 25.0, rtol=1e-9)
+        # east at 100 m/s for 10 s, then north: one 28.28 m/s^2 step at a 5 s period
+        t2 = np.arange(0.0, 21.0, 1.0)
+        x2 = np.where(t2 <= 10.0, 100.0 * t2, 1000.0)
+        y2 = np.where(t2 <= 10.0, 0.0, 100.0 * (t2 - 10.0))
+        a2 = recording.sample_accelerations(t2, np.array(["k"] * len(t2), dtype=object), x2, y2, 5.0)
+        np.testing.assert_allclose(a2, [0.0, 500.0 * math.sqrt(2.0) / 25.0, 0.0], atol=1e-9)
+
+
 class TestTrafficWheel(unittest.TestCase):
     def setUp(self):
         self.d = tmpdir(self)
