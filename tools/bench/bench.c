@@ -80,6 +80,7 @@ static void check(mtt_status st, const char *what)
  * (CV + CA), or auto (with --set process_psd=0 --set max_accel=A the motion
  * of ALGORITHMS.md §2.2); modes that refuse IMM are skipped. */
 static mtt_motion g_motion = MTT_MOTION_CV;
+static long g_scan = -1; /* --scan: the replay frame to time (-1: the busiest) */
 
 static int mode_built(mtt_assoc a, const char **name)
 {
@@ -364,7 +365,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     free(m);
 }
 
-/* ---- replay workload: the busiest frame of a detections file ---- */
+/* ---- replay workload: the busiest frame of a detections file (or --scan's) ---- */
 
 static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t reps, FILE *json, int *first)
 {
@@ -406,10 +407,15 @@ static int run_replay(const char *det, const char *cfg, mtt_assoc mode, size_t r
                 return -1;
             }
             check(mtt_tracker_stats(&trk, &st), "mtt_tracker_stats");
-            if (i == 0 && (double)trk.n_tracks + (double)st.last.pairs > best) {
+            if (i == 0 && (g_scan >= 0 ? (long)sc->scan == g_scan && best < 0.0
+                                       : (double)trk.n_tracks + (double)st.last.pairs > best)) {
                 best = (double)trk.n_tracks + (double)st.last.pairs;
                 busiest = k;
             }
+        }
+        if (i == 0 && best < 0.0) {
+            fprintf(stderr, "mtt-bench: %s: no scan %ld\n", det, g_scan);
+            return -1;
         }
     }
     result_alloc(&r, reps);
@@ -452,6 +458,7 @@ static void usage(FILE *f)
             "  --dense L    comma list of target counts (default 4,16,64,256; 0 = none)\n"
             "  --modes L    comma list of association modes (default: every mode built in)\n"
             "  --det/--config  also replay a detections file and time its busiest frame\n"
+            "  --scan K     time the replay's scan K (the file's scan column) instead\n"
             "  --json F     write the results as JSON\n"
             "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
             "               (default: s0 for dense, the config's for the replay)\n"
@@ -518,6 +525,13 @@ int main(int argc, char **argv)
                 return 2;
             }
             ++n_sets;
+        } else if (i + 1 < argc && !strcmp(argv[i], "--scan")) {
+            char *end = NULL;
+            g_scan = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end != '\0' || g_scan < 0) {
+                fprintf(stderr, "mtt-bench: --scan %s: not a scan number >= 0\n", argv[i]);
+                return 2;
+            }
         } else if (i + 1 < argc && !strcmp(argv[i], "--json")) {
             jpath = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--motion") &&
