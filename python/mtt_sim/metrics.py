@@ -13,7 +13,8 @@ Conventions used throughout
   field and confirmed tracks that (1) has the largest possible number of
   pairs whose distance is <= the association distance ``d_a`` and (2) among
   those, the smallest total distance.  Pairs farther than ``d_a`` are never
-  matched.  It is computed exactly (Hungarian method, ``assign.py``).
+  matched.  It is computed exactly by ``scipy.optimize.linear_sum_assignment``
+  on a cost matrix that makes (1) dominate (2) (:func:`match`).
 * A **confirmed true track** at a scan is a confirmed track matched to a
   target by that rule; every other confirmed track at that scan is a
   **confirmed false track**.  So a second track on an already followed
@@ -49,10 +50,10 @@ import math
 
 import numpy as np
 
-from .assign import linear_assignment
+from scipy.optimize import linear_sum_assignment
 
 __all__ = [
-    "distances", "match", "confirmed_true_false", "gospa", "clear_mot",
+    "distances", "assignment", "match", "confirmed_true_false", "gospa", "clear_mot",
     "seeded_outcome", "counts_per_scan", "time_per_frame", "frames", "score_run",
     "turn_mask", "rmse_legs", "split_outcome",
 ]
@@ -63,6 +64,19 @@ def distances(a_xy, b_xy) -> np.ndarray:
     a = np.asarray(a_xy, float).reshape(-1, 2)
     b = np.asarray(b_xy, float).reshape(-1, 2)
     return np.sqrt(((a[:, None, :] - b[None, :, :]) ** 2).sum(axis=2))
+
+
+def assignment(cost) -> list[tuple[int, int]]:
+    """Minimum-cost one-to-one assignment of a finite (n, m) cost matrix.
+
+    ``scipy.optimize.linear_sum_assignment``: covers the smaller side; returns
+    the (row, col) pairs sorted by row ([] for an empty matrix).
+    """
+    c = np.asarray(cost, dtype=float)
+    if c.size == 0:
+        return []
+    rows, cols = linear_sum_assignment(c)
+    return list(zip(rows.tolist(), cols.tolist()))
 
 
 def match(truth_xy, track_xy, cutoff: float, dist=None) -> list[tuple[int, int]]:
@@ -82,7 +96,7 @@ def match(truth_xy, track_xy, cutoff: float, dist=None) -> list[tuple[int, int]]
         return []
     big = (min(n, m) + 1) * cutoff + 1.0
     cost = np.where(ok, d, big)
-    return [(i, j) for i, j in linear_assignment(cost) if ok[i, j]]
+    return [(i, j) for i, j in assignment(cost) if ok[i, j]]
 
 
 def confirmed_true_false(truth_xy, conf_xy, cutoff: float) -> tuple[int, int]:
@@ -115,7 +129,7 @@ def gospa(truth_xy, est_xy, c: float, p: float = 1.0, alpha: float = 2.0) -> dic
     if nx and ny:
         d = distances(X, Y)
         cost = np.minimum(d, c) ** p
-        real = [(i, j) for i, j in linear_assignment(cost) if d[i, j] < c]
+        real = [(i, j) for i, j in assignment(cost) if d[i, j] < c]
         loc = float(sum(d[i, j] ** p for i, j in real))
     else:
         loc = 0.0

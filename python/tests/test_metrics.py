@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Metrics on small cases whose answers are worked out by hand in the comments."""
 
+import itertools
 import math
 import os
 import sys
@@ -8,33 +9,73 @@ import unittest
 
 import numpy as np
 
-from mtt_sim import assign, csvio, mc, metrics, report
+from mtt_sim import csvio, mc, metrics, report
+
+
+def _brute_match(d, cutoff):
+    """Exhaustive per-scan rule: (number of pairs within cutoff, least total distance) over all
+    one-to-one partial matchings of the pairs within cutoff."""
+    n, m = d.shape
+    best = (0, 0.0)
+
+    def rec(i, used, k, tot):
+        nonlocal best
+        if i == n:
+            if k > best[0] or (k == best[0] and tot < best[1]):
+                best = (k, tot)
+            return
+        rec(i + 1, used, k, tot)
+        for j in range(m):
+            if j not in used and d[i, j] <= cutoff:
+                rec(i + 1, used | {j}, k + 1, tot + d[i, j])
+
+    rec(0, frozenset(), 0, 0.0)
+    return best
 
 
 class TestAssignment(unittest.TestCase):
-    def test_matches_brute_force(self):
+    def test_assignment_matches_brute_force(self):
+        # scipy's assignment against every one-to-one cover of the smaller side
         rng = np.random.default_rng(12345)
-        for trial in range(400):
-            n, m = rng.integers(1, 7, 2)
+        for trial in range(300):
+            n, m = (int(v) for v in rng.integers(1, 6, 2))
             c = rng.integers(0, 9, (n, m)).astype(float) if trial % 2 else rng.random((n, m)) * 10
-            pairs = assign.linear_assignment(c)
-            best, _ = assign.brute_force(c)
+            pairs = metrics.assignment(c)
+            if n <= m:
+                best = min(sum(c[i, j] for i, j in enumerate(p)) for p in itertools.permutations(range(m), n))
+            else:
+                best = min(sum(c[i, j] for j, i in enumerate(p)) for p in itertools.permutations(range(n), m))
             self.assertAlmostEqual(sum(c[i, j] for i, j in pairs), best, places=9)
             self.assertEqual(len(pairs), min(n, m))
             self.assertEqual(len({i for i, _ in pairs}), len(pairs))
             self.assertEqual(len({j for _, j in pairs}), len(pairs))
+
+    def test_match_rule_matches_brute_force(self):
+        # the per-scan rule: most pairs within the cutoff, then least total distance
+        rng = np.random.default_rng(2029)
+        for trial in range(300):
+            n, m = (int(v) for v in rng.integers(1, 6, 2))
+            a = rng.random((n, 2)) * 10
+            b = rng.random((m, 2)) * 10
+            cutoff = float(rng.choice([1.0, 2.5, 4.0]))
+            d = metrics.distances(a, b)
+            pairs = metrics.match(a, b, cutoff)
+            k, tot = _brute_match(d, cutoff)
+            self.assertEqual(len(pairs), k)
+            self.assertAlmostEqual(sum(d[i, j] for i, j in pairs), tot, places=9)
+            self.assertTrue(all(d[i, j] <= cutoff for i, j in pairs))
 
     def test_hand_3x3(self):
         # cost rows = workers, cols = jobs.  Candidates:
         #   (0,1)+(1,0)+(2,2) = 1 + 2 + 2 = 5   <- optimum
         #   (0,0)+(1,1)+(2,2) = 4 + 4 + 2 = 10, (0,2)+(1,0)+(2,1) = 8 + 2 + 6 = 16, ...
         c = [[4, 1, 8], [2, 4, 7], [9, 6, 2]]
-        self.assertEqual(assign.linear_assignment(c), [(0, 1), (1, 0), (2, 2)])
+        self.assertEqual(metrics.assignment(c), [(0, 1), (1, 0), (2, 2)])
 
     def test_empty_and_rectangular(self):
-        self.assertEqual(assign.linear_assignment(np.zeros((0, 3))), [])
+        self.assertEqual(metrics.assignment(np.zeros((0, 3))), [])
         # 3 rows, 1 column: the column goes to the cheapest row (row 2, cost 0.5)
-        self.assertEqual(assign.linear_assignment([[3.0], [1.0], [0.5]]), [(2, 0)])
+        self.assertEqual(metrics.assignment([[3.0], [1.0], [0.5]]), [(2, 0)])
 
 
 class TestGospa(unittest.TestCase):
