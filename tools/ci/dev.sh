@@ -35,7 +35,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
-PY_MODULES=(numpy scipy matplotlib pandas)
+PY_MODULES=(numpy scipy matplotlib pandas trackeval)
 WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
@@ -116,6 +116,9 @@ deps_python() {
     say "apt-get install python3-numpy python3-scipy python3-matplotlib python3-pandas"
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
       python3-numpy python3-scipy python3-matplotlib python3-pandas >/dev/null
+    # TrackEval has no Debian package: pip beside Debian's packages.
+    python3 -c "import trackeval" 2>/dev/null || PIP_DISABLE_PIP_VERSION_CHECK=1 \
+      python3 -m pip install --quiet --break-system-packages trackeval || true
     python3 -c "import $mods" && return 0
   fi
   die "could not install python modules ${PY_MODULES[*]}"
