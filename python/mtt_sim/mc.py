@@ -270,7 +270,7 @@ class Aggregate:
     """Sums of the per-run scores of one mode."""
 
     PER_SCAN = ("n_truth", "conf_true", "conf_false", "n_tentative", "n_confirmed",
-                "gospa", "gospa_loc", "gospa_missed", "gospa_false", "idsw")
+                "gospa", "gospa_loc", "gospa_missed", "gospa_false")
 
     def __init__(self, nscan: int, windows: dict | None = None):
         self.nscan = nscan
@@ -280,6 +280,7 @@ class Aggregate:
         self.sums = {k: np.zeros(nscan) for k in self.PER_SCAN}
         self.sq = {}      # target id -> (sum of squared errors, count) per scan
         self.mot = {"gt": 0, "matches": 0, "fn": 0, "fp": 0, "idsw": 0, "swaps": 0, "dist": 0.0}
+        self.hota: dict[int, dict] = {}  # run index -> metrics.hota, combined in run order
         self.times: list[float] = []
         self.seeded = {"runs": 0, "failed": 0, "coalescence": 0, "switch": 0, "lost": 0,
                        "coalescence_or_switch": 0}
@@ -301,6 +302,7 @@ class Aggregate:
             c[m] += 1
         for k in self.mot:
             self.mot[k] += sc["mot"][k]
+        self.hota[int(res["run"])] = sc["hota"]
         self.times.append(res["time_per_frame"])
         if sc["seeded"] is not None:
             self.seeded["runs"] += 1
@@ -329,7 +331,6 @@ class Aggregate:
             "tentative_mean": s["n_tentative"] / n, "confirmed_mean": s["n_confirmed"] / n,
             "gospa_mean": s["gospa"] / n, "gospa_loc_mean": s["gospa_loc"] / n,
             "gospa_missed_mean": s["gospa_missed"] / n, "gospa_false_mean": s["gospa_false"] / n,
-            "idsw_sum": s["idsw"],
         }
         rmse, rmse_target = {}, {}
         tot_s = np.zeros(self.nscan)
@@ -347,8 +348,11 @@ class Aggregate:
         peak = int(np.argmax(total)) if self.ok else 0
         mot = self.mot
         gt = mot["gt"]
+        hota = metrics.hota_combine([self.hota[r] for r in sorted(self.hota)]) if self.hota else None
         totals = {
             "gospa_mean": float(s["gospa"].mean() / n) if self.ok else math.nan,
+            "hota": hota["hota"] if hota else math.nan, "deta": hota["deta"] if hota else math.nan,
+            "assa": hota["assa"] if hota else math.nan, "loca": hota["loca"] if hota else math.nan,
             "mota": (1.0 - (mot["fn"] + mot["fp"] + mot["idsw"]) / gt) if gt else math.nan,
             "motp": mot["dist"] / mot["matches"] if mot["matches"] else math.nan,
             "idsw": mot["idsw"], "idsw_per_run": mot["idsw"] / n,

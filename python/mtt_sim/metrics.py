@@ -13,7 +13,8 @@ Conventions used throughout
   field and confirmed tracks that (1) has the largest possible number of
   pairs whose distance is <= the association distance ``d_a`` and (2) among
   those, the smallest total distance.  Pairs farther than ``d_a`` are never
-  matched.  It is computed exactly (Hungarian method, ``assign.py``).
+  matched.  It is computed exactly by ``scipy.optimize.linear_sum_assignment``
+  on a cost matrix that makes (1) dominate (2) (:func:`match`).
 * A **confirmed true track** at a scan is a confirmed track matched to a
   target by that rule; every other confirmed track at that scan is a
   **confirmed false track**.  So a second track on an already followed
@@ -26,7 +27,11 @@ Conventions used throughout
 * **GOSPA** (Rahmathullah, Garcia-Fernandez, Svensson 2017) with p = 1,
   alpha = 2 and cut-off c, per scan, exact assignment.
 * **CLEAR-MOT** (Bernardin and Stiefelhagen 2008) with match threshold
-  ``d_a``; see :func:`clear_mot` for the exact correspondence rule.
+  ``d_a``, by TrackEval's ``CLEAR``; see :func:`clear_mot` for the exact
+  correspondence rule and the similarity that makes it the rule above.
+* **HOTA** (Luiten et al. 2021) by TrackEval's ``HOTA``, similarity
+  max(0, 1 - d / d_a) (:func:`hota`); runs combine as TrackEval combines
+  sequences (:func:`hota_combine`).
 * **Split outcome** (:func:`split_outcome`, scenarios with ``splits``): the
   child's confirmation delay is, per split, the first scan k >= the split
   scan at which confirmed tracks are matched by the per-scan rule to both
@@ -49,10 +54,11 @@ import math
 
 import numpy as np
 
-from .assign import linear_assignment
+from scipy.optimize import linear_sum_assignment
+from trackeval.metrics import CLEAR, HOTA
 
 __all__ = [
-    "distances", "match", "confirmed_true_false", "gospa", "clear_mot",
+    "distances", "assignment", "match", "confirmed_true_false", "gospa", "clear_mot", "hota", "hota_combine", "HOTA_FIELDS",
     "seeded_outcome", "counts_per_scan", "time_per_frame", "frames", "score_run",
     "turn_mask", "rmse_legs", "split_outcome",
 ]
@@ -63,6 +69,19 @@ def distances(a_xy, b_xy) -> np.ndarray:
     a = np.asarray(a_xy, float).reshape(-1, 2)
     b = np.asarray(b_xy, float).reshape(-1, 2)
     return np.sqrt(((a[:, None, :] - b[None, :, :]) ** 2).sum(axis=2))
+
+
+def assignment(cost) -> list[tuple[int, int]]:
+    """Minimum-cost one-to-one assignment of a finite (n, m) cost matrix.
+
+    ``scipy.optimize.linear_sum_assignment``: covers the smaller side; returns
+    the (row, col) pairs sorted by row ([] for an empty matrix).
+    """
+    c = np.asarray(cost, dtype=float)
+    if c.size == 0:
+        return []
+    rows, cols = linear_sum_assignment(c)
+    return list(zip(rows.tolist(), cols.tolist()))
 
 
 def match(truth_xy, track_xy, cutoff: float, dist=None) -> list[tuple[int, int]]:
@@ -82,7 +101,7 @@ def match(truth_xy, track_xy, cutoff: float, dist=None) -> list[tuple[int, int]]
         return []
     big = (min(n, m) + 1) * cutoff + 1.0
     cost = np.where(ok, d, big)
-    return [(i, j) for i, j in linear_assignment(cost) if ok[i, j]]
+    return [(i, j) for i, j in assignment(cost) if ok[i, j]]
 
 
 def confirmed_true_false(truth_xy, conf_xy, cutoff: float) -> tuple[int, int]:
@@ -115,7 +134,7 @@ def gospa(truth_xy, est_xy, c: float, p: float = 1.0, alpha: float = 2.0) -> dic
     if nx and ny:
         d = distances(X, Y)
         cost = np.minimum(d, c) ** p
-        real = [(i, j) for i, j in linear_assignment(cost) if d[i, j] < c]
+        real = [(i, j) for i, j in assignment(cost) if d[i, j] < c]
         loc = float(sum(d[i, j] ** p for i, j in real))
     else:
         loc = 0.0
@@ -126,78 +145,121 @@ def gospa(truth_xy, est_xy, c: float, p: float = 1.0, alpha: float = 2.0) -> dic
             "n_missed": nx - na, "n_false": ny - na, "n_assigned": na}
 
 
-def clear_mot(frame_list, cutoff: float) -> dict:
-    """CLEAR-MOT over a sequence of scans.
+def _sequence(frame_list, similarity, transpose: bool = False) -> dict:
+    """TrackEval's data of one sequence (``eval_sequence``) from :func:`frames`' tuples.
 
-    ``frame_list``: iterable of (gt_ids, gt_xy, hyp_ids, hyp_xy) per scan
-    (hypotheses = confirmed tracks).  Correspondence rule per scan:
+    Ids become 0-based indices; ``similarity(d)`` maps the per-scan distance
+    matrix (targets x tracks) to the similarity matrix; ``transpose``
+    exchanges the roles of targets and tracks."""
+    gt_ids, tr_ids, sims = [], [], []
+    for g, gxy, h, hxy in frame_list:
+        gt_ids.append(np.asarray(g, int).ravel())
+        tr_ids.append(np.asarray(h, int).ravel())
+        sims.append(similarity(distances(gxy, hxy)))
+    if transpose:
+        gt_ids, tr_ids, sims = tr_ids, gt_ids, [m.T for m in sims]
+    data = {"num_timesteps": len(sims), "similarity_scores": sims}
+    for key, ids in (("gt", gt_ids), ("tracker", tr_ids)):
+        allids = np.concatenate(ids) if ids else np.zeros(0, int)
+        uniq = np.unique(allids)
+        data[f"{key}_ids"] = [np.searchsorted(uniq, i) for i in ids]
+        data[f"num_{key}_ids"] = len(uniq)
+        data[f"num_{key}_dets"] = len(allids)
+    return data
+
+
+def clear_mot(frame_list, cutoff: float) -> dict:
+    """CLEAR-MOT over a sequence of scans, by TrackEval's ``CLEAR``.
+
+    ``frame_list``: a list of (gt_ids, gt_xy, hyp_ids, hyp_xy) per scan
+    (hypotheses = confirmed tracks).  TrackEval's correspondence rule per
+    scan (``trackeval.metrics.CLEAR.eval_sequence``):
 
     1. a (target, track) pair matched at the previous scan is kept if both
-       are present and still within ``cutoff``;
-    2. the remaining targets and tracks are matched by :func:`match`;
-    3. an **ID switch** is counted for each target matched in step 2 to a
-       track other than the track it was last matched to (at any earlier
-       scan; the py-motmetrics convention);
-    4. misses FN = unmatched targets, false positives FP = unmatched tracks;
-    5. a **track swap** is counted for each track matched (in step 1 or 2)
-       to a target other than the target it was last matched to: an identity
-       that moved from one target to another.  A target lost and re-acquired
-       by a new track is an ID switch (3) but no swap.
+       are present and still within ``cutoff`` (a scan without any target
+       or without any track is skipped: the pairs of the scan before it
+       carry over);
+    2. the remaining targets and tracks are matched by the largest total
+       similarity among pairs at or above its threshold;
+    3. an **ID switch** is counted for each matched target whose track is
+       not the one it was last matched to (at any earlier scan);
+    4. misses FN = unmatched targets, false positives FP = unmatched tracks.
 
-    MOTA = 1 - (sum FN + sum FP + sum IDSW) / sum GT (NaN if no GT);
-    MOTP = mean distance of matched pairs (NaN if none).
-    Returns the totals (``swaps`` the track swaps) plus per-scan arrays
-    ``idsw_scan``, ``fn_scan``, ``fp_scan``.
+    The similarity handed to it is s = 1 - d / (L cutoff) for d <= cutoff
+    (0 beyond), threshold 1 - 1/L, with L = 2 + the largest min(targets,
+    tracks) of a scan: a pair is admissible iff d <= cutoff, one more pair
+    always outweighs any change of the others' similarity, and among
+    matchings of as many pairs the largest total similarity is the least
+    total distance.  So step 2 is the rule of :func:`match`, and the match
+    distances come back from TrackEval's ``MOTP_sum`` = sum of s.
+
+    A **track swap** is counted for each track matched to a target other
+    than the one it was last matched to: an identity that moved from one
+    target to another, i.e. the ID switches of the same ``CLEAR`` with the
+    roles of targets and tracks exchanged.  A target lost and re-acquired by
+    a new track is an ID switch but no swap.
+
+    MOTA = 1 - (FN + FP + IDSW) / GT (NaN if no GT); MOTP = mean distance of
+    the matched pairs (NaN if none).  Returns gt, matches, fn, fp, idsw,
+    swaps, dist (the sum of the matched distances), mota, motp.
     """
-    prev: dict[int, int] = {}
-    last: dict[int, int] = {}
-    last_target: dict[int, int] = {}
-    swaps = 0
-    fn_s, fp_s, sw_s = [], [], []
-    gt_total = matches_total = 0
-    dist_total = 0.0
-    for gt_ids, gt_xy, hyp_ids, hyp_xy in frame_list:
-        gt_ids = [int(a) for a in gt_ids]
-        hyp_ids = [int(a) for a in hyp_ids]
-        d = distances(gt_xy, hyp_xy)
-        hyp_index = {h: j for j, h in enumerate(hyp_ids)}
-        cur: dict[int, int] = {}
-        used_g, used_h = set(), set()
-        for gi, g in enumerate(gt_ids):
-            h = prev.get(g)
-            if h is not None and h in hyp_index and d[gi, hyp_index[h]] <= cutoff:
-                cur[g] = h
-                used_g.add(gi)
-                used_h.add(hyp_index[h])
-        rest_g = [i for i in range(len(gt_ids)) if i not in used_g]
-        rest_h = [j for j in range(len(hyp_ids)) if j not in used_h]
-        sw = 0
-        if rest_g and rest_h:
-            for a, b in match(None, None, cutoff, dist=d[np.ix_(rest_g, rest_h)]):
-                g, h = gt_ids[rest_g[a]], hyp_ids[rest_h[b]]
-                if g in last and last[g] != h:
-                    sw += 1
-                cur[g] = h
-        for g, h in cur.items():
-            dist_total += d[gt_ids.index(g), hyp_index[h]]
-            if last_target.get(h, g) != g:
-                swaps += 1
-            last_target[h] = g
-        fn_s.append(len(gt_ids) - len(cur))
-        fp_s.append(len(hyp_ids) - len(cur))
-        sw_s.append(sw)
-        gt_total += len(gt_ids)
-        matches_total += len(cur)
-        prev = cur
-        last.update(cur)
-    fn, fp, idsw = int(sum(fn_s)), int(sum(fp_s)), int(sum(sw_s))
+    frame_list = list(frame_list)
+    cutoff = float(cutoff)
+    L = 2.0 + max((min(len(f[0]), len(f[2])) for f in frame_list), default=0)
+    scale = L * cutoff
+
+    def similarity(d):
+        return np.where(d <= cutoff, 1.0 - d / scale, 0.0)
+
+    config = {"THRESHOLD": 1.0 - 1.0 / L, "PRINT_CONFIG": False}
+    r = CLEAR(dict(config)).eval_sequence(_sequence(frame_list, similarity))
+    rs = CLEAR(dict(config)).eval_sequence(_sequence(frame_list, similarity, transpose=True))
+    gt = int(r["CLR_TP"] + r["CLR_FN"])
+    matches = int(r["CLR_TP"])
+    fn, fp, idsw = int(r["CLR_FN"]), int(r["CLR_FP"]), int(r["IDSW"])
+    dist = float((matches - r["MOTP_sum"]) * scale)
     return {
-        "gt": gt_total, "matches": matches_total, "fn": fn, "fp": fp, "idsw": idsw,
-        "swaps": swaps, "dist": dist_total,
-        "mota": (1.0 - (fn + fp + idsw) / gt_total) if gt_total else math.nan,
-        "motp": (dist_total / matches_total) if matches_total else math.nan,
-        "fn_scan": np.array(fn_s, int), "fp_scan": np.array(fp_s, int), "idsw_scan": np.array(sw_s, int),
+        "gt": gt, "matches": matches, "fn": fn, "fp": fp, "idsw": idsw, "swaps": int(rs["IDSW"]),
+        "dist": dist,
+        "mota": (1.0 - (fn + fp + idsw) / gt) if gt else math.nan,
+        "motp": (dist / matches) if matches else math.nan,
     }
+
+
+HOTA_FIELDS = ("HOTA_TP", "HOTA_FN", "HOTA_FP", "AssA", "AssRe", "AssPr", "LocA")
+
+
+def hota(frame_list, cutoff: float) -> dict:
+    """HOTA (Luiten et al. 2021) of a sequence of scans, by TrackEval's ``HOTA``.
+
+    The similarity of a target and a track at distance d is
+    max(0, 1 - d / cutoff): 1 on the target, 0 at ``cutoff`` and beyond.
+    TrackEval evaluates it at the thresholds alpha = 0.05, 0.10, ..., 0.95
+    (a pair matches at alpha when its similarity is >= alpha, i.e. d <=
+    (1 - alpha) cutoff) and averages over them.  Returns TrackEval's
+    per-alpha arrays of :data:`HOTA_FIELDS` (what
+    ``HOTA.combine_sequences`` needs to combine runs) and the means over
+    alpha ``hota``, ``deta``, ``assa``, ``loca``.
+    """
+    res = HOTA().eval_sequence(_sequence(list(frame_list), lambda d: np.maximum(0.0, 1.0 - d / float(cutoff))))
+    return hota_summary(res)
+
+
+def hota_summary(res: dict) -> dict:
+    """The arrays of :data:`HOTA_FIELDS` and the alpha means of TrackEval's HOTA result ``res``."""
+    out = {k: np.asarray(res[k], float) for k in HOTA_FIELDS}
+    out.update(hota=float(np.mean(res["HOTA"])), deta=float(np.mean(res["DetA"])),
+               assa=float(np.mean(res["AssA"])), loca=float(np.mean(res["LocA"])))
+    return out
+
+
+def hota_combine(per_run) -> dict:
+    """HOTA over several runs: TrackEval's ``HOTA.combine_sequences`` with each run a sequence.
+
+    ``per_run``: a list of :func:`hota` results (in run order)."""
+    res = HOTA().combine_sequences({i: {k: np.asarray(r[k], float) for k in HOTA_FIELDS}
+                                    for i, r in enumerate(per_run)})
+    return hota_summary(res)
 
 
 def seeded_outcome(seeded_targets, truth_ids, truth_xy, track_ids, track_xy, cutoff: float) -> dict:
@@ -366,9 +428,10 @@ def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gosp
 
     Returns per-scan arrays (length nscan): n_truth, n_tentative,
     n_confirmed, conf_true, conf_false, gospa, gospa_loc, gospa_missed,
-    gospa_false, idsw; ``sq_err``: {target id: array of squared position
+    gospa_false; ``sq_err``: {target id: array of squared position
     errors of its matched confirmed track, NaN where unmatched}; ``mot``:
-    the CLEAR-MOT totals; ``seeded``: :func:`seeded_outcome` at
+    the CLEAR-MOT totals (:func:`clear_mot`); ``hota``: :func:`hota` with
+    the match distance; ``seeded``: :func:`seeded_outcome` at
     ``eval_scan`` (negative counts from the end), or None without seeded
     tracks.
     """
@@ -393,6 +456,7 @@ def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gosp
         out["gospa_missed"][k] = g["missed"]
         out["gospa_false"][k] = g["false"]
     mot = clear_mot(fr, match_distance)
+    hot = hota(fr, match_distance)
     seeded = None
     if seeded_targets:
         k = eval_scan if eval_scan >= 0 else nscan + eval_scan
@@ -405,8 +469,9 @@ def score_run(truth: dict, tracks: dict, nscan: int, match_distance: float, gosp
     out.update({
         "split": split,
         "n_truth": n_truth, "n_tentative": tent, "n_confirmed": conf, "conf_true": ct, "conf_false": cf,
-        "idsw": mot["idsw_scan"], "sq_err": sq,
+        "sq_err": sq,
         "mot": {k: mot[k] for k in ("gt", "matches", "fn", "fp", "idsw", "swaps", "dist", "mota", "motp")},
+        "hota": hot,
         "seeded": seeded,
     })
     return out

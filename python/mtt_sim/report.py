@@ -127,6 +127,10 @@ def table_summary(s: dict) -> str:
             for m in modes],
         ["MOTA"] + [_fmt(R[m]["totals"]["mota"]) for m in modes],
         ["MOTP (mean matched distance)"] + [_fmt(R[m]["totals"]["motp"]) for m in modes],
+        ["HOTA (similarity 1 - d / match distance)"] + [_fmt(R[m]["totals"].get("hota")) for m in modes],
+        ["  detection DetA / association AssA"] + [
+            f"{_fmt(R[m]['totals'].get('deta'))} / {_fmt(R[m]['totals'].get('assa'))}" for m in modes],
+        ["  localisation LocA"] + [_fmt(R[m]["totals"].get("loca")) for m in modes],
         ["ID switches (total / per run)"] + [
             f"{R[m]['totals']['idsw']} / {_fmt(R[m]['totals']['idsw_per_run'], 2)}" for m in modes],
         ["track swaps: a track moves to another target (total / per run)"] + [

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Metrics on small cases whose answers are worked out by hand in the comments."""
 
+import itertools
 import math
 import os
 import sys
@@ -8,33 +9,73 @@ import unittest
 
 import numpy as np
 
-from mtt_sim import assign, csvio, mc, metrics, report
+from mtt_sim import csvio, mc, metrics, report
+
+
+def _brute_match(d, cutoff):
+    """Exhaustive per-scan rule: (number of pairs within cutoff, least total distance) over all
+    one-to-one partial matchings of the pairs within cutoff."""
+    n, m = d.shape
+    best = (0, 0.0)
+
+    def rec(i, used, k, tot):
+        nonlocal best
+        if i == n:
+            if k > best[0] or (k == best[0] and tot < best[1]):
+                best = (k, tot)
+            return
+        rec(i + 1, used, k, tot)
+        for j in range(m):
+            if j not in used and d[i, j] <= cutoff:
+                rec(i + 1, used | {j}, k + 1, tot + d[i, j])
+
+    rec(0, frozenset(), 0, 0.0)
+    return best
 
 
 class TestAssignment(unittest.TestCase):
-    def test_matches_brute_force(self):
+    def test_assignment_matches_brute_force(self):
+        # scipy's assignment against every one-to-one cover of the smaller side
         rng = np.random.default_rng(12345)
-        for trial in range(400):
-            n, m = rng.integers(1, 7, 2)
+        for trial in range(300):
+            n, m = (int(v) for v in rng.integers(1, 6, 2))
             c = rng.integers(0, 9, (n, m)).astype(float) if trial % 2 else rng.random((n, m)) * 10
-            pairs = assign.linear_assignment(c)
-            best, _ = assign.brute_force(c)
+            pairs = metrics.assignment(c)
+            if n <= m:
+                best = min(sum(c[i, j] for i, j in enumerate(p)) for p in itertools.permutations(range(m), n))
+            else:
+                best = min(sum(c[i, j] for j, i in enumerate(p)) for p in itertools.permutations(range(n), m))
             self.assertAlmostEqual(sum(c[i, j] for i, j in pairs), best, places=9)
             self.assertEqual(len(pairs), min(n, m))
             self.assertEqual(len({i for i, _ in pairs}), len(pairs))
             self.assertEqual(len({j for _, j in pairs}), len(pairs))
+
+    def test_match_rule_matches_brute_force(self):
+        # the per-scan rule: most pairs within the cutoff, then least total distance
+        rng = np.random.default_rng(2029)
+        for trial in range(300):
+            n, m = (int(v) for v in rng.integers(1, 6, 2))
+            a = rng.random((n, 2)) * 10
+            b = rng.random((m, 2)) * 10
+            cutoff = float(rng.choice([1.0, 2.5, 4.0]))
+            d = metrics.distances(a, b)
+            pairs = metrics.match(a, b, cutoff)
+            k, tot = _brute_match(d, cutoff)
+            self.assertEqual(len(pairs), k)
+            self.assertAlmostEqual(sum(d[i, j] for i, j in pairs), tot, places=9)
+            self.assertTrue(all(d[i, j] <= cutoff for i, j in pairs))
 
     def test_hand_3x3(self):
         # cost rows = workers, cols = jobs.  Candidates:
         #   (0,1)+(1,0)+(2,2) = 1 + 2 + 2 = 5   <- optimum
         #   (0,0)+(1,1)+(2,2) = 4 + 4 + 2 = 10, (0,2)+(1,0)+(2,1) = 8 + 2 + 6 = 16, ...
         c = [[4, 1, 8], [2, 4, 7], [9, 6, 2]]
-        self.assertEqual(assign.linear_assignment(c), [(0, 1), (1, 0), (2, 2)])
+        self.assertEqual(metrics.assignment(c), [(0, 1), (1, 0), (2, 2)])
 
     def test_empty_and_rectangular(self):
-        self.assertEqual(assign.linear_assignment(np.zeros((0, 3))), [])
+        self.assertEqual(metrics.assignment(np.zeros((0, 3))), [])
         # 3 rows, 1 column: the column goes to the cheapest row (row 2, cost 0.5)
-        self.assertEqual(assign.linear_assignment([[3.0], [1.0], [0.5]]), [(2, 0)])
+        self.assertEqual(metrics.assignment([[3.0], [1.0], [0.5]]), [(2, 0)])
 
 
 class TestGospa(unittest.TestCase):
@@ -139,7 +180,6 @@ class TestClearMot(unittest.TestCase):
         self.assertEqual((r["gt"], r["fn"], r["fp"], r["idsw"], r["matches"]), (8, 1, 1, 3, 7))
         self.assertAlmostEqual(r["mota"], 0.375)
         self.assertAlmostEqual(r["motp"], 0.0)
-        self.assertEqual(r["idsw_scan"].tolist(), [0, 2, 0, 1])
         # track swaps: a and b each move to the other target at k1 (2); c
         # re-acquires target 2 at k3 as a new track: an ID switch, no swap.
         self.assertEqual(r["swaps"], 2)
@@ -163,6 +203,118 @@ class TestClearMot(unittest.TestCase):
         self.assertEqual((r["idsw"], r["fp"]), (0, 1))
         self.assertAlmostEqual(r["mota"], 0.5)
         self.assertAlmostEqual(r["motp"], 1.0)
+
+
+    def test_most_pairs_then_least_distance(self):
+        # threshold 2, one scan: A = (0,0), B = (3,0); P = (1.5,0), Q = (-1.6,0)
+        # (TestConfirmedTrue.test_maximum_cardinality): the two pairs A-Q, B-P
+        # (1.6 + 1.5 = 3.1), not the nearest A-P alone.  MOTP = 3.1 / 2 = 1.55.
+        r = metrics.clear_mot([([1, 2], [[0, 0], [3, 0]], [5, 6], [[1.5, 0], [-1.6, 0]])], 2.0)
+        self.assertEqual((r["matches"], r["fn"], r["fp"]), (2, 0, 0))
+        self.assertAlmostEqual(r["dist"], 3.1, places=12)
+        self.assertAlmostEqual(r["motp"], 1.55, places=12)
+
+    def test_matches_reference_rule(self):
+        # TrackEval's CLEAR with the similarity of metrics.clear_mot against the rule
+        # of its docstring written out (_reference_clear_mot) on random sequences.
+        rng = np.random.default_rng(7)
+        for trial in range(60):
+            nscan, cutoff = int(rng.integers(5, 25)), float(rng.choice([1.0, 2.0, 3.0]))
+            pos = rng.random((4, 2)) * 6
+            fr = []
+            for _ in range(nscan):
+                pos += rng.normal(0, 0.5, pos.shape)
+                g = [t for t in range(4) if rng.random() < 0.9]
+                h = [int(x) for x in rng.choice(8, int(rng.integers(0, 6)), replace=False)]
+                hxy = pos[rng.integers(0, 4, len(h))] + rng.normal(0, 1.0, (len(h), 2))
+                fr.append((g, pos[g], h, hxy.reshape(-1, 2)))
+            r, ref = metrics.clear_mot(fr, cutoff), _reference_clear_mot(fr, cutoff)
+            for k in ("gt", "matches", "fn", "fp", "idsw", "swaps"):
+                self.assertEqual(r[k], ref[k], (trial, k))
+            self.assertAlmostEqual(r["dist"], ref["dist"], delta=1e-9 * max(1.0, ref["dist"]))
+
+    def test_pairs_carry_over_an_empty_scan(self):
+        # threshold 3.  k0: 1-a.  k1: no track.  k2: a 2 away and b on the target: 1-a is
+        # kept (the pairs of k0 carry over k1), no switch, b false.
+        fr = [([1], [[0, 0]], [5], [[0, 0]]), ([1], [[0, 0]], [], np.zeros((0, 2))),
+              ([1], [[0, 0]], [5, 6], [[2, 0], [0, 0]])]
+        r = metrics.clear_mot(fr, 3.0)
+        self.assertEqual((r["matches"], r["fn"], r["fp"], r["idsw"]), (2, 1, 1, 0))
+        self.assertAlmostEqual(r["dist"], 2.0, places=12)
+
+
+def _reference_clear_mot(fr, cutoff):
+    """The correspondence rule of metrics.clear_mot, written out: previous-scan pairs kept
+    within cutoff (a scan without targets or without tracks leaves them as they were), the
+    rest by metrics.match; ID switches against the last track of each target, swaps against
+    the last target of each track."""
+    prev, last, last_target = {}, {}, {}
+    out = {"gt": 0, "matches": 0, "fn": 0, "fp": 0, "idsw": 0, "swaps": 0, "dist": 0.0}
+    for gid, gxy, hid, hxy in fr:
+        d = metrics.distances(gxy, hxy)
+        col = {h: j for j, h in enumerate(hid)}
+        cur = {g: prev[g] for i, g in enumerate(gid) if prev.get(g) in col and d[i, col[prev[g]]] <= cutoff}
+        rg = [i for i, g in enumerate(gid) if g not in cur]
+        rh = [j for j, h in enumerate(hid) if h not in cur.values()]
+        if rg and rh:
+            for a, b in metrics.match(None, None, cutoff, dist=d[np.ix_(rg, rh)]):
+                g, h = gid[rg[a]], hid[rh[b]]
+                out["idsw"] += int(g in last and last[g] != h)
+                cur[g] = h
+        for g, h in cur.items():
+            out["dist"] += d[gid.index(g), col[h]]
+            out["swaps"] += int(last_target.get(h, g) != g)
+            last_target[h] = g
+        out["gt"] += len(gid)
+        out["matches"] += len(cur)
+        out["fn"] += len(gid) - len(cur)
+        out["fp"] += len(hid) - len(cur)
+        if gid and hid:
+            prev = cur
+        last.update(cur)
+    return out
+
+
+class TestHota(unittest.TestCase):
+    # TrackEval's thresholds: alpha = 0.05, 0.10, ..., 0.95 (19); similarity 1 - d / cutoff.
+    def test_perfect(self):
+        # one target, one track on it at every scan: every alpha matches, HOTA = DetA = AssA = 1.
+        fr = [([1], [[k, 0]], [9], [[k, 0]]) for k in range(4)]
+        h = metrics.hota(fr, 2.0)
+        self.assertAlmostEqual(h["hota"], 1.0)
+        self.assertAlmostEqual(h["deta"], 1.0)
+        self.assertAlmostEqual(h["assa"], 1.0)
+        self.assertEqual(h["HOTA_TP"].tolist(), [4.0] * 19)
+
+    def test_id_switch_halves_assa(self):
+        # target 1 is followed by track 8 at scans 0-1 and by track 9 at scans 2-3, exactly.
+        # DetA = 1; each pair's association IoU is 2 / (2 + 2 + 0) = 0.5, so AssA = 0.5 and
+        # HOTA = sqrt(1 * 0.5) = 0.70711.
+        fr = [([1], [[k, 0]], [8 if k < 2 else 9], [[k, 0]]) for k in range(4)]
+        h = metrics.hota(fr, 2.0)
+        self.assertAlmostEqual(h["deta"], 1.0)
+        self.assertAlmostEqual(h["assa"], 0.5)
+        self.assertAlmostEqual(h["hota"], math.sqrt(0.5))
+
+    def test_localisation_thresholds(self):
+        # the track 0.98 away with cutoff 2: similarity 0.51, a match for the 10 alphas
+        # 0.05 .. 0.50 only.  HOTA = 10/19 = 0.52632; LocA = 0.51 at those alphas and 1
+        # (TrackEval's value without a match) at the 9 others: (10 * 0.51 + 9) / 19.
+        # A second run with the track on the target combines (TrackEval's
+        # combine_sequences) to TP 8, FN 0, FP 0 at the 10 alphas and TP 4, FN 4, FP 4 at
+        # the others: DetA = (10 * 1 + 9 * 4/12) / 19 = 0.68421.
+        far = [([1], [[k, 0]], [9], [[k, 0.98]]) for k in range(4)]
+        h = metrics.hota(far, 2.0)
+        self.assertAlmostEqual(h["hota"], 10 / 19)
+        self.assertAlmostEqual(h["loca"], (10 * 0.51 + 9) / 19)
+        both = metrics.hota_combine([h, metrics.hota([([1], [[k, 0]], [9], [[k, 0]]) for k in range(4)], 2.0)])
+        self.assertAlmostEqual(both["deta"], (10 + 9 * 4 / 12) / 19)
+
+    def test_empty(self):
+        # no track at all: every target detection is a miss, HOTA 0.
+        h = metrics.hota([([1], [[0, 0]], [], np.zeros((0, 2)))], 1.0)
+        self.assertEqual(h["HOTA_FN"].tolist(), [1.0] * 19)
+        self.assertAlmostEqual(h["hota"], 0.0)
 
 
 class TestSeededOutcome(unittest.TestCase):

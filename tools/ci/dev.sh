@@ -21,7 +21,7 @@
 #                            scenarios/crossing3.json (lm-ihpda beside lm-ipda):
 #                            metric tables on stdout, plots in out/demo
 #   ./tools/ci/dev.sh python-package
-#                            pip install .[stonesoup,test] into the venv
+#                            pip install .[stonesoup,sim,test] into the venv
 #                            build/pyvenv (PyPI only, pip's cache reused) and
 #                            pytest python/tests/package against the mtt-track of
 #                            build/host-float; ends with "N passed, M failed"
@@ -35,7 +35,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
-PY_MODULES=(numpy matplotlib pandas)
+PY_MODULES=(numpy scipy matplotlib pandas trackeval)
 WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
@@ -113,9 +113,12 @@ deps_python() {
   # A Debian system python refuses pip (PEP 668): take Debian's packages.
   if [[ "$(command -v python3)" == /usr/bin/python3 ]] && is_root && command -v apt-get >/dev/null 2>&1; then
     apt_update_once
-    say "apt-get install python3-numpy python3-matplotlib python3-pandas"
+    say "apt-get install python3-numpy python3-scipy python3-matplotlib python3-pandas"
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-      python3-numpy python3-matplotlib python3-pandas >/dev/null
+      python3-numpy python3-scipy python3-matplotlib python3-pandas >/dev/null
+    # TrackEval has no Debian package: pip beside Debian's packages.
+    python3 -c "import trackeval" 2>/dev/null || PIP_DISABLE_PIP_VERSION_CHECK=1 \
+      python3 -m pip install --quiet --break-system-packages trackeval || true
     python3 -c "import $mods" && return 0
   fi
   die "could not install python modules ${PY_MODULES[*]}"
@@ -153,7 +156,7 @@ run_counted() {
 
 # ---------------------------------------------------------------- python package
 # The package (pyproject.toml) in a venv under build/, so the system Python
-# is not touched: pip install .[stonesoup,test] (scikit-build-core builds the
+# is not touched: pip install .[stonesoup,sim,test] (scikit-build-core builds the
 # library and mtt._core; pip's cache keeps the second run short), then
 # pytest python/tests/package.  MTT_REQUIRE_ALL=1: a missing mtt-track or
 # Stone Soup fails the tests instead of skipping them.  Adds pytest's counts
@@ -161,7 +164,7 @@ run_counted() {
 PY_VENV="$ROOT/build/pyvenv"
 run_python_package() {
   local rc=0 line n
-  say "=== python package: venv $PY_VENV, pip install .[stonesoup,test], pytest"
+  say "=== python package: venv $PY_VENV, pip install .[stonesoup,sim,test], pytest"
   if [[ ! -x "$PY_VENV/bin/python" ]] && ! python3 -m venv "$PY_VENV"; then
     if is_root && command -v apt-get >/dev/null 2>&1; then
       apt_update_once
@@ -171,7 +174,7 @@ run_python_package() {
     python3 -m venv "$PY_VENV" || { say "cannot create a venv"; failed=$((failed + 1)); return 0; }
   fi
   if ! PIP_DISABLE_PIP_VERSION_CHECK=1 "$PY_VENV/bin/python" -m pip install --quiet \
-      -C "build-dir=$ROOT/build/pip/{wheel_tag}" "$ROOT[stonesoup,test]"; then
+      -C "build-dir=$ROOT/build/pip/{wheel_tag}" "$ROOT[stonesoup,sim,test]"; then
     say "pip install of the package failed"
     failed=$((failed + 1))
     return 0

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures of the package tests (pytest): the repository, mtt-track, runs of the scenarios.
 
-These tests import the INSTALLED packages mtt and mtt_sim (`pip install .[stonesoup,test]`;
+These tests import the INSTALLED packages mtt and mtt_sim (`pip install .[stonesoup,sim,test]`;
 tools/ci/dev.sh test does it in a venv under build/).  The comparisons with
 mtt-track need the binary of the same configuration (float, default bounds):
 $MTT_TRACK, else build/host-float/tools/track/mtt-track.  With MTT_REQUIRE_ALL=1
