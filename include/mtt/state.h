@@ -294,6 +294,7 @@ typedef struct mtt_tracker {
     uint16_t n_meas;
     mtt_mstore meas[MTT_MAX_MEAS];
     uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
+    uint32_t sel_tmp[MTT_MAX_MEAS]; /* the canonical sort's merge buffer */
     uint16_t n_pairs;
     mtt_pair pairs[MTT_MAX_PAIRS];
     uint16_t mp_first[MTT_MAX_MEAS + 1]; /* pairs of each measurement (CSR) */

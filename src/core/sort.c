@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* sort.c - heap sort and heap sift over small fixed arrays (the
- * measurements' canonical order, ALGORITHMS.md §15, §16), and the shift
- * that turns CSR cursors back into starts (gating §4, clusters §9).
+ * MTT_MAX_MEAS cap's heap, ALGORITHMS.md §16; gated pairs, merge
+ * candidates, joint events), and the shift that turns CSR cursors back
+ * into starts (gating §4, clusters §9).
  *
  * Heap sort because it is O(n log n) in the worst case, needs no recursion
  * and no scratch memory (docs/DESIGN.md: bounded cost, no recursion).  It is not
