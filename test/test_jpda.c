@@ -163,6 +163,26 @@ static void test_tv13_suboptimal(void)
     assert_row(1, 3, 0.1428571429, p2, "TV13 Suboptimal B_t");
 }
 
+/* The settings key subopt_jpda_constant_b selects the constant B in the
+ * association stage (mtt_associate_frame, as mtt_tracker_step runs it). */
+static void test_tv13_suboptimal_key(void)
+{
+    static const double c1[3] = {0.5555555556, 0.1666666667, 0}, c2[3] = {0, 0.5, 0.25};
+    static const double p1[3] = {0.6666666667, 0.2, 0}, p2[3] = {0, 0.5714285714, 0.2857142857};
+    size_t k;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_find("subopt_jpda_constant_b", &k));
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
+    trk.par.subopt_jpda_constant_b = 1;
+    mtt_associate_frame(&trk);
+    assert_row(0, 3, 0.2777777778, c1, "key: constant B");
+    assert_row(1, 3, 0.25, c2, "key: constant B");
+    problem(MTT_ASSOC_SUBOPT_JPDA, 2, 3, A13, 0.1, NULL);
+    TEST_ASSERT_EQUAL_INT(0, trk.par.subopt_jpda_constant_b); /* the default: B_t */
+    mtt_associate_frame(&trk);
+    assert_row(0, 3, 0.1333333333, p1, "key: B_t");
+    assert_row(1, 3, 0.1428571429, p2, "key: B_t");
+}
+
 static void test_tv13_exact_jpda_events(void)
 {
     /* TV13, enumeration order: T1 none / z1 / z2, then T2 none / z2 / z3. */
@@ -366,6 +386,7 @@ int main(void)
     RUN_TEST(test_tv13_cheap_raw);
     RUN_TEST(test_tv13_cheap_normalised);
     RUN_TEST(test_tv13_suboptimal);
+    RUN_TEST(test_tv13_suboptimal_key);
     RUN_TEST(test_tv13_exact_jpda_events);
     RUN_TEST(test_tv13_jpda_star_equals_jpda_here);
     RUN_TEST(test_tv13_nnjpda);

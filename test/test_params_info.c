@@ -39,7 +39,7 @@ static void test_table_lists_the_settings_keys(void)
 #endif
         "markov_p11", "markov_p21", "existence_init", "confirm_threshold",
         "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
-        "intensity_gate.f1", "intensity_gate.f2", "intensity_gate.blend", "jpda_bias",
+        "intensity_gate.f1", "intensity_gate.f2", "intensity_gate.blend", "jpda_bias", "subopt_jpda_constant_b",
         "jpda_star_threshold", "nnjpda_threshold", "adaptive_jpda_distance",
         "adaptive_jpda_shrink", "motion"
 #if MTT_WITH_IMM

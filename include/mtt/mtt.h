@@ -178,6 +178,7 @@ typedef struct mtt_params {
     mtt_real intensity_f2[3];   /**< f2(I) (default [S2]) */
     mtt_real intensity_blend[2];/**< I_lo < I_hi of the f1/f2 blend */
     mtt_real jpda_bias;         /**< JPDA family B; 0 means lambda(1-PD*PG)/PD (ALGORITHMS.md §13) */
+    int subopt_jpda_constant_b; /**< nonzero: suboptimal-jpda with [S1]'s constant B (ALGORITHMS.md §13.4) */
     mtt_real jpda_star_threshold;   /**< JPDA* pruning probability */
     mtt_real nnjpda_threshold;      /**< NNJPDA minimum beta */
     mtt_real adaptive_jpda_distance;/**< overlap distance in sigmas */

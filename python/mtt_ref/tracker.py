@@ -142,7 +142,7 @@ class Tracker:
             self.near_ties.append(f"frame {self.frame}: {what}: {a!r} vs {b!r}")
 
     def step(self, t, meas):
-        """One frame. meas: list of (x, y, amplitude or None), in input order."""
+        """One frame. meas: list of (x, y, amplitude or None), in any order (stored canonically)."""
         p = self.par
         self.frame += 1
         if self.time is not None and not t > self.time:
@@ -161,13 +161,17 @@ class Tracker:
                 self.events["bad detection skipped"] += 1
                 continue
             ms.append((mx, my, ma, i))
+        # the canonical order (ALGORITHMS.md §15): x, y, no amplitude before one, the
+        # amplitude, the input index only between equal detections
+        def canon(m):
+            return (m[0], m[1], m[2] is not None, m[2] if m[2] is not None else 0.0, m[3])
         if len(ms) > MAX_MEAS:
             self.events["measurement cap"] += 1
-            # strongest amplitudes stay; no amplitude ranks below any; earlier input wins ties
+            # strongest amplitudes stay; no amplitude ranks below any; the canonical order breaks ties
             order = sorted(range(len(ms)), key=lambda k: (ms[k][2] is None,
-                                                          -(ms[k][2] or 0.0), k))
-            keep = sorted(order[:MAX_MEAS])
-            ms = [ms[k] for k in keep]
+                                                          -(ms[k][2] or 0.0), canon(ms[k])))
+            ms = [ms[k] for k in order[:MAX_MEAS]]
+        ms.sort(key=canon)
         nm = len(ms)
         Z = np.array([[m[0], m[1]] for m in ms]).reshape(nm, 2)
 

@@ -43,7 +43,7 @@ static void jpda_cluster(mtt_tracker *trk, uint16_t c, uint8_t how)
         mtt_cheap_jpda(trk, c, 1);
         break;
     case MTT_ASSOCIATE_SUBOPT_JPDA:
-        mtt_subopt_jpda(trk, c, 1);
+        mtt_subopt_jpda(trk, c, !trk->par.subopt_jpda_constant_b); /* §13.4: B_t or [S1]'s B */
         break;
     case MTT_ASSOCIATE_JPDA_STAR:
         exact_or_cheap(trk, c, MTT_JPDA_STAR);

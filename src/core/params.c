@@ -165,6 +165,7 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     p->intensity_blend[0] = PDEF(intensity_blend, 150.0);
     p->intensity_blend[1] = PDEF(intensity_blend, 250.0);
     p->jpda_bias = PDEF(jpda_bias, 0.0);
+    p->subopt_jpda_constant_b = 0;
     p->jpda_star_threshold = PDEF(jpda_star_threshold, 0.0);
     p->nnjpda_threshold = PDEF(nnjpda_threshold, 0.0);
     p->adaptive_jpda_distance = PDEF(adaptive_jpda_distance, 9.0);

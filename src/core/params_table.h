@@ -170,6 +170,8 @@ extern const char *const mtt_model_names[3];
          "increasing (I_lo < I_hi)", TRACK, "[I_lo, I_hi]: f = f1 below I_lo, f2 above I_hi, a linear blend between (§12.2)") \
     REAL("jpda_bias", jpda_bias, 1, 0.0, MTT_REAL_MAX, 0, NULL, BASELINE,                                         \
          "B of the JPDA family except jipda; 0 uses λ(1 − PD·PG)/PD (§13)")                             \
+    FLAG("subopt_jpda_constant_b", subopt_jpda_constant_b, BASELINE,                                      \
+         "suboptimal-jpda: true uses [S1]'s constant B in eq. 4 and 5; false (the default) the per-track B_t (§13.4)") \
     REAL("jpda_star_threshold", jpda_star_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL, BASELINE,              \
          "pruning probability of JPDA*; 0 is pure JPDA* (§13.6)")                                                             \
     REAL("nnjpda_threshold", nnjpda_threshold, 1, 0.0, 1.0, PF_OPEN_HI, NULL, BASELINE,                    \

@@ -165,7 +165,7 @@ list_settings)
     stdout_has "| \`initial_tracks\` | list | "
     stdout_has " | probability of detection PD | sensor |"
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 51 ] || fail "expected 51 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 52 ] || fail "expected 52 key rows"
     ;;
 version)
     run --version
