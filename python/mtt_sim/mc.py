@@ -12,12 +12,16 @@ The tracker runs in-process through the mtt package when it is installed
 either (the scores are the same, in-process is faster: docs/PYTHON.md).
 Prints the tables to stdout (also OUT/report.txt), writes OUT/summary.json,
 OUT/*.png and the files of run 0 under OUT/run0/.  Progress goes to stderr.
+With --scheduler tcp://HOST:8786 the runs are tasks of a running Dask
+scheduler instead of local processes (docs/PYTHON.md "Monte Carlo on a
+cluster"); the totals are the same.
 Exit status: 0 if every run succeeded, 1 if some failed, 2 on bad arguments.
 
 The runner: generate, run the tracker, score, aggregate.  Run r of mode m
 uses seed ``seed0 + r`` for every mode, so the modes are compared on
 identical detections (common random numbers), as S4 compares its two
-methods.  Work items (mode, run) are spread over J worker processes;
+methods.  Work items (mode, run) are spread over J worker processes (or
+the workers of a Dask scheduler) and aggregated in run order;
 each one generates its run in a private temporary directory, calls
 
     mtt-track --config S --detections D --tracks T
@@ -54,7 +58,7 @@ from . import scenario as scnmod
 
 __all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_available", "track_in_process", "IN_PROCESS",
            "TrackerError", "run_tracker", "one_run", "monte_carlo", "Aggregate", "build_summary",
-           "add_run_arguments", "main"]
+           "add_run_arguments", "add_scheduler_argument", "check_scheduler", "dask_client", "main"]
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DEFAULT_BINARY = os.path.join(REPO, "build", "host-float", "tools", "track", "mtt-track")
@@ -432,36 +436,98 @@ def _progress(done, total, t_start, stream, last=[0.0]):
     stream.flush()
 
 
+def _in_order(results, index_of):
+    """The results of ``results`` (in any order) in the order of ``index_of(res)``
+    (0, 1, 2, ...): each one as soon as every earlier one has come.  Aggregate.add
+    sums floats, so the order of the adds decides the last bits of the totals."""
+    pending, nxt = {}, 0
+    for res in results:
+        pending[index_of(res)] = res
+        while nxt in pending:
+            yield pending.pop(nxt)
+            nxt += 1
+
+
+def dask_client(scheduler):
+    """A distributed.Client for ``scheduler``: a Client (returned as is, not owned) or an
+    address such as tcp://HOST:8786 (connected here, owned by the caller).  Returns
+    (client, owned)."""
+    if not isinstance(scheduler, str):
+        return scheduler, False
+    from distributed import Client  # dask[distributed], the sim extra
+
+    return Client(scheduler, timeout="30s"), True
+
+
+def _dask_runs(client, scn, exe, keep_root, timeout, items):
+    """The results of ``items`` run as Dask tasks (one_run each), as they complete."""
+    from distributed import as_completed
+
+    scn_f = client.scatter(scn, broadcast=True)
+    futs = [client.submit(one_run, scn_f, m, r, seed, exe, keep_root if (r == 0 and keep_root) else None,
+                          timeout, pure=False)
+            for m, r, seed in items]
+    try:
+        for f in as_completed(futs):
+            yield f.result()
+    finally:
+        client.cancel(futs)
+
+
 def monte_carlo(scn: dict, modes, runs: int, exe: str, jobs: int | None = None, seed0: int = 0,
-                keep_root: str | None = None, timeout: float = 600.0, progress=sys.stderr) -> dict:
-    """Run every (mode, run) and return {mode: Aggregate.result()} plus timing info."""
+                keep_root: str | None = None, timeout: float = 600.0, progress=sys.stderr,
+                scheduler=None, first_run: int = 0, aggregates: dict | None = None) -> dict:
+    """Run every (mode, run) and return {mode: Aggregate.result()} plus timing info.
+
+    Runs first_run .. first_run + runs - 1 (run r: seed seed0 + r).  ``scheduler``:
+    None or "local": ``jobs`` local processes; a Dask scheduler's address
+    (tcp://HOST:8786) or a distributed.Client: every run is a Dask task (the
+    workers need mtt_sim and ``exe`` at the same path).  The results are added
+    to the aggregates in run order whatever the order they complete in, so
+    the totals are the same bit for bit for any jobs and scheduler.
+    ``aggregates``: {mode: Aggregate} to add to (a run split into chunks
+    gives the totals of one call), else new ones."""
     nscan = int(scn["scans"]["count"])
     jobs = jobs or os.cpu_count() or 1
-    items = [(m, r, seed0 + r) for r in range(runs) for m in modes]
+    items = [(m, r, seed0 + r) for r in range(first_run, first_run + runs) for m in modes]
     windows = scnmod.manoeuvre_windows(scn)
-    aggs = {m: Aggregate(nscan, windows) for m in modes}
+    aggs = aggregates if aggregates is not None else {m: Aggregate(nscan, windows) for m in modes}
     t0 = time.monotonic()
     done = 0
-    if jobs <= 1:
+    pool = client = None
+    owned = False
+    if scheduler not in (None, "local"):
+        client, owned = dask_client(scheduler)
+        jobs = sum(client.nthreads().values())
+        it = _dask_runs(client, scn, exe, keep_root, timeout, items)
+    elif jobs <= 1:
         _init_worker(scn, exe, keep_root, timeout)
         it = map(_work, items)
-        pool = None
     else:
         ctx = multiprocessing.get_context("fork")
         pool = ctx.Pool(jobs, initializer=_init_worker, initargs=(scn, exe, keep_root, timeout))
         it = pool.imap_unordered(_work, items, chunksize=1)
     if progress is not None:  # a long run (a recording) shows the line before its first result
         _progress(0, len(items), t0, progress)
-    try:
-        for res in it:
-            aggs[res["mode"]].add(res)
+    mode_index = {m: i for i, m in enumerate(modes)}
+
+    def arrived(results):
+        nonlocal done
+        for res in results:
             done += 1
             if progress is not None:
                 _progress(done, len(items), t0, progress)
+            yield res
+
+    try:
+        for res in _in_order(arrived(it), lambda res: (res["run"] - first_run) * len(modes) + mode_index[res["mode"]]):
+            aggs[res["mode"]].add(res)
     finally:
         if pool is not None:
             pool.close()
             pool.join()
+        if owned:
+            client.close()
     if progress is not None:
         progress.write("\n")
         progress.flush()
@@ -507,9 +573,26 @@ def add_run_arguments(ap: argparse.ArgumentParser, scenarios: bool = False, runs
                     help="override a scenario value by dotted path (repeatable)")
 
 
+def add_scheduler_argument(ap: argparse.ArgumentParser) -> None:
+    """--scheduler of mc and tune (monte_carlo's ``scheduler``)."""
+    ap.add_argument("--scheduler", default="local", metavar="local|tcp://HOST:PORT",
+                    help="local (default): --jobs local processes; tcp://HOST:8786: the runs are tasks of that "
+                         "running Dask scheduler (dask[distributed]; the workers need mtt_sim and the same "
+                         "mtt-track path, run 0's files are written by the worker that runs it); the totals "
+                         "are the same as a serial run's")
+
+
+def check_scheduler(value: str) -> str | None:
+    """An error message for a bad --scheduler, else None."""
+    if value == "local" or value.startswith(("tcp://", "tls://", "inproc://", "ucx://")):
+        return None
+    return f"--scheduler: '{value}' is neither local nor a scheduler address such as tcp://HOST:8786"
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_run_arguments(ap)
+    add_scheduler_argument(ap)
     ap.add_argument("--mtt-track", dest="mtt_track",
                     help="mtt-track binary (default: $MTT_TRACK, then build/host-float/tools/track/mtt-track)")
     ap.add_argument("--tracker", choices=("auto", "in-process", "mtt-track"), default="auto",
@@ -522,6 +605,8 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.runs < 1 or a.jobs < 1:
         ap.error("--runs and --jobs must be >= 1")
+    if check_scheduler(a.scheduler):
+        ap.error(check_scheduler(a.scheduler))
     try:
         scn = scnmod.load(a.scenario, a.set)
         modes = a.assoc or [scnmod.tracker_value(scn, "association")]
@@ -542,7 +627,7 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     res = monte_carlo(scn, modes, a.runs, exe, a.jobs, a.seed0,
-                      keep_root=os.path.join(a.out, "run0"), timeout=a.timeout)
+                      keep_root=os.path.join(a.out, "run0"), timeout=a.timeout, scheduler=a.scheduler)
     summary = build_summary(scn, a.scenario, a.set, modes, a.runs, a.seed0, exe, res)
     with open(os.path.join(a.out, "summary.json"), "w", encoding="utf-8") as f:
         json.dump(summary, f, indent=1)

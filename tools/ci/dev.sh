@@ -35,7 +35,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
 DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
-PY_MODULES=(numpy scipy matplotlib pandas trackeval)
+PY_MODULES=(numpy scipy matplotlib pandas trackeval optuna distributed)  # import names
+PY_PIP=(numpy scipy matplotlib pandas trackeval optuna "dask[distributed]")  # what pip installs
+PY_DEBS=(python3-numpy python3-scipy python3-matplotlib python3-pandas python3-optuna python3-distributed)
 WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
@@ -105,17 +107,17 @@ deps_python() {
     say "python3 modules present: ${PY_MODULES[*]}"
     return 0
   fi
-  say "python3 -m pip install ${PY_MODULES[*]}"
+  say "python3 -m pip install ${PY_PIP[*]}"
   if PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore \
-       python3 -m pip install --quiet "${PY_MODULES[@]}"; then
+       python3 -m pip install --quiet "${PY_PIP[@]}" && python3 -c "import $mods"; then
     return 0
   fi
   # A Debian system python refuses pip (PEP 668): take Debian's packages.
   if [[ "$(command -v python3)" == /usr/bin/python3 ]] && is_root && command -v apt-get >/dev/null 2>&1; then
     apt_update_once
-    say "apt-get install python3-numpy python3-scipy python3-matplotlib python3-pandas"
+    say "apt-get install ${PY_DEBS[*]}"
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-      python3-numpy python3-scipy python3-matplotlib python3-pandas >/dev/null
+      "${PY_DEBS[@]}" >/dev/null
     # TrackEval has no Debian package: pip beside Debian's packages.
     python3 -c "import trackeval" 2>/dev/null || PIP_DISABLE_PIP_VERSION_CHECK=1 \
       python3 -m pip install --quiet --break-system-packages trackeval || true
