@@ -605,8 +605,9 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.runs < 1 or a.jobs < 1:
         ap.error("--runs and --jobs must be >= 1")
-    if check_scheduler(a.scheduler):
-        ap.error(check_scheduler(a.scheduler))
+    bad = check_scheduler(a.scheduler)
+    if bad:
+        ap.error(bad)
     try:
         scn = scnmod.load(a.scenario, a.set)
         modes = a.assoc or [scnmod.tracker_value(scn, "association")]

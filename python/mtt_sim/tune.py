@@ -452,8 +452,9 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.runs < 1 or a.jobs < 1 or a.trials < 1 or a.chunks < 1:
         ap.error("--runs, --jobs, --trials and --chunks must be >= 1")
-    if mc.check_scheduler(a.scheduler):
-        ap.error(mc.check_scheduler(a.scheduler))
+    bad = mc.check_scheduler(a.scheduler)
+    if bad:
+        ap.error(bad)
     try:
         space = parse_space_file(a.space_file) if a.space_file else {}
         for item in a.space:

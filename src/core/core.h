@@ -15,10 +15,6 @@ void mtt_sort(void *base, size_t n, size_t size, mtt_less_fn less, const void *c
  * element that is NOT less than any other ("max-heap" for `less`). */
 void mtt_heap_sift(void *base, size_t n, size_t size, size_t i, mtt_less_fn less, const void *ctx);
 
-/* Sort idx[0..n) ascending by meas[idx].x, ties by index (stable merge
- * sort, bottom-up: no recursion; tmp holds n entries).  The hot-path sort:
- * typed compares, no byte swaps. */
-
 /* CSR lists filled with first[c] as the cursor of c hold in first[c] the
  * end of c, which is the start of c + 1: shift first[0..n] back by one
  * (first[0] = 0).  A forward carry, so the compiler links no memmove. */
