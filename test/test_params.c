@@ -279,7 +279,8 @@ static void test_assoc_names_round_trip(void)
 {
     static const char *const names[MTT_ASSOC_COUNT] = {
         "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
-        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"}; /* docs/FORMATS.md */
+        "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
+        "lm-ipda-all"}; /* docs/FORMATS.md */
     int a;
     for (a = 0; a < (int)MTT_ASSOC_COUNT; ++a) {
         const char *name = NULL;

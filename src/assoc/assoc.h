@@ -20,7 +20,8 @@ void mtt_gate_frame(mtt_tracker *trk);
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
 mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg);
 /* Frame stage: per-track lambda (known or ALGORITHMS.md §5.2), then pair.lam = lambda
- * (lm = 0) or the LM density lambda~ (lm = 1, ALGORITHMS.md §8.2). */
+ * (lm = 0) or the LM density lambda~ (lm = 1, ALGORITHMS.md §8.2; lm = 2: over
+ * all tracks, §8.3, baselines/lm_all.c). */
 void mtt_clutter_frame(mtt_tracker *trk, int lm);
 
 /* ---- ihpda.c: intensity order statistics and IHPDA (ALGORITHMS.md §7) ---- */
@@ -90,7 +91,7 @@ enum {
  * tf.ex_post (ALGORITHMS.md §13.5). */
 typedef struct mtt_mode {
     uint8_t associate;                    /* MTT_ASSOCIATE_*: the routine, after clustering */
-    uint8_t lm;                           /* LM clutter densities (ALGORITHMS.md §8) */
+    uint8_t lm;                           /* LM clutter densities: 1 §8.2, 2 over all tracks §8.3 */
     uint8_t update;                       /* MTT_UPDATE_* */
     uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
     uint8_t imm;                          /* runs with motion = imm (ALGORITHMS.md §14.2) */

@@ -88,10 +88,11 @@ static void jpda_family(mtt_tracker *trk, uint8_t how)
  * parameter table of params_table.h lists it as the key's spellings). */
 const char *const mtt_assoc_names[MTT_ASSOC_COUNT] = {
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
-    "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda"};
+    "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
+    "lm-ipda-all"};
 
 /* One row per mode, in mtt_assoc order: association routine, LM
- * densities, update kind, baseline, IMM (ALGORITHMS.md §14.2: the modes whose
+ * densities (2: over all tracks, §8.3), update kind, baseline, IMM (ALGORITHMS.md §14.2: the modes whose
  * event likelihoods are linear in each track's detection factors). */
 const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
     {MTT_ASSOCIATE_MMR, 1, ONE, 0, 1},
@@ -106,6 +107,7 @@ const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
     {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1, 0},
     {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1, 0},
     {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_IPDA, 2, PDA, 1, 0},
 };
 
 void mtt_associate_frame(mtt_tracker *trk)
@@ -128,7 +130,7 @@ void mtt_associate_frame(mtt_tracker *trk)
     case MTT_ASSOCIATE_SELECT: /* ihpda (§7.4) */
         mtt_ihpda_select_frame(trk);
         break;
-    case MTT_ASSOCIATE_IPDA: /* ipda, lm-ipda (§6, §8) */
+    case MTT_ASSOCIATE_IPDA: /* ipda, lm-ipda, lm-ipda-all (§6, §8) */
         mtt_ipda_frame(trk);
         break;
 #if MTT_WITH_BASELINES

@@ -7,7 +7,8 @@
  * s gating j of p_j^s Pt_j^s / (1 - Pt_j^s), with
  * Pt_j^s = PD PG P^s (p_j^s / lambda) / sum_{l in G^s} (p_l^s / lambda).
  * Two passes over the gated pairs: O(pairs).  Only tracks that gate j
- * contribute, which is [S4]'s cluster-only computation.
+ * contribute, which is [S4]'s cluster-only computation (lm-ipda-all adds
+ * the other tracks, baselines/lm_all.c, §8.3).
  * ALGORITHMS.md §7.6 (lm-ihpda, lm_ihpda_variant contest): first every
  * pair's p_j becomes p_j g_j, the amplitude likelihood ratio of its
  * measurement, so the LM densities, the rows and the existence see it.
@@ -122,4 +123,9 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         }
         pp->lam = MTT_ADDS(pp->lam, others);
     }
+#if MTT_WITH_BASELINES && !defined(MTT_REAL_FIXED)
+    if (lm == 2) {
+        mtt_lm_all_frame(trk); /* lm-ipda-all: the tracks that do not gate j too (§8.3) */
+    }
+#endif
 }

@@ -46,4 +46,9 @@ void mtt_adaptive_gates(mtt_tracker *trk);
 /* After the JPDA betas of cluster c: equal shares of the shared measurements. */
 void mtt_adaptive_share(mtt_tracker *trk, uint16_t c);
 
+/* ---- lm_all.c: the all-tracks LM density of lm-ipda-all (ALGORITHMS.md §8.3) ---- */
+/* After §8.2's pass 2: adds to every pair's lambda~ the terms of the tracks
+ * that do not gate its measurement (untruncated Gaussians); uses trk->wsum. */
+void mtt_lm_all_frame(mtt_tracker *trk);
+
 #endif /* MTT_BASELINES_H */
