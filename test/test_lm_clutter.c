@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* test_lm_clutter.c - LM clutter density (ALGORITHMS.md §8) on TV8: d2 and p per pair,
  * Ptilde, W_j, lambda_tilde, and LM-IPDA betas and existence; also the
- * per-track lambda of ALGORITHMS.md §5.1 / 5.2. */
+ * per-track lambda of ALGORITHMS.md §5.1 / 5.2; TV8c: lm-ipda-all's density over
+ * all tracks (§8.3). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -193,6 +194,72 @@ static void test_unknown_lambda_uses_estimate(void)
                                                         MTT_R(291.4001257)));
 }
 
+#if MTT_WITH_BASELINES
+/* TV8c: three tracks, four measurements, lambda 1e-6 (ALGORITHMS.md §8.3). */
+static void tv8c_tracker(void)
+{
+    mtt_params p;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_LM_IPDA_ALL;
+    p.pd = MTT_R(0.9);
+    p.pg = MTT_R(0.99);
+    p.clutter_density = MTT_R(1e-6);
+    tv_init(&trk, &p);
+    (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.2), MTT_R(0.8), MTT_R(0.9));
+    (void)tv_add_track_s(&trk, MTT_R(4.0), MTT_R(0.5), MTT_R(1.2), MTT_R(-0.1), MTT_R(1.0), MTT_R(0.6));
+    (void)tv_add_track_s(&trk, MTT_R(20.0), MTT_R(20.0), MTT_R(1.0), MTT_R(0.0), MTT_R(1.0), MTT_R(0.5));
+    (void)tv_add_meas(&trk, MTT_R(0.3), MTT_R(-0.2), MTT_R(0.0), 0);
+    (void)tv_add_meas(&trk, MTT_R(2.0), MTT_R(0.3), MTT_R(0.0), 0);
+    (void)tv_add_meas(&trk, MTT_R(4.8), MTT_R(1.0), MTT_R(0.0), 0);
+    (void)tv_add_meas(&trk, MTT_R(20.5), MTT_R(19.8), MTT_R(0.0), 0);
+    mtt_gate_frame(&trk);
+}
+
+/* TV8c pairs (T1,z1) (T1,z2) (T2,z2) (T2,z3) (T3,z4): lambda~ / lambda. */
+static const uint16_t c_pt[5] = {0, 0, 1, 1, 2}, c_pm[5] = {0, 1, 1, 2, 3};
+static const double tv8c_cluster[5] = {1.0, 3346.531941, 2841.501134, 1.0, 1.0};
+static const double tv8c_all[5] = {1.378536026, 3346.531941, 2841.501134, 1.000013871, 1.0};
+
+static void test_tv8c_all_tracks_adds_the_tracks_outside_the_gate(void)
+{
+    int k;
+    tv8c_tracker();
+    TEST_ASSERT_EQUAL_UINT(5, TV_N_PAIRS(&trk));
+    for (k = 0; k < 5; ++k) {
+        TEST_ASSERT_EQUAL_UINT(c_pt[k], TV_PAIR_TRACK(&trk, k));
+        TEST_ASSERT_EQUAL_UINT(c_pm[k], TV_PAIR_MEAS(&trk, k));
+    }
+    mtt_clutter_frame(&trk, mtt_modes[MTT_ASSOC_LM_IPDA_ALL].lm); /* the mode's own row */
+    for (k = 0; k < 5; ++k) {
+        TV_ASSERT_REAL_MSG(tv8c_all[k], TV_PAIR_LAM(&trk, k) / MTT_R(1e-6), "TV8c lm-ipda-all lambda~/lambda");
+    }
+    /* lm-ipda on the same frame: the tracks of the gate only (TV8c) */
+    mtt_clutter_frame(&trk, mtt_modes[MTT_ASSOC_LM_IPDA].lm);
+    for (k = 0; k < 5; ++k) {
+        TV_ASSERT_REAL_MSG(tv8c_cluster[k], TV_PAIR_LAM(&trk, k) / MTT_R(1e-6), "TV8c lm-ipda lambda~/lambda");
+    }
+}
+
+static void test_tv8c_lm_ipda_all_delta(void)
+{
+    /* TV8c lm-ipda-all: delta of T1 and T2 from their pairs' p and lambda~. */
+    static const double delta[2] = {-108993.9897, -85544.83918};
+    uint16_t t;
+    tv8c_tracker();
+    mtt_clutter_frame(&trk, 2);
+    for (t = 0; t < 2; ++t) {
+        mtt_real p[2], lam[2], b[2], b0, L;
+        int j;
+        for (j = 0; j < 2; ++j) {
+            p[j] = TV_PAIR_P(&trk, TV_PAIR_FIRST(&trk, t) + j);
+            lam[j] = TV_PAIR_LAM(&trk, TV_PAIR_FIRST(&trk, t) + j);
+        }
+        tv_ipda_betas(TV_PAR(&trk).pd, TV_PAR(&trk).pg, p, lam, 2, b, &b0, &L);
+        TV_ASSERT_REAL_MSG(delta[t], MTT_R(1.0) - L, "TV8c lm-ipda-all delta");
+    }
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -203,5 +270,9 @@ int main(void)
     RUN_TEST(test_tv8_hand_built_state);
     RUN_TEST(test_lm_many_tracks_uses_sum_minus_own);
     RUN_TEST(test_unknown_lambda_uses_estimate);
+#if MTT_WITH_BASELINES
+    RUN_TEST(test_tv8c_all_tracks_adds_the_tracks_outside_the_gate);
+    RUN_TEST(test_tv8c_lm_ipda_all_delta);
+#endif
     return UNITY_END();
 }

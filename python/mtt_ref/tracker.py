@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-MODES = ("lm-ihpda", "ihpda", "lm-ipda", "ipda")
+MODES = ("lm-ihpda", "ihpda", "lm-ipda", "ipda", "lm-ipda-all")
 
 # Compile-time bounds of the default configuration (include/mtt/config.h).
 MAX_TRACKS = 128
@@ -308,6 +308,29 @@ class Tracker:
                     direct = sum(w[(s.id, j)] for s in gaters[j] if s is not tr)
                     if abs(direct - (W[j] - w[(tr.id, j)])) > 1e-10 * f["lamt"][j]:
                         self.near_ties.append(f"frame {self.frame}: LM cancellation track {tr.id} meas {j}")
+        if p.association == "lm-ipda-all":
+            # §8.3: every track that does not gate j adds its untruncated Gaussian's term.
+            # SPEC GAP: P~'s sum runs over the track's gate and j
+            out = [0.0] * nm
+            for s in live:
+                fs = s.fr
+                tot = sum(fs["p"][l] for l in fs["G"])
+                norm = 2.0 * math.pi * math.sqrt(fs["det"]) * p.pg
+                for j in range(nm):
+                    if not gaters[j] or j in fs["G"]:
+                        continue
+                    nu = Z[j] - fs["xp"][:2]
+                    pj = math.exp(-0.5 * float(nu @ fs["Si"] @ nu)) / norm
+                    if pj > 0.0:
+                        # the quotient first: pj / (tot + pj) <= 1 even when pj is subnormal
+                        pt = min(p.pd * p.pg * fs["ep"] * (pj / (tot + pj)), 1.0 - 1e-6)
+                        out[j] += pj * pt / (1.0 - pt)
+            for tr in live:
+                f = tr.fr
+                for j in f["G"]:
+                    if out[j] > 0.0:
+                        self.events["LM outside the gates"] += 1
+                    f["lamt"][j] += out[j]
 
         # --- 5-7. association, assignment, update ---------------------------
         used = [False] * nm
@@ -341,7 +364,7 @@ class Tracker:
                     if f["G"]:
                         self.events["gate taken by others (m = 0)"] += 1
                     self._update(tr, 1.0 - p.pd * p.pg, [], 1.0)
-        else:                                   # lm-ipda, ipda (§6)
+        else:                                   # lm-ipda, ipda, lm-ipda-all (§6)
             for tr in live:
                 f = tr.fr
                 for j in f["G"]:

@@ -5,9 +5,15 @@
     PYTHONPATH=python python3 -m mtt_sim.plot_papers crossing3 out/crossing3/summary.json --out docs/img/crossing3_confirmed_true.png
     PYTHONPATH=python python3 -m mtt_sim.plot_papers rates --out docs/img/coalesce3_rates.png \\
         "Sw=1e-5, 1000 runs=out/coalesce3/summary.json" "Sw=1e-4, 200 runs=out/coalesce3_q1e-4/summary.json"
+    PYTHONPATH=python python3 -m mtt_sim.plot_papers rmse out/s4fig4/summary.json --out docs/img/crossing3_rmse.png
 
 crossing3: confirmed true tracks summed over runs per mode (mc.py summary),
 with [S4] Table 1's LM-IPDAF and LM-IPDAF* values as markers.
+
+rmse: [S4] Fig. 4, the position RMSE of each target per scan (over the runs
+that hold a confirmed track on it), every mode of the summary in one plot;
+prints each target's RMSE over the run per mode and the largest difference
+between two modes at one scan.
 
 rates: coalescence-or-switch rate per mode, one bar per LABEL=SUMMARY
 argument (an mc.py summary.json of a seeded scenario), modes in the order of
@@ -53,6 +59,33 @@ def crossing3(a) -> None:
     fig.savefig(a.out)
 
 
+def rmse(a) -> None:
+    with open(a.summary) as f:
+        s = json.load(f)
+    t, modes = s["scan_times"], s["modes"]
+    styles = ["-", "--", ":", "-."]
+    fig, ax = plt.subplots(figsize=(8.0, 3.8), dpi=90)
+    per = {m: s["results"][m]["per_scan"]["rmse"] for m in modes}
+    for k, m in enumerate(modes):
+        for i, tid in enumerate(sorted(per[m])):
+            ax.plot(t, per[m][tid], styles[k % len(styles)], color=f"C{i}", lw=1.2,
+                    label=f"{m}, target {tid}")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("position RMSE [m]")
+    ax.set_xlim(0, t[-1] + 1)
+    ax.set_title(f"{s['scenario']}: position RMSE per target, {s['runs']} runs ([S4] Fig. 4)", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=len(modes), loc="upper left")
+    fig.tight_layout()
+    fig.savefig(a.out)
+    print("target  " + "  ".join(f"{m:>12}" for m in modes) + "  largest |difference| at one scan (m)")
+    for tid in sorted(per[modes[0]]):
+        tot = [s["results"][m]["totals"]["rmse_per_target"][tid] for m in modes]
+        diff = max((abs(x - y) for m in modes[1:] for x, y in zip(per[modes[0]][tid], per[m][tid])
+                    if x is not None and y is not None and x == x and y == y), default=float("nan"))
+        print(f"{tid:>6}  " + "  ".join(f"{v:12.4f}" for v in tot) + f"  {diff:.4f}")
+
+
 def rates(a) -> None:
     series = []
     for arg in a.series:
@@ -94,12 +127,15 @@ def main() -> None:
     c = sub.add_parser("crossing3", help="confirmed true tracks beside S4 Table 1")
     c.add_argument("summary")
     c.add_argument("--out", required=True)
+    e = sub.add_parser("rmse", help="RMSE per target over time, every mode (S4 Fig. 4)")
+    e.add_argument("summary")
+    e.add_argument("--out", required=True)
     r = sub.add_parser("rates", help="coalescence-or-switch rates beside S1 Table 5")
     r.add_argument("series", nargs="+", help="LABEL=summary.json")
     r.add_argument("--out", required=True)
     r.add_argument("--title", default="coalesce3: coalescence-or-switch rate per mode, beside [S1] Table 5")
     a = ap.parse_args()
-    crossing3(a) if a.cmd == "crossing3" else rates(a)
+    {"crossing3": crossing3, "rmse": rmse, "rates": rates}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -90,6 +90,7 @@ SPEC_GAPS_DOCUMENTED = {
     "caps: order and ties": ("16", "Overflow of the bounds: order and ties.", ""),
     "gate cap ties": ("7.2", "equal d² at the cut: the lower measurement index stays", ""),
     "LM rounding": ("8.2", "where rounding decides", ""),
+    "LM over all tracks": ("8.3", "P̃'s sum runs over σ's gate and j", ""),
 }
 
 
@@ -146,6 +147,8 @@ def random_scene(seed):
     """A small random scene with valid parameters; the same seed gives the same scene."""
     rng = np.random.default_rng([17, seed])
     mode = rng.choice(["lm-ihpda", "lm-ipda", "lm-ihpda", "lm-ipda", "ihpda", "ipda"])
+    if mode == "lm-ipda" and seed % 3 == 2:
+        mode = "lm-ipda-all"          # by the seed, so the other scenes' random draws stay as they were
     side = 100.0
     sig = (loguniform(rng, 0.3, 3.0), loguniform(rng, 0.3, 3.0))
     n_frames = int(rng.integers(3, 31))
@@ -469,6 +472,7 @@ class Differential(unittest.TestCase):
                          "MMR contested measurement", "final recomputation, smaller G_f",
                          "gate taken by others (m = 0)", "rho off (missing amplitude)",
                          "equal amplitudes ranked by index", "scene lm-ihpda", "scene lm-ipda",
+                         "scene lm-ipda-all", "LM outside the gates",
                          "scene ihpda", "scene ipda", "intensity gate pass", "intensity gate reject",
                          "intensity gate clamp", "intensity gate without amplitude: vmax",
                          "bad detection skipped"):
@@ -508,10 +512,10 @@ class Differential(unittest.TestCase):
         scenes = []
         with tempfile.TemporaryDirectory() as tmp:
             for scn, seed in runs:
-                for mode in ("lm-ihpda", "lm-ipda"):
+                for mode in ("lm-ihpda", "lm-ipda", "lm-ipda-all"):
                     scenes.append((f"{scn}-s{seed}-{mode}", scenario_scene(scn, seed, mode, tmp)))
         n, failures, tie_fail = self._run_many("scenarios", scenes, Counter())
-        self.assertEqual(n, 2 * len(runs))
+        self.assertEqual(n, 3 * len(runs))
         self.assertEqual(failures + tie_fail, [])
 
 

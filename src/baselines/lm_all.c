@@ -51,7 +51,7 @@ void mtt_lm_all_frame(mtt_tracker *trk)
             if (!(p > MTT_ZERO)) {
                 continue; /* exp underflow: the term is 0 */
             }
-            pt = c * p / (sum + p);
+            pt = c * (p / (sum + p)); /* the quotient first: <= 1 even for a subnormal p */
             if (pt > pt_max) {
                 pt = pt_max;
             }

@@ -18,6 +18,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
+. tools/bench/cg_ir.sh
 frames=1000
 cg_frames=200
 dense=4,16,64,256
@@ -78,14 +79,7 @@ echo >&2
 echo "== default (max_accel) against CV, lm-ihpda contest (callgrind, $cg_frames frames)" >&2
 printf 'workload\tcv\tdefault\tratio\n' > "$out/default_vs_cv.tsv"
 for n in 16 64; do
-  ir() {
-    local f="$out/cg.default.$n"
-    valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" --frames "$cg_frames" --dense "$n" \
-      --modes lm-ihpda --variant contest "$@" >/dev/null 2>&1
-    callgrind_annotate --inclusive=yes "$f" 2>/dev/null |
-      awk -v fr="$cg_frames" '/mtt_tracker_step/ {gsub(",", "", $1); printf "%.0f", $1 / fr; exit}'
-    rm -f "$f"
-  }
+  ir() { cg_ir "$cg_frames" "$bench" --frames "$cg_frames" --dense "$n" --modes lm-ihpda --variant contest "$@"; }
   cv=$(ir)
   dflt=$(ir --motion auto --set process_psd=0 --set max_accel=2.2360680)
   awk -v n="$n" -v a="$cv" -v b="$dflt" 'BEGIN {printf "dense-%s\t%s\t%s\t%.2f\n", n, a, b, b / a}' >> "$out/default_vs_cv.tsv"

@@ -16,6 +16,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
+. tools/bench/cg_ir.sh
 seeds=5
 frames=50
 while (($#)); do
@@ -46,11 +47,7 @@ for ((s = 0; s < seeds; ++s)); do
       if [[ $mode == lm-ihpda ]]; then # the frame's scan, and lm-ihpda's tracks and pairs there
         read -r scan tracks pairs < <("$bench" "${args[@]}" | awk '/^scan-/ {sub("scan-", "", $1); print $1, $3, $4; exit}')
       fi
-      f="$out/cg.s0t5"
-      valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "${args[@]}" >/dev/null 2>&1
-      ir=$(callgrind_annotate --inclusive=yes "$f" 2>/dev/null |
-           awk -v fr="$frames" '/mtt_tracker_step/ {gsub(",", "", $1); printf "%.0f", $1 / fr; exit}')
-      rm -f "$f"
+      ir=$(cg_ir "$frames" "$bench" "${args[@]}")
       row+=$'\t'"$ir"
       printf '\r  seed %s %s %s   ' "$s" "$label" "$mode" >&2
     done

@@ -812,6 +812,66 @@ def main():
           f"Prank = {f(cj['Prank'])}, beta = {f(cj['beta'])}, beta_0 = {f(cj['beta0'])}, "
           f"delta = {f(cj['delta'])}, P(exist|Z^k) = {f(existence_update(cj['delta'], tr['Pex']))}")
 
+    # ---------------------------------------------------------------- TV8c
+    h("TV8c LM density over all tracks: lm-ipda-all, [S4]'s LM-IPDAF (§8.3)")
+    PD, PG, lam = 0.9, 0.99, 1e-6
+    g = gate_gamma(PG)
+    tracks = {
+        0: dict(zhat=np.array([0.0, 0.0]), S=np.array([[1.0, 0.2], [0.2, 0.8]]), Pex=0.9),
+        1: dict(zhat=np.array([4.0, 0.5]), S=np.array([[1.2, -0.1], [-0.1, 1.0]]), Pex=0.6),
+        2: dict(zhat=np.array([20.0, 20.0]), S=np.array([[1.0, 0.0], [0.0, 1.0]]), Pex=0.5),
+    }
+    Zm = {0: np.array([0.3, -0.2]), 1: np.array([2.0, 0.3]), 2: np.array([4.8, 1.0]), 3: np.array([20.5, 19.8])}
+    p("Inputs (tracks by z_hat and S, as TV8; T3 is far from the others):")
+    p()
+    kv("PD", PD); kv("PG", PG); kv("lambda", lam)
+    for t, tr in tracks.items():
+        p(f"- T{t+1}: z_hat = {vec(tr['zhat'])}, S = {mat(tr['S'])}, P(exist|Z^{{k-1}}) = {f(tr['Pex'])}")
+    for j in Zm:
+        p(f"- z{j+1} = {vec(Zm[j])}")
+    # p of every (track, measurement), untruncated; G from the gate test
+    pu = {t: {j: gauss_pdf(Zm[j] - tr["zhat"], tr["S"]) / PG for j in Zm} for t, tr in tracks.items()}
+    G = {t: [j for j in Zm if maha2(Zm[j] - tr["zhat"], tr["S"]) <= g] for t, tr in tracks.items()}
+    assert G == {0: [0, 1], 1: [1, 2], 2: [3]}
+    tot = {t: sum(pu[t][l] for l in G[t]) for t in tracks}
+
+    def w_of(s_, j, truncated):
+        """w_j^s of §8.1 (truncated: 0 outside G^s) or §8.3 (P~ over G^s and j)."""
+        if j in G[s_]:
+            pt = PD * PG * tracks[s_]["Pex"] * pu[s_][j] / tot[s_]
+        elif truncated:
+            return 0.0
+        else:
+            pt = PD * PG * tracks[s_]["Pex"] * pu[s_][j] / (tot[s_] + pu[s_][j])
+        return pu[s_][j] * pt / (1.0 - pt)
+
+    p()
+    p("Expected: the terms of the tracks that do not gate a measurement that some gate holds:")
+    p()
+    for s_ in tracks:
+        for j in Zm:
+            if j not in G[s_] and any(j in G[t] for t in tracks):
+                p(f"- T{s_+1}, z{j+1}: d2 = {f(maha2(Zm[j] - tracks[s_]['zhat'], tracks[s_]['S']))}, "
+                  f"p (untruncated) = {f(pu[s_][j])}, w = {f(w_of(s_, j, False))}")
+    lt_c, lt_a = {}, {}
+    for t in tracks:
+        for j in G[t]:
+            # cluster form: the truncated sum over every other track is §8.2's (§8.1)
+            lt_c[(t, j)] = lam + sum(w_of(s_, j, True) for s_ in tracks if s_ != t)
+            direct = lam + sum(w_of(s_, j, False) for s_ in tracks if s_ != t)
+            out_j = sum(w_of(s_, j, False) for s_ in tracks if j not in G[s_])
+            close(direct, lt_c[(t, j)] + out_j)          # §8.3's decomposition
+            lt_a[(t, j)] = direct
+            p(f"- T{t+1}, z{j+1}: lambda_tilde lm-ipda = {f(lt_c[(t, j)])} ({f(lt_c[(t, j)] / lam)} lambda), "
+              f"lm-ipda-all = {f(lt_a[(t, j)])} ({f(lt_a[(t, j)] / lam)} lambda)")
+    p()
+    p("LM-IPDA with the all-tracks density (lm-ipda-all):")
+    p()
+    for t, tr in tracks.items():
+        L, d, b, b0 = ipda(G[t], pu[t], {j: lt_a[(t, j)] for j in G[t]}, PD, PG)
+        p(f"- T{t+1}: delta = {f(d)}, beta = {{{', '.join('z%d: %s' % (j+1, f(b[j])) for j in G[t])}}}, "
+          f"beta_0 = {f(b0)}, P(exist|Z^k) = {f(existence_update(d, tr['Pex']))}")
+
     # ---------------------------------------------------------------- TV8b
     h("TV8b Cluster formation (§9)")
     gates = {0: [0, 1], 1: [1, 2], 2: [3], 3: [3], 4: []}
