@@ -90,7 +90,8 @@ typedef enum mtt_assoc {
     MTT_ASSOC_NNJPDA,       /**< exact JPDA beta, static MMR, hard update (ALGORITHMS.md §13.5) */
     MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (ALGORITHMS.md §13.6) */
     MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (ALGORITHMS.md §13.7) */
-    MTT_ASSOC_LM_IPDA_ALL,  /**< lm-ipda with the LM density over all tracks, [S4]'s LM-IPDAF (ALGORITHMS.md §8.3) */
+    MTT_ASSOC_LM_IPDA_ALL,  /**< lm-ipda with the LM density over all tracks, [S4]'s LM-IPDAF (ALGORITHMS.md §8.3);
+                                 a build with MTT_WITH_BASELINES=0 does not know it (MTT_ERR_PARAM, MTT_ERR_RANGE) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
 

@@ -96,7 +96,7 @@ typedef struct mtt_mode {
     uint8_t baseline;                     /* a comparison baseline (MTT_WITH_BASELINES) */
     uint8_t imm;                          /* runs with motion = imm (ALGORITHMS.md §14.2) */
 } mtt_mode;
-extern const mtt_mode mtt_modes[MTT_ASSOC_COUNT];
+extern const mtt_mode mtt_modes[]; /* MTT_ASSOC_ROWS rows (core/params_table.h) */
 /* Clusters, then the mode's association; PDA modes mark every gated
  * measurement used. */
 void mtt_associate_frame(mtt_tracker *trk);

@@ -13,6 +13,8 @@
  * table also gives the names of docs/FORMATS.md `association`. */
 #include "mtt_internal.h"
 
+#include "core/params_table.h" /* MTT_ASSOC_ROWS, mtt_assoc_names */
+
 /* The association routines a row names (MTT_ASSOCIATE_*): called by a
  * switch, not through pointers, so every call is direct (the firmware's
  * stack analysis sees every edge; no table of code addresses). */
@@ -86,15 +88,18 @@ static void jpda_family(mtt_tracker *trk, uint8_t how)
 /* The names of docs/FORMATS.md `association`, in mtt_assoc order: row k of
  * mtt_modes is named mtt_assoc_names[k] (an array of its own, because the
  * parameter table of params_table.h lists it as the key's spellings). */
-const char *const mtt_assoc_names[MTT_ASSOC_COUNT] = {
+const char *const mtt_assoc_names[MTT_ASSOC_ROWS] = {
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
     "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
-    "lm-ipda-all"};
+#if MTT_WITH_BASELINES
+    "lm-ipda-all",
+#endif
+};
 
 /* One row per mode, in mtt_assoc order: association routine, LM
  * densities (2: over all tracks, §8.3), update kind, baseline, IMM (ALGORITHMS.md §14.2: the modes whose
  * event likelihoods are linear in each track's detection factors). */
-const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
+const mtt_mode mtt_modes[MTT_ASSOC_ROWS] = {
     {MTT_ASSOCIATE_MMR, 1, ONE, 0, 1},
     {MTT_ASSOCIATE_SELECT, 0, ONE, 0, 1},
     {MTT_ASSOCIATE_IPDA, 1, PDA, 0, 1},
@@ -107,7 +112,9 @@ const mtt_mode mtt_modes[MTT_ASSOC_COUNT] = {
     {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1, 0},
     {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1, 0},
     {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 0},
-    {MTT_ASSOCIATE_IPDA, 2, PDA, 1, 0},
+#if MTT_WITH_BASELINES
+    {MTT_ASSOCIATE_IPDA, 2, PDA, 1, 0}, /* lm-ipda-all (§8.3) */
+#endif
 };
 
 void mtt_associate_frame(mtt_tracker *trk)
@@ -158,7 +165,7 @@ mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
     if (name == NULL) {
         return MTT_ERR_NULL;
     }
-    if ((int)a < 0 || (int)a >= (int)MTT_ASSOC_COUNT) {
+    if ((int)a < 0 || (int)a >= MTT_ASSOC_ROWS) {
         return MTT_ERR_RANGE;
     }
     *name = mtt_assoc_names[a];
@@ -187,7 +194,7 @@ mtt_status mtt_assoc_parse(const char *name, mtt_assoc *a)
     if (name == NULL || a == NULL) {
         return MTT_ERR_NULL;
     }
-    for (k = 0; k < (int)MTT_ASSOC_COUNT; ++k) {
+    for (k = 0; k < MTT_ASSOC_ROWS; ++k) {
         if (same_text(name, mtt_assoc_names[k])) {
             *a = (mtt_assoc)k;
             return MTT_OK;

@@ -47,8 +47,13 @@ enum {
     PF_PER_MODEL2 = 64     /* an r x r matrix of IMM models (MTT_MAX_MODELS^2 slots) */
 };
 
+/* The modes this build knows: lm-ipda-all, the last, only with the
+ * baselines, so that a firmware's mode tables and checks stay as they were
+ * (a build without it refuses the value as out of range, MTT_ERR_PARAM). */
+#define MTT_ASSOC_ROWS (MTT_WITH_BASELINES ? (int)MTT_ASSOC_COUNT : (int)MTT_ASSOC_LM_IPDA_ALL)
+
 /* The spellings of the enum keys, index = value (params.c). */
-extern const char *const mtt_assoc_names[MTT_ASSOC_COUNT];
+extern const char *const mtt_assoc_names[MTT_ASSOC_ROWS];
 extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_lm_ihpda_variant_names[2];
 extern const char *const mtt_motion_names[3];
@@ -121,7 +126,7 @@ extern const char *const mtt_model_names[3];
 #endif
 
 #define MTT_PARAM_ROWS(REAL, FLAG, ENUM)                                                          \
-    ENUM("association", association, mtt_assoc, MTT_ASSOC_COUNT, mtt_assoc_names, TUNING,                \
+    ENUM("association", association, mtt_assoc, MTT_ASSOC_ROWS, mtt_assoc_names, TUNING,                 \
          "association mode (ALGORITHMS.md §15.1); a build with MTT_WITH_BASELINES=0 accepts only the first four")                                    \
     ENUM("lm_ihpda_variant", lm_ihpda_variant, mtt_lm_ihpda_variant, 2, mtt_lm_ihpda_variant_names, TUNING, \
          "lm-ihpda's algorithm: s0 is [S0] exactly; contest is the contest-aware update with the amplitude likelihood ratio and the adaptive process noise (§10.4, §7.6, §2.1), with motion cv and imm, the default where built (MTT_WITH_CONTEST)") \
