@@ -5,6 +5,7 @@
 # cluster (lm-ipda), measured as docs/reports/PERFORMANCE.md measures.
 #
 #   ./tools/bench/s4_table2.sh [--seeds N] [--frames N] [--cg-frames N] [--run-frames N]
+#   ./tools/bench/s4_table2.sh --summary     the summary of the last TSV only
 #
 # For seeds 0..N-1 (default 5), with the `bench` preset (-O2, float):
 # - "busiest" and "crossing" (scan 39, t = 40 s): mtt-bench replays the scan,
@@ -14,7 +15,9 @@
 #   mtt-bench's median for that scan (--run-frames repetitions, default 200);
 #   Ir = inclusive Ir of mtt_tracker_step of the run through mtt-track / 80.
 # saving = 1 - lm-ipda / lm-ipda-all, as [S4] states its reductions.  Writes
-# out/bench/s4_table2.tsv and prints it with the mean saving per workload.
+# out/bench/s4_table2.tsv and prints it, then per workload the means over the
+# seeds of both modes' wall and Ir and the saving of those means, with the
+# range of the per-seed savings.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
@@ -23,16 +26,28 @@ seeds=5
 frames=1000
 cg_frames=100
 run_frames=200
+summary_only=0
 while (($#)); do
   case "$1" in
     --seeds) seeds="$2"; shift 2 ;;
     --frames) frames="$2"; shift 2 ;;
     --cg-frames) cg_frames="$2"; shift 2 ;;
     --run-frames) run_frames="$2"; shift 2 ;;
-    -h|--help) sed -n '3,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --summary) summary_only=1; shift ;;
+    -h|--help) sed -n '3,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "s4_table2.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
+summarise() {
+  awk -F'\t' 'NR > 1 {l = $2; n[l]++; wa[l] += $6; wc[l] += $7; ia[l] += $9; ic[l] += $10
+      w = $8 + 0; i = $11 + 0
+      if (!(l in wlo) || w < wlo[l]) wlo[l] = w; if (!(l in whi) || w > whi[l]) whi[l] = w
+      if (!(l in ilo) || i < ilo[l]) ilo[l] = i; if (!(l in ihi) || i > ihi[l]) ihi[l] = i}
+    END {for (l in n) printf "mean of %d seeds, %s: wall %.2f against %.2f us (%.1f %%; seeds %.1f to %.1f %%), Ir %.0f against %.0f (%.1f %%; seeds %.1f to %.1f %%)\n",
+      n[l], l, wa[l] / n[l], wc[l] / n[l], 100 * (1 - wc[l] / wa[l]), wlo[l], whi[l],
+      ia[l] / n[l], ic[l] / n[l], 100 * (1 - ic[l] / ia[l]), ilo[l], ihi[l]}' "$1" | sort
+}
+if ((summary_only)); then summarise out/bench/s4_table2.tsv; exit 0; fi
 command -v valgrind >/dev/null || { echo "s4_table2.sh: needs valgrind (apt-get install valgrind)" >&2; exit 1; }
 out=out/bench
 mkdir -p "$out"
@@ -84,5 +99,4 @@ for ((s = 0; s < seeds; ++s)); do
 done
 echo >&2
 cat "$tsv"
-awk -F'\t' 'NR > 1 {n[$2]++; w[$2] += $8; i[$2] += $11}
-  END {for (l in n) printf "mean saving, %s: wall %.1f %%, Ir %.1f %% (%d seeds)\n", l, w[l] / n[l], i[l] / n[l], n[l]}' "$tsv" | sort
+summarise "$tsv"
