@@ -41,7 +41,7 @@ static void test_unrepresentable_skipped_and_counted(void)
     in[5] = sim_meas(MTT_POS(3.0), MTT_POS(4.0), -sat, 1);
     in[6] = sim_meas(sat, MTT_POS(4.0), MTT_ZERO, 0);
     in[7] = sim_meas(MTT_POS(-5.0), MTT_POS(6.0), MTT_ZERO, 1); /* kept: amplitude 0 */
-    mtt_measure_select(&trk, in, 8u);
+    mtt_measure_select(&trk, in, NULL, 8u);
     TEST_ASSERT_EQUAL_UINT(3u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_dropped);
