@@ -5,7 +5,8 @@
  * After lm_clutter.c's cluster-only lambda~ (§8.2), every pair (t, j) gets
  * the terms of the tracks s that do not gate j, from s's untruncated
  * Gaussian: p = N(z_j; z^s, S^s) / PG, Pt = PD PG P^s p / (sum_{l in G^s}
- * p_l + p), w = p Pt / (1 - Pt).  Cost O(tracks x measurements), which is
+ * p_l + p), w = p Pt / (1 - Pt); S^s with the detection's own R when it
+ * has one (§3.1).  Cost O(tracks x measurements), which is
  * the cost [S4]'s cluster restriction saves.  Float and double builds only
  * (a baseline: MTT_WITH_BASELINES, never in the fixed-point build). */
 #include "mtt_internal.h"
@@ -47,7 +48,17 @@ void mtt_lm_all_frame(mtt_tracker *trk)
             }
             dx = trk->meas[j].x - tf->xp[0];
             dy = trk->meas[j].y - tf->xp[1];
-            p = mtt_gate_likelihood(mtt_mahal2(tf->Si, dx, dy), tf->det_s, trk->par.pg);
+#if MTT_WITH_MEAS_COV
+            if (trk->meas[j].has_R) {
+                mtt_real d2; /* its own R (ALGORITHMS.md §3.1), as the gated pairs' p */
+                if (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], trk->meas[j].R, trk->par.pg, dx, dy, &d2, &p) != 0) {
+                    continue; /* S_j not positive definite: no term, as no gate */
+                }
+            } else
+#endif
+            {
+                p = mtt_gate_likelihood(mtt_mahal2(tf->Si, dx, dy), tf->det_s, trk->par.pg);
+            }
             if (!(p > MTT_ZERO)) {
                 continue; /* exp underflow: the term is 0 */
             }
