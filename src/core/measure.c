@@ -3,9 +3,10 @@
  * (ALGORITHMS.md §15, §16).
  *
  * A detection with a NaN/Inf coordinate, or a negative/NaN/Inf amplitude,
- * is skipped and counted; in the fixed-point build so is a coordinate
- * outside the declared range +-MTT_FX_POS_LIMIT or a saturated amplitude
- * (docs/FIXED_POINT.md §3: never wrapped).  Beyond MTT_MAX_MEAS the strongest stay: an
+ * is skipped and counted in meas_bad; in the fixed-point build one with a
+ * coordinate outside the declared range +-MTT_FX_POS_LIMIT or a saturated
+ * amplitude is skipped and counted apart, in meas_out_of_range
+ * (docs/FIXED_POINT.md §3: never wrapped, never silent).  Beyond MTT_MAX_MEAS the strongest stay: an
  * amplitude beats none, a larger amplitude a smaller, then the canonical
  * order below.  A heap of the kept input indices holds the weakest at its
  * root, so the cap costs O(n log MTT_MAX_MEAS).
@@ -80,12 +81,20 @@ static void sort_canonical(uint32_t *idx, uint32_t *tmp, uint32_t n, const mtt_m
     }
 }
 
-static int meas_ok(const mtt_meas *m)
+/* 0: valid; else the counter that skips it.  A float NaN/Inf fails
+ * MTT_POS_OK and mtt_isfinite too, and is malformed there (MTT_MEAS_RANGE). */
+static uint32_t *meas_skip(mtt_counts *c, const mtt_meas *m)
 {
     if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y)) {
-        return 0;
+        return MTT_MEAS_RANGE(c);
     }
-    return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_ZERO);
+    if (!m->has_amplitude) {
+        return NULL;
+    }
+    if (!mtt_isfinite(m->amplitude)) {
+        return MTT_MEAS_RANGE(c);
+    }
+    return (m->amplitude >= MTT_ZERO) ? NULL : &c->meas_bad;
 }
 
 static void store_meas(mtt_mstore *s, const mtt_meas *m, uint32_t src)
@@ -104,8 +113,9 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n)
     size_t i;
     uint32_t kept = 0, valid = 0;
     for (i = 0; i < n; ++i) {
-        if (!meas_ok(&meas[i])) {
-            trk->stats.last.meas_bad++;
+        uint32_t *skip = meas_skip(&trk->stats.last, &meas[i]);
+        if (skip != NULL) {
+            ++*skip;
             continue;
         }
         ++valid;
