@@ -338,6 +338,9 @@ static void print_stats(const mtt_tracker *trk, size_t scans, unsigned long rows
             "%s: stats: dropped: %" PRIu32 " pairs (MTT_MAX_PAIRS), %" PRIu32
             " gated (MTT_MAX_GATED), %" PRIu32 " merge candidates; %lu rows written\n",
             PROG, t->pairs_dropped, t->gated_dropped, t->merge_dropped, rows);
+    if (t->meas_out_of_range != 0) /* only with --skip-out-of-range; never in float */
+        fprintf(stderr, "%s: stats: %" PRIu32 " detections outside this build's range (skipped)\n",
+                PROG, t->meas_out_of_range);
 }
 
 static int run(const options *o)

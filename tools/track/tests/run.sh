@@ -319,6 +319,11 @@ det_out_of_range_skip)
     [ -f "$out" ] || fail "no tracks file written"
     one_line_stderr
     stderr_has "det_out_of_range.det.csv: 1 detections outside this build's range skipped (1 counted by the tracker, meas_out_of_range)"
+    run --config "$data/valid.json" --detections "$data/det_out_of_range.det.csv" --tracks "$out" \
+        --skip-out-of-range --stats
+    [ "$rc" -eq 0 ] || fail "exit code $rc with --stats, expected 0"
+    stderr_has "stats: 1 detections outside this build's range (skipped)"
+    stderr_has " 0 bad (skipped)"
     ;;
 det_trailing_garbage)   det_fail det_trailing_garbage "3: field 'x': '4.5e1x' is not" ;;
 det_decreasing_time)    det_fail det_decreasing_time "4: field 'time': '1.5' is not later" ;;
