@@ -33,5 +33,8 @@
 #ifndef MTT_WITH_CONTEST
 #define MTT_WITH_CONTEST 0
 #endif
+#ifndef MTT_WITH_MEAS_COV
+#define MTT_WITH_MEAS_COV 0 /* one R (meas_sigma) for every detection */
+#endif
 
 #endif /* MTT_CONFIGS_FIRMWARE_H */

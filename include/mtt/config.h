@@ -227,6 +227,24 @@
 #error "MTT_MAX_SPLIT_MEAS must be in [2, 128] (model 5 needs 2 measurements)"
 #endif
 
+/* A covariance per detection (mtt_tracker_step_cov, ALGORITHMS.md §3.1): 1
+ * builds it (the host default); with 0 the tracker refuses a detection that
+ * carries one (MTT_ERR_UNSUPPORTED), and every detection has meas_sigma's R.
+ * The firmware configurations and the fixed-point build leave it out. */
+#ifndef MTT_WITH_MEAS_COV
+#ifdef MTT_REAL_FIXED
+#define MTT_WITH_MEAS_COV 0
+#else
+#define MTT_WITH_MEAS_COV 1
+#endif
+#endif
+#if MTT_WITH_MEAS_COV != 0 && MTT_WITH_MEAS_COV != 1
+#error "MTT_WITH_MEAS_COV must be 0 or 1"
+#endif
+#if defined(MTT_REAL_FIXED) && MTT_WITH_MEAS_COV
+#error "MTT_REAL_FIXED does not hold a covariance per detection yet: MTT_WITH_MEAS_COV must be 0"
+#endif
+
 #if defined(MTT_REAL_FIXED) && (MTT_WITH_IMM || MTT_WITH_BASELINES || MTT_WITH_CONTEST || MTT_WITH_SPLIT)
 #error "MTT_REAL_FIXED covers the firmware configuration: MTT_WITH_IMM, MTT_WITH_BASELINES, MTT_WITH_CONTEST and MTT_WITH_SPLIT must be 0"
 #endif

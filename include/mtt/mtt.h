@@ -43,14 +43,15 @@ extern "C" {
  * value, and the library refuses one that differs from its own. */
 #define MTT_CONFIG_MIX_(h, v) ((((uint32_t)(h)) ^ (uint32_t)(v)) * 16777619u)
 #define MTT_CONFIG_ID                                                                              \
-    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
+    MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(               \
     MTT_CONFIG_MIX_(MTT_CONFIG_MIX_(2166136261u,                                                                   \
         MTT_VERSION_MAJOR), MTT_MAX_TRACKS), MTT_MAX_MEAS), MTT_MAX_PAIRS), MTT_MAX_GATED),        \
         MTT_MAX_MERGE_PAIRS), MTT_MAX_ASSIGN_TRACKS), MTT_MAX_JPDA_TRACKS), MTT_MAX_JPDA_MEAS),    \
         MTT_MAX_JPDA_EVENTS), MTT_MAX_STATE), MTT_WITH_BASELINES), MTT_REAL_KIND), sizeof(mtt_real)), \
-        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST), MTT_WITH_SPLIT), MTT_MAX_SPLIT_TRACKS)
+        MTT_WITH_IMM), MTT_MAX_MODELS), MTT_WITH_CONTEST), MTT_WITH_SPLIT), MTT_MAX_SPLIT_TRACKS), \
+        MTT_WITH_MEAS_COV)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define MTT_MUST_CHECK __attribute__((warn_unused_result))
@@ -274,6 +275,14 @@ typedef struct mtt_meas {
     mtt_real amplitude;   /**< >= 0, used when has_amplitude is nonzero */
     int has_amplitude;    /**< 0: intensity unknown for this detection */
 } mtt_meas;
+
+/** The covariance of one detection (mtt_tracker_step_cov, ALGORITHMS.md
+ *  §3.1), in length^2.  All three 0: the detection has meas_sigma's.  Else
+ *  it must be finite with r_xx > 0, r_yy > 0 and r_xx r_yy > r_xy^2, or the
+ *  detection is skipped and counted in meas_bad. */
+typedef struct mtt_meas_cov {
+    mtt_real r_xx, r_xy, r_yy;
+} mtt_meas_cov;
 
 /** mtt_track_view.parent of a track that did not split off another. */
 #define MTT_NO_PARENT ((uint32_t)0xFFFFFFFFu)
@@ -508,6 +517,19 @@ MTT_MUST_CHECK mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_p
  *  modulo 2^32; every value in its format (mtt/real.h). */
 MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
                                            const mtt_meas *meas, size_t n);
+
+/** mtt_tracker_step with a covariance per detection: cov[i] is meas[i]'s
+ *  (cov may be NULL: then this is mtt_tracker_step).  A detection with one
+ *  is gated, weighed, updated with and initiated from its own R, in every
+ *  mode and with the IMM; one whose cov[i] is all 0 has meas_sigma's
+ *  (ALGORITHMS.md §3.1).  The canonical order takes the covariance after
+ *  the amplitude.
+ *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
+ *          written, when a cov[i] is nonzero and the build has no
+ *          MTT_WITH_MEAS_COV (the firmware configurations, the fixed-point
+ *          build) or the tracker runs split = true. */
+MTT_MUST_CHECK mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas,
+                                               const mtt_meas_cov *cov, size_t n);
 
 /** Add a known (seeded) track: confirmed, existence 1 (docs/FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16

@@ -174,6 +174,10 @@ typedef struct mtt_pair {
 /** A measurement kept for this frame (or the previous one, for initiation). */
 typedef struct mtt_mstore {
     mtt_real x, y, amp;
+#if MTT_WITH_MEAS_COV
+    mtt_real R[3];       /* its own covariance when has_R (ALGORITHMS.md §3.1) */
+    uint8_t has_R;
+#endif
     uint32_t src;        /* input index */
     uint8_t has_amp;
     uint8_t used;        /* assigned / selected / gated: not available for initiation */
@@ -200,6 +204,12 @@ typedef struct mtt_row_scratch {
      * model, and each model's betas. */
     mtt_real imm_e[MTT_MAX_GATED][MTT_MAX_MODELS];
     mtt_real imm_beta[MTT_MAX_MODELS][MTT_MAX_GATED];
+#endif
+#if MTT_WITH_MEAS_COV
+    /* a row with detections of their own R (ALGORITHMS.md §3.1): each
+     * one's R, and its single-detection state correction K_j nu_j */
+    const mtt_real *rj[MTT_MAX_GATED];
+    mtt_real dj[MTT_MAX_GATED][MTT_MAX_STATE];
 #endif
 } mtt_row_scratch;
 
@@ -293,6 +303,10 @@ typedef struct mtt_tracker {
     /* frame scratch */
     uint16_t n_meas;
     mtt_mstore meas[MTT_MAX_MEAS];
+#if MTT_WITH_MEAS_COV
+    uint16_t n_own_r;               /* kept detections with their own R this frame */
+    mtt_real own_rmax[2];           /* their largest r_xx, r_yy: the gate windows' reach */
+#endif
     uint32_t sel[MTT_MAX_MEAS];     /* overflow: heap of the strongest input indices */
     uint32_t sel_tmp[MTT_MAX_MEAS]; /* the canonical sort's merge buffer */
     uint16_t n_pairs;

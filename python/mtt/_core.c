@@ -289,40 +289,61 @@ static PyObject *tracker_add_track(CoreTracker *self, PyObject *args)
     return Py_BuildValue("(ik)", (int)st, (unsigned long)id);
 }
 
-/* step(time, buffer) -> status of mtt_tracker_step.  buffer: n rows of 3
- * float64 (x, y, amplitude; NaN amplitude = unknown), already validated by
- * tracker.py (finite coordinates within mtt_real, amplitude >= 0 or NaN). */
+/* step(time, buffer[, cov]) -> status of mtt_tracker_step_cov.  buffer: n
+ * rows of 3 float64 (x, y, amplitude; NaN amplitude = unknown), already
+ * validated by tracker.py (finite coordinates within mtt_real, amplitude >= 0
+ * or NaN); cov: n rows of 3 float64 (r_xx, r_xy, r_yy; all 0: meas_sigma's),
+ * or None. */
 static PyObject *tracker_step(CoreTracker *self, PyObject *args)
 {
     double time;
-    Py_buffer buf;
+    Py_buffer buf, cbuf;
+    PyObject *cobj = Py_None;
     mtt_real rtime;
     mtt_meas *meas = NULL;
+    mtt_meas_cov *cov = NULL;
     size_t n, i;
     mtt_status st;
     const double *v;
+    int has_cov;
 
-    if (!PyArg_ParseTuple(args, "dy*", &time, &buf))
+    if (!PyArg_ParseTuple(args, "dy*|O", &time, &buf, &cobj))
         return NULL;
-    if (!need_init(self)) {
+    has_cov = cobj != Py_None;
+    if (has_cov && PyObject_GetBuffer(cobj, &cbuf, PyBUF_SIMPLE) != 0) {
         PyBuffer_Release(&buf);
         return NULL;
     }
-    if (buf.len % (Py_ssize_t)(3 * sizeof(double)) != 0) {
+    if (!need_init(self)) {
         PyBuffer_Release(&buf);
-        PyErr_SetString(PyExc_ValueError, "step: the buffer must hold rows of 3 float64");
+        if (has_cov)
+            PyBuffer_Release(&cbuf);
+        return NULL;
+    }
+    if (buf.len % (Py_ssize_t)(3 * sizeof(double)) != 0 || (has_cov && cbuf.len != buf.len)) {
+        PyBuffer_Release(&buf);
+        if (has_cov)
+            PyBuffer_Release(&cbuf);
+        PyErr_SetString(PyExc_ValueError, "step: the buffers must hold rows of 3 float64, as many of each");
         return NULL;
     }
     if (!to_real(time, &rtime)) {
         PyBuffer_Release(&buf);
+        if (has_cov)
+            PyBuffer_Release(&cbuf);
         return PyLong_FromLong((long)MTT_ERR_TIME);
     }
     n = (size_t)buf.len / (3 * sizeof(double));
     v = (const double *)buf.buf;
     if (n != 0) {
         meas = PyMem_Malloc(n * sizeof *meas);
-        if (meas == NULL) {
+        cov = has_cov ? PyMem_Malloc(n * sizeof *cov) : NULL;
+        if (meas == NULL || (has_cov && cov == NULL)) {
+            PyMem_Free(meas);
+            PyMem_Free(cov);
             PyBuffer_Release(&buf);
+            if (has_cov)
+                PyBuffer_Release(&cbuf);
             return PyErr_NoMemory();
         }
         for (i = 0; i < n; ++i) {
@@ -331,13 +352,22 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
             meas[i].y = (mtt_real)r[1];
             meas[i].has_amplitude = !isnan(r[2]);
             meas[i].amplitude = meas[i].has_amplitude ? (mtt_real)r[2] : MTT_R(0.0);
+            if (cov != NULL) {
+                const double *c = (const double *)cbuf.buf + 3 * i;
+                cov[i].r_xx = (mtt_real)c[0];
+                cov[i].r_xy = (mtt_real)c[1];
+                cov[i].r_yy = (mtt_real)c[2];
+            }
         }
     }
     /* The GIL stays held: two threads stepping one tracker would race (the
      * library is not thread-safe per tracker), and a step is short. */
-    st = mtt_tracker_step(self->trk, rtime, meas, n);
+    st = mtt_tracker_step_cov(self->trk, rtime, meas, cov, n);
     PyMem_Free(meas);
+    PyMem_Free(cov);
     PyBuffer_Release(&buf);
+    if (has_cov)
+        PyBuffer_Release(&cbuf);
     return PyLong_FromLong((long)st);
 }
 

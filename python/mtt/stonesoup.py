@@ -8,7 +8,9 @@
 
 ``MttTracker`` takes Stone Soup ``Detection``s whose ``state_vector`` is the
 2-D position ``[x, y]`` (``metadata["amplitude"]``, if present, is the
-detection's amplitude) and gives Stone Soup ``Track``s of ``GaussianState``s
+detection's amplitude; a detection whose ``measurement_model`` has a 2 x 2
+``covar()`` is tracked with that covariance, ALGORITHMS.md section 3.1,
+the others with the settings' ``meas_sigma``) and gives Stone Soup ``Track``s of ``GaussianState``s
 in Stone Soup's constant-velocity order ``[x, vx, y, vy]`` (the covariance
 permuted the same way).  ``track.id`` is the mtt track id as a string, and
 ``track.metadata`` holds ``existence``, ``confirmed`` and ``age`` of the
@@ -94,8 +96,10 @@ class MttTracker(_SSTracker):
         (and changes nothing) for a timestamp not later than the last one or a
         detection that is not a 2-D position."""
         seconds = self._seconds(timestamp)
+        detections = list(detections)
         z = self._matrix(detections)
-        live = self.mtt.step(seconds, z)
+        cov = self._covariances(detections)
+        live = self.mtt.step(seconds, z, cov)
         if self._t0 is None:
             self._t0 = timestamp
         tracks = {}
@@ -126,6 +130,24 @@ class MttTracker(_SSTracker):
             return float(timestamp) - float(t0)
         except (TypeError, ValueError):
             raise ValueError(f"timestamp must be a datetime or a number, got {timestamp!r}") from None
+
+    @staticmethod
+    def _covariances(detections):
+        """Each detection's measurement-model covariance as (n, 3) rows (zeros where it has
+        none), or None when no detection has one."""
+        rows, any_cov = [], False
+        for d in detections:
+            model = getattr(d, "measurement_model", None)
+            r = (0.0, 0.0, 0.0)
+            if model is not None and hasattr(model, "covar"):
+                c = np.asarray(model.covar(), dtype=float)
+                if c.shape != (2, 2):
+                    raise ValueError(f"a detection's measurement model must have a 2 x 2 covariance "
+                                     f"(x, y), got shape {c.shape}")
+                r = (c[0, 0], c[0, 1], c[1, 1])
+                any_cov = True
+            rows.append(r)
+        return np.array(rows, dtype=float).reshape(-1, 3) if any_cov else None
 
     @staticmethod
     def _matrix(detections) -> np.ndarray:

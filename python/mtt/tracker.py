@@ -106,6 +106,36 @@ def _detections(detections) -> np.ndarray:
     return np.ascontiguousarray(z)
 
 
+def _covariances(cov, n: int) -> np.ndarray:
+    """(n, 3) [r_xx, r_xy, r_yy] or (n, 2, 2) array-like into validated (n, 3) float64 rows.
+
+    A row of zeros is "meas_sigma's covariance"; any other must be finite and
+    positive definite (ALGORITHMS.md section 3.1)."""
+    try:
+        c = np.asarray(cov, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"cov must be numbers: {e}") from None
+    if c.ndim == 3 and c.shape[1:] == (2, 2):
+        if not np.array_equal(c[:, 0, 1], c[:, 1, 0]):
+            i = int(np.argwhere(c[:, 0, 1] != c[:, 1, 0])[0][0])
+            raise ValueError(f"cov {i}: not symmetric ({c[i, 0, 1]!r} against {c[i, 1, 0]!r})")
+        c = np.column_stack([c[:, 0, 0], c[:, 0, 1], c[:, 1, 1]]) if len(c) else np.zeros((0, 3))
+    if c.size == 0 and n == 0:
+        return np.zeros((0, 3))
+    if c.ndim != 2 or c.shape != (n, 3):
+        raise ValueError(f"cov must have shape ({n}, 3) [r_xx, r_xy, r_yy] or ({n}, 2, 2), one per "
+                         f"detection, got {c.shape}")
+    zero = ~c.any(axis=1)
+    ok = np.isfinite(c).all(axis=1) & (np.abs(c) <= _core.REAL_MAX).all(axis=1) & \
+        (c[:, 0] > 0) & (c[:, 2] > 0) & (c[:, 0] * c[:, 2] > c[:, 1] ** 2)
+    bad = ~(zero | ok)
+    if bad.any():
+        i = int(np.argwhere(bad)[0][0])
+        raise ValueError(f"cov {i}: {c[i].tolist()!r} is not a covariance (finite, r_xx > 0, r_yy > 0, "
+                         f"r_xx r_yy > r_xy^2; all 0: meas_sigma's)")
+    return np.ascontiguousarray(c)
+
+
 class Tracker:
     """A multi-target tracker: ``Tracker(settings=None)``.
 
@@ -204,22 +234,26 @@ class Tracker:
 
     # ------------------------------------------------------------ stepping
 
-    def step(self, time: float, detections=()) -> list:
+    def step(self, time: float, detections=(), cov=None) -> list:
         """Run one scan (see :meth:`update`) and return the live tracks after it,
         a list of :class:`Track` in ascending id."""
-        self.update(time, detections)
+        self.update(time, detections, cov)
         return self.tracks
 
-    def update(self, time: float, detections=()) -> None:
+    def update(self, time: float, detections=(), cov=None) -> None:
         """Run one scan at ``time`` (greater than the last step's) with ``detections``:
         array-like (n, 2) [x, y] or (n, 3) [x, y, amplitude] (NaN amplitude: unknown;
         n may be 0), without building Track objects (``tracks`` and
-        ``track_table()`` give the result).
+        ``track_table()`` give the result).  ``cov``: each detection's own
+        covariance, (n, 3) [r_xx, r_xy, r_yy] or (n, 2, 2); a row of zeros
+        (or ``cov`` None) is meas_sigma's (ALGORITHMS.md section 3.1).
 
         Raises ValueError for a time that is not finite, not representable or
-        not later than the last one, and for detections of the wrong shape or
-        with non-finite coordinates or negative amplitudes; the tracker is then
-        unchanged.
+        not later than the last one, for detections of the wrong shape or
+        with non-finite coordinates or negative amplitudes, and for a ``cov``
+        row that is not a covariance; the tracker is then unchanged.  A ``cov``
+        where the library has no covariance per detection (a build without
+        MTT_WITH_MEAS_COV, or ``split``) raises ValueError too.
         """
         try:
             t = float(time)
@@ -228,7 +262,11 @@ class Tracker:
         if not math.isfinite(t) or abs(t) > _core.REAL_MAX:
             raise ValueError(f"time {t!r} is not a finite number that mtt_real ({_core.REAL}) holds")
         z = _detections(detections)
-        st = self._core.step(t, z.tobytes())
+        c = None if cov is None else _covariances(cov, len(z)).tobytes()
+        st = self._core.step(t, z.tobytes(), c)
+        if st == _core.ERR_UNSUPPORTED and c is not None:
+            raise ValueError("a covariance per detection is not available here: the library was built "
+                             "without MTT_WITH_MEAS_COV, or the settings have split = true")
         if st == _core.ERR_TIME:
             raise ValueError(f"time {t!r} is not later than the last step's time {self._time!r} "
                              f"in the tracker's precision (mtt_real={_core.REAL})")

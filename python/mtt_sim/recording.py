@@ -347,6 +347,43 @@ def sample_accelerations(t, ids, x, y, dt):
     return np.concatenate(out) if out else np.zeros(0)
 
 
+def sample_jitter(t, ids, x, y, half=3):
+    """Per-axis RMS of the samples about a local quadratic in time, over 2 half + 1 samples.
+
+    A real aircraft's path is smooth over half a minute (a turn's cubic term
+    cancels at the window's centre), so what the quadratic does not follow is
+    the recording's own position noise: its reports' positions and times
+    disagree. Each residual is scaled by 1/sqrt(1 - h), h the centre's
+    leverage, so white noise of standard deviation s gives s. Windows that
+    span a gap (more than twice the id's median interval per sample) are
+    skipped. Returns (rms, number of residuals)."""
+    res, lev = [], {}
+    for u in sorted(set(ids)):
+        m = ids == u
+        o = np.argsort(t[m], kind="stable")
+        tt, xx, yy = t[m][o], x[m][o], y[m][o]
+        if len(tt) < 2 * half + 1:
+            continue
+        step = float(np.median(np.diff(tt)))
+        for i in range(half, len(tt) - half):
+            w = slice(i - half, i + half + 1)
+            tc = tt[w] - tt[i]
+            if step <= 0 or tc[-1] - tc[0] > 2.0 * 2 * half * step:
+                continue
+            a = np.vander(tc / step, 3)
+            key = tuple(np.round(tc / step, 6))
+            if key not in lev:  # the centre's hat value and the fit's weights
+                pinv = np.linalg.pinv(a)
+                lev[key] = (pinv[:, half] @ a[half], pinv)
+            h, pinv = lev[key]
+            if h >= 1.0 - 1e-9:
+                continue
+            for v in (xx[w], yy[w]):
+                res.append((v[half] - a[half] @ (pinv @ v)) / math.sqrt(1.0 - h))
+    r = np.asarray(res, float)
+    return (float(np.sqrt(np.mean(r * r))) if len(r) else float("nan")), len(r)
+
+
 def _int_ids(ids, first_id):
     """Target number of each distinct id: the id itself if all are integers >= 0, else first_id + sorted rank."""
     uniq = sorted(set(str(i) for i in ids))
@@ -461,6 +498,10 @@ def main(argv=None):
                       f"99 % {q[2]:.1f}, max {acc.max():.1f} (length/time^2); {int((acc > 20.0).sum())} of "
                       f"{len(acc)} steps above 20 m/s^2 = 2 g, beyond an aircraft's (the recording's noise, "
                       f"or a gap bridged by a straight line)")
+            jit, n = sample_jitter(t, ids, x, y)
+            if n:
+                print(f"  the recording's own position noise: {jit:.1f} per axis (RMS about a quadratic over 7 "
+                      f"samples, {n} residuals), to set beside the sensor's sigma")
     except RecordingError as e:
         print(f"recording: {e}", file=sys.stderr)
         return 2

@@ -309,6 +309,27 @@ class TestTruthAccelerations(unittest.TestCase):
         a2 = recording.sample_accelerations(t2, np.array(["k"] * len(t2), dtype=object), x2, y2, 5.0)
         np.testing.assert_allclose(a2, [0.0, 500.0 * math.sqrt(2.0) / 25.0, 0.0], atol=1e-9)
 
+    def test_sample_jitter_is_the_noise_about_a_smooth_path(self):
+        import numpy as np
+        # a 2 km orbit at 100 m/s (5 m/s^2, an airliner's hardest turn) sampled every 5 s:
+        # the quadratic leaves under 5 m
+        t = np.arange(0.0, 3000.0, 5.0)
+        w = 100.0 / 2000.0
+        x, y = 2000.0 * np.cos(w * t), 2000.0 * np.sin(w * t)
+        ids = np.array(["c"] * len(t), dtype=object)
+        smooth, n = recording.sample_jitter(t, ids, x, y)
+        self.assertEqual(n, 2 * (len(t) - 6))
+        self.assertLess(smooth, 5.0)
+        self.assertGreater(smooth, 0.5)
+        # white noise of 40 per axis on it comes out as 40 (the leverage corrected)
+        rng = np.random.default_rng(3)
+        jit, _ = recording.sample_jitter(t, ids, x + rng.normal(0, 40.0, len(t)), y + rng.normal(0, 40.0, len(t)))
+        self.assertAlmostEqual(jit, 40.0, delta=2.5)
+        # a gap of 60 s: the windows across it are skipped
+        keep = (t < 1000.0) | (t >= 1060.0)
+        _, n2 = recording.sample_jitter(t[keep], ids[keep], x[keep], y[keep])
+        self.assertEqual(n2, 2 * (int(keep.sum()) - 6 - 6))
+
 
 class TestTrafficWheel(unittest.TestCase):
     def setUp(self):

@@ -179,10 +179,14 @@ class TestDaskCluster(unittest.TestCase):
         kw = dict(trials=4, runs=4, seed0=0, exe=exe, seed=7, chunks=2, progress=None)
         s1 = tune.tune([scn], space, terms, storage=os.path.join(d, "serial.db"), **kw)
         s2 = tune.tune([scn], space, terms, storage=os.path.join(d, "dask.db"), scheduler=self.address, **kw)
+        s3 = tune.tune([scn], space, terms, storage=os.path.join(d, "local.db"), scheduler="local",
+                       **dict(kw, jobs=2))
         v1 = [(t.number, t.params, t.value) for t in s1.get_trials()]
         v2 = [(t.number, t.params, t.value) for t in s2.get_trials()]
+        v3 = [(t.number, t.params, t.value) for t in s3.get_trials()]
         self.assertEqual(len(v1), 4)
         self.assertEqual(v2, v1)
+        self.assertEqual(v3, v1)  # two local processes per trial
         self.assertEqual(s2.best_value, s1.best_value)
         self.assertTrue(math.isfinite(s1.best_value))
 

@@ -211,6 +211,40 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
 }
 #endif /* MTT_REAL_FIXED */
 
+/* d^2 of a detection against the track's CV prediction, with its own R
+ * when it has one (ALGORITHMS.md §3.1; +inf when that S is not positive
+ * definite), else the track's S^-1. */
+static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy)
+{
+#if MTT_WITH_MEAS_COV
+    if (ms->has_R) {
+        mtt_real d2, p;
+        return (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, dx, dy, &d2, &p) == 0) ? d2 : MTT_REAL_MAX;
+    }
+#else
+    (void)trk;
+    (void)ms;
+#endif
+    return mtt_mahal2(tf->Si, dx, dy);
+}
+
+/* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4), d2 its own_d2. */
+static mtt_real own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2)
+{
+#if MTT_WITH_MEAS_COV
+    if (ms->has_R) {
+        mtt_real p;
+        (void)mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, ms->x - tf->xp[0], ms->y - tf->xp[1], &d2, &p);
+        return p;
+    }
+#else
+    (void)trk;
+    (void)ms;
+    (void)tf;
+#endif
+    return MTT_GATE_LIK(peak, d2);
+}
+
 static int less_pair(const void *a, const void *b, const void *ctx)
 {
     const mtt_pair *p = (const mtt_pair *)a, *q = (const mtt_pair *)b;
@@ -312,6 +346,14 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
+#if MTT_WITH_MEAS_COV
+        if (trk->n_own_r > 0u) {
+            /* detections with a wider R of their own: the window reaches
+             * sqrt(gamma (S_xx - R_xx + r_xx)) <= w + sqrt(gamma (r_xx - R_xx)) (§3.1) */
+            wx += (trk->own_rmax[0] > trk->R[0]) ? mtt_sqrt(gamma * (trk->own_rmax[0] - trk->R[0])) : MTT_R(0.0);
+            wy += (trk->own_rmax[1] > trk->R[2]) ? mtt_sqrt(gamma * (trk->own_rmax[1] - trk->R[2])) : MTT_R(0.0);
+        }
+#endif
         for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
             mtt_pos dx = MTT_SUBS(meas[j].x, zx), dy = MTT_SUBS(meas[j].y, zy);
             mtt_d2 d2;
@@ -322,9 +364,9 @@ void mtt_gate_frame(mtt_tracker *trk)
                 continue;
             }
 #if MTT_WITH_IMM
-            d2 = imm ? mtt_imm_gate_d2(trk, i, meas[j].x, meas[j].y) : mtt_mahal2(tf->Si, dx, dy);
+            d2 = imm ? mtt_imm_gate_d2(trk, i, &meas[j]) : own_d2(trk, tf, &meas[j], dx, dy);
 #else
-            d2 = mtt_mahal2(tf->Si, dx, dy);
+            d2 = own_d2(trk, tf, &meas[j], dx, dy);
 #endif
             if (!(d2 <= gamma)) {
                 continue;
@@ -365,10 +407,9 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.meas = cm[a];
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
-            np.p = imm ? mtt_imm_gate_p(trk, i, meas[cm[a]].x, meas[cm[a]].y)
-                       : MTT_GATE_LIK(peak, cd[a]);
+            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
 #else
-            np.p = MTT_GATE_LIK(peak, cd[a]);
+            np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
 #endif
             np.w = MTT_ZERO;
             np.lam = MTT_ZERO;

@@ -100,7 +100,8 @@ void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
         uint8_t j;
         nis = MTT_REAL_MAX;
         for (j = 0; j < p->imm_n_models; ++j) {
-            const mtt_real d2 = mtt_mahal2(tf->Sim[j], ms->x - tf->xpm[j][0], ms->y - tf->xpm[j][1]);
+            mtt_real pj;
+            const mtt_real d2 = mtt_imm_model_d2(trk, tf, j, ms, &pj);
             nis = (d2 < nis) ? d2 : nis;
         }
     } else
@@ -109,6 +110,12 @@ void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
         dx = ms->x - tf->xp[0];
         dy = ms->y - tf->xp[1];
         nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
+#if MTT_WITH_MEAS_COV
+        if (ms->has_R) {
+            mtt_real pj;
+            nis = (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, p->pg, dx, dy, &nis, &pj) == 0) ? nis : MTT_REAL_MAX;
+        }
+#endif
     }
     /* weight beta_s: the NIS is the target's with that probability */
     w = (MTT_R(1.0) - p->adapt_memory) * pp->beta;

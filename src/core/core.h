@@ -49,7 +49,14 @@ int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_d2 *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
 /* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */
-void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, size_t n);
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, size_t n);
+#if MTT_WITH_MEAS_COV
+/* The covariance of a stored detection: its own, or meas_sigma's (§3.1). */
+const mtt_real *mtt_meas_r(const mtt_tracker *trk, const mtt_mstore *ms);
+/* trk->row.rj[i] of the pairs first + i, i < m; returns how many of
+ * them have their own R. */
+uint16_t mtt_meas_row_r(mtt_tracker *trk, uint16_t first, uint16_t m);
+#endif
 
 /* ---- track_table.c: the track table (§12.4) ---- */
 /* Append a track; returns its index or -1 when the table is full. */

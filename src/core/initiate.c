@@ -73,13 +73,18 @@ int mtt_init_pair_ok(const mtt_tracker *trk, const mtt_mstore *a, const mtt_msto
     if (trk->par.init_gate == MTT_INIT_GATE_INTENSITY && a->has_amp) {
         mtt_real f = mtt_init_intensity_f(&trk->par, a->amp);
         mtt_real sp2, s11, s12, s22, det, d2;
+#if MTT_WITH_MEAS_COV
+        const mtt_real *R = mtt_meas_r(trk, a); /* the first detection's own (§3.1) */
+#else
+        const mtt_real *R = trk->R;
+#endif
         if (!(f > MTT_R(0.0))) {
             return 0;
         }
         sp2 = f * f / trk->gamma;
-        s11 = sp2 + trk->R[0];
-        s12 = trk->R[1];
-        s22 = sp2 + trk->R[2];
+        s11 = sp2 + R[0];
+        s12 = R[1];
+        s22 = sp2 + R[2];
         det = s11 * s22 - s12 * s12;
         d2 = (s22 * dx * dx - MTT_R(2.0) * s12 * dx * dy + s11 * dy * dy) / det;
         return d2 <= trk->gamma;
@@ -105,7 +110,11 @@ static mtt_real reach_x(const mtt_tracker *trk, mtt_real dt)
     for (a = 0; a < trk->n_prev; ++a) {
         if (trk->prev[a].has_amp) {
             mtt_real f = mtt_init_intensity_f(&trk->par, trk->prev[a].amp);
+#if MTT_WITH_MEAS_COV
+            mtt_real ra = mtt_sqrt(f * f + trk->gamma * mtt_meas_r(trk, &trk->prev[a])[0]);
+#else
             mtt_real ra = mtt_sqrt(f * f + trk->gamma * trk->R[0]);
+#endif
             r = (ra > r) ? ra : r;
         }
     }

@@ -145,6 +145,12 @@ mtt_status mtt_tracker_load_checked(mtt_tracker *trk, const mtt_prepared *pp, mt
 
 mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, size_t n)
 {
+    return mtt_tracker_step_cov(trk, time, meas, NULL, n);
+}
+
+mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
+                                size_t n)
+{
     mtt_real dt = MTT_ZERO;
     const mtt_mode *md;
     uint32_t mark;
@@ -158,6 +164,16 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     if (!MTT_TIME_OK(time) || (trk->have_time && !MTT_TIME_AFTER(time, trk->time))) {
         return MTT_ERR_TIME;
     }
+    if (cov != NULL && (!MTT_WITH_MEAS_COV || (MTT_WITH_SPLIT && trk->par.split))) {
+        /* a covariance per detection where the build or the tracker has
+         * none (ALGORITHMS.md §3.1): refused before anything is written */
+        size_t i;
+        for (i = 0; i < n; ++i) {
+            if (cov[i].r_xx != MTT_ZERO || cov[i].r_xy != MTT_ZERO || cov[i].r_yy != MTT_ZERO) {
+                return MTT_ERR_UNSUPPORTED;
+            }
+        }
+    }
     if (trk->have_time) {
         dt = MTT_TIME_SUB(time, trk->time);
     }
@@ -168,7 +184,7 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     trk->stats.last.meas_in = (uint32_t)n;
     mark = cycles_now(trk);
 
-    mtt_measure_select(trk, meas, n);
+    mtt_measure_select(trk, meas, cov, n);
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES

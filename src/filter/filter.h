@@ -35,6 +35,18 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
+#if MTT_WITH_MEAS_COV
+/* A detection with covariance R against a prediction whose covariance has
+ * the rows p0, p1 (ALGORITHMS.md §3.1): d2 = nu' S^-1 nu and p = N(nu; 0,
+ * S) / PG, S = Pp_pos + R; -1 when S is not positive definite. */
+int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
+                   mtt_real ny, mtt_real *d2, mtt_real *p);
+/* The PDA update of an n-state prediction with a covariance Rj[j] per
+ * detection (§3.1); d is scratch for m corrections. */
+void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[], uint16_t m,
+                         mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_real d[][MTT_MAX_STATE],
+                         mtt_state x, mtt_cov P);
+#endif
 void mtt_sym(mtt_cov P);
 /* A = L D L' of the leading n x n block of A (n <= MTT_MAX_STATE; unit
  * lower L, diagonal not written): 0, or -1 when a pivot is not positive

@@ -574,6 +574,90 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 }
 #endif
 
+#if MTT_WITH_MEAS_COV
+int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
+                   mtt_real ny, mtt_real *d2, mtt_real *p)
+{
+    /* S = Pp_pos + R as innov_n forms it */
+    const mtt_real s0 = p0[0] + R[0], s1 = MTT_R(0.5) * (p0[1] + p1[0]) + R[1], s2 = p1[1] + R[2];
+    const mtt_real det = s0 * s2 - s1 * s1;
+    mtt_real Si[MTT_SYM_SLOTS];
+    if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
+        return -1;
+    }
+    Si[0] = s2 / det;
+    Si[1] = -s1 / det;
+    Si[2] = s0 / det;
+    *d2 = MTT_MAHAL2(Si, nx, ny);
+    *p = mtt_gate_likelihood(*d2, det, pg);
+    return 0;
+}
+
+/* [CHOICE] ALGORITHMS.md §3.1: with a covariance per detection the PDA
+ * update is the mixture of the m single-detection updates (each the Joseph
+ * form with its own R_j and gain K_j) and of the prediction, weights beta_j
+ * and beta0: x = xp + sum beta_j d_j (d_j = K_j nu_j), P = beta0 Pp + sum
+ * beta_j P_j + the spread of the d_j, written as the sum of positive
+ * semi-definite terms as pda_n writes it.  With every R_j equal it is
+ * pda_n's update (the same in exact arithmetic). */
+void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[], uint16_t m,
+                         mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_real d[][MTT_MAX_STATE],
+                         mtt_state x, mtt_cov P)
+{
+    mtt_cov Pj, acc;
+    mtt_state xj;
+    mtt_real S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det, K[MTT_MAX_STATE][2], c[MTT_MAX_STATE];
+    mtt_real bsum = MTT_R(0.0), b0 = beta0;
+    const mtt_real one[1] = {MTT_R(1.0)};
+    uint16_t j;
+    int i, k;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        c[i] = MTT_R(0.0);
+        for (k = 0; k < n; ++k) {
+            acc[i][k] = MTT_R(0.0);
+        }
+    }
+    for (j = 0; j < m; ++j) {
+        if (innov_n(n, Pp, Rj[j], S, Si, &det, K) != 0) {
+            /* not positive definite (R_j was checked, Pp is): its weight
+             * goes to the prediction */
+            b0 += beta[j];
+            for (i = 0; i < n; ++i) {
+                d[j][i] = MTT_R(0.0);
+            }
+            continue;
+        }
+        pda_n(n, xp, Pp, K, Si, Rj[j], 1, &nu[j], one, MTT_R(0.0), xj, Pj);
+        for (i = 0; i < n; ++i) {
+            d[j][i] = xj[i] - xp[i];
+            c[i] += beta[j] * d[j][i];
+            for (k = i; k < n; ++k) {
+                acc[i][k] += beta[j] * Pj[i][k];
+            }
+        }
+        bsum += beta[j];
+    }
+    bsum = MTT_R(1.0) - bsum;
+    for (i = 0; i < n; ++i) {
+        x[i] = xp[i] + c[i];
+        for (k = i; k < n; ++k) {
+            mtt_real v = b0 * Pp[i][k] + acc[i][k];
+            for (j = 0; j < m; ++j) {
+                v += beta[j] * (d[j][i] - c[i]) * (d[j][k] - c[k]);
+            }
+            if (bsum > MTT_R(0.0)) {
+                v += bsum * c[i] * c[k];
+            }
+            P[i][k] = v;
+            P[k][i] = v;
+        }
+    }
+}
+#endif
+
 #ifndef MTT_REAL_FIXED /* the fixed L D L' is above */
 
 /* A = L D L' (unit lower L, its diagonal not written) of the leading

@@ -157,18 +157,27 @@ void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
 
 #else /* float, double */
 
-void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
+/* The two-point P of detections with covariances Ra (at k-1) and Rb (at
+ * k): position Rb, velocity (Ra + Rb)/dT^2, their covariance Rb/dT
+ * (ALGORITHMS.md §12.1, §3.1). */
+static void two_point_cov2(const mtt_real Ra[3], const mtt_real Rb[3], mtt_real dt, mtt_cov P)
 {
-    const mtt_real r[2][2] = {{R[0], R[1]}, {R[1], R[2]}};
+    const mtt_real a[2][2] = {{Ra[0], Ra[1]}, {Ra[1], Ra[2]}};
+    const mtt_real b[2][2] = {{Rb[0], Rb[1]}, {Rb[1], Rb[2]}};
     int i, j;
     for (i = 0; i < 2; ++i) {
         for (j = 0; j < 2; ++j) {
-            P[i][j] = r[i][j];
-            P[i][j + 2] = r[i][j] / dt;
-            P[i + 2][j] = r[i][j] / dt;
-            P[i + 2][j + 2] = MTT_R(2.0) * r[i][j] / (dt * dt);
+            P[i][j] = b[i][j];
+            P[i][j + 2] = b[i][j] / dt;
+            P[i + 2][j] = b[i][j] / dt;
+            P[i + 2][j + 2] = (a[i][j] + b[i][j]) / (dt * dt); /* 2R when Ra = Rb: exactly R + R */
         }
     }
+}
+
+void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
+{
+    two_point_cov2(R, R, dt, P);
 }
 
 /* [CHOICE] The velocity gate says |v| <= vmax, but the two-point velocity
@@ -210,5 +219,12 @@ void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, con
     x[1] = b->y;
     x[2] = MTT_DIV_T(MTT_SUBS(b->x, a->x), dt);
     x[3] = MTT_DIV_T(MTT_SUBS(b->y, a->y), dt);
+#if MTT_WITH_MEAS_COV
+    if (a->has_R || b->has_R) {
+        two_point_cov2(a->has_R ? a->R : R, b->has_R ? b->R : R, dt, P);
+        cap_velocity(P, vmax);
+        return;
+    }
+#endif
     TWO_POINT_CAPPED(R, dt, vmax, P);
 }

@@ -45,6 +45,23 @@ static void keep_prediction(mtt_tracker *trk, uint16_t ti)
     t->meas = -1;
 }
 
+/* The PDA update of the track's CV prediction with the pairs
+ * first..first+m-1, their innovations nu and betas: with the one R of
+ * meas_sigma, or the mixture when a detection has its own (§3.1). */
+static void pda(mtt_tracker *trk, mtt_track_frame *tf, uint16_t first, uint16_t m,
+                mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_track *t)
+{
+#if MTT_WITH_MEAS_COV
+    if (trk->n_own_r > 0u && mtt_meas_row_r(trk, first, m) > 0u) {
+        mtt_kalman_pda_each(MTT_STATE_N, tf->xp, tf->Pp, trk->row.rj, m, nu, beta, beta0, trk->row.dj, t->x, t->P);
+        return;
+    }
+#else
+    (void)first;
+#endif
+    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, beta0, t->x, t->P);
+}
+
 /* Single-measurement update with pair k (ALGORITHMS.md §7.4). */
 static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
 {
@@ -57,8 +74,7 @@ static void update_one(mtt_tracker *trk, uint16_t ti, uint16_t k)
     nu[0][0] = ms->x - tf->xp[0];
     nu[0][1] = ms->y - tf->xp[1];
     beta[0] = pp->beta;
-    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, beta,
-                   MTT_SUB(MTT_P(1.0), pp->beta), t->x, t->P);
+    pda(trk, tf, k, 1, nu, beta, MTT_SUB(MTT_P(1.0), pp->beta), t);
     t->existence = mtt_existence_update(tf->ex_pred, MTT_PAIR_L(pp));
     t->meas = (int32_t)ms->src;
 }
@@ -104,7 +120,7 @@ static void update_pda(mtt_tracker *trk, uint16_t ti)
         mark_contested_used(trk, ti);
     }
 #endif
-    mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, m, nu, beta, tf->beta0, t->x, t->P);
+    pda(trk, tf, tf->pair_first, m, nu, beta, tf->beta0, t);
     t->existence = tf->ex_post;
     t->meas = (int32_t)meas[pairs[b].meas].src;
 }
@@ -124,7 +140,7 @@ static void update_nn(mtt_tracker *trk, uint16_t ti)
         const mtt_real one[1] = {MTT_R(1.0)};
         nu[0][0] = ms->x - tf->xp[0];
         nu[0][1] = ms->y - tf->xp[1];
-        mtt_kalman_pda(tf->xp, tf->Pp, tf->K, tf->Si, trk->R, 1, nu, one, MTT_R(0.0), t->x, t->P);
+        pda(trk, tf, (uint16_t)tf->assigned, 1, nu, one, MTT_R(0.0), t);
         t->meas = (int32_t)ms->src;
     }
     t->existence = tf->ex_post;

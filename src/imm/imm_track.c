@@ -128,35 +128,54 @@ void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_
     *wy = ay;
 }
 
-mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy)
+mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uint8_t j, const mtt_mstore *ms,
+                          mtt_real *p)
+{
+    const mtt_real nx = ms->x - tf->xpm[j][0], ny = ms->y - tf->xpm[j][1];
+    mtt_real d2;
+#if MTT_WITH_MEAS_COV
+    if (ms->has_R) {
+        /* its own R (ALGORITHMS.md §3.1): S_j from the model's prediction */
+        if (mtt_meas_gauss(tf->Ppm[j][0], tf->Ppm[j][1], ms->R, trk->par.pg, nx, ny, &d2, p) != 0) {
+            *p = MTT_R(0.0);
+            return MTT_REAL_MAX;
+        }
+        return d2;
+    }
+#endif
+    d2 = mtt_mahal2(tf->Sim[j], nx, ny);
+    *p = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
+    return d2;
+}
+
+mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
-    mtt_real best = MTT_REAL_MAX;
+    mtt_real best = MTT_REAL_MAX, p;
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
-        const mtt_real d2 = mtt_mahal2(tf->Sim[j], zx - tf->xpm[j][0], zy - tf->xpm[j][1]);
+        const mtt_real d2 = mtt_imm_model_d2(trk, tf, j, ms, &p);
         best = (d2 < best) ? d2 : best;
     }
     return best;
 }
 
 /* p_i^j = N(ν_i^j; 0, S_j)/PG of measurement z under every model. */
-static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, mtt_real zx,
-                              mtt_real zy, mtt_real pj[])
+static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms,
+                              mtt_real pj[])
 {
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
-        const mtt_real d2 = mtt_mahal2(tf->Sim[j], zx - tf->xpm[j][0], zy - tf->xpm[j][1]);
-        pj[j] = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
+        (void)mtt_imm_model_d2(trk, tf, j, ms, &pj[j]);
     }
 }
 
-mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, mtt_real zx, mtt_real zy)
+mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_real pj[MTT_MAX_MODELS], pd[MTT_MAX_MODELS], pdm;
     uint8_t j;
-    model_likelihoods(trk, tf, zx, zy, pj);
+    model_likelihoods(trk, tf, ms, pj);
     for (j = 0; j < trk->par.imm_n_models; ++j) {
         pd[j] = trk->par.pd;
     }
@@ -191,11 +210,10 @@ mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
             if (!(pp->beta > MTT_R(0.0)) && k != a) {
                 continue; /* not in the final row */
             }
-            d2 = mtt_mahal2(tf->Sim[j], ms->x - tf->xpm[j][0], ms->y - tf->xpm[j][1]);
+            d2 = mtt_imm_model_d2(trk, tf, j, ms, &c[m].p);
             if (!(d2 <= trk->gamma)) {
                 continue;
             }
-            c[m].p = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
             c[m].lam = pp->lam;
             c[m].amp = ms->amp;
             c[m].idx = pp->meas;
@@ -233,14 +251,20 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     mtt_real(*nu)[2] = trk->row.nu;
     uint16_t i;
     uint8_t j;
+#if MTT_WITH_MEAS_COV
+    int own;
+#endif
     for (j = 0; j < r; ++j) {
         e0[j] = MTT_R(1.0);
     }
     for (i = 0; i < m; ++i) {
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
-        model_likelihoods(trk, tf, ms->x, ms->y, e[i]);
+        model_likelihoods(trk, tf, ms, e[i]);
     }
     (void)mtt_imm_apportion(r, tf->cbar, m, beta0, beta, e0, e, t->mu, b0j, bj);
+#if MTT_WITH_MEAS_COV
+    own = trk->n_own_r > 0u && mtt_meas_row_r(trk, first, m) > 0u; /* §3.1 */
+#endif
     for (j = 0; j < r; ++j) {
         const uint8_t n = model_n(trk->par.imm_model[j]);
         if (m == 0u) {
@@ -257,6 +281,13 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
             nu[i][0] = ms->x - tf->xpm[j][0];
             nu[i][1] = ms->y - tf->xpm[j][1];
         }
+#if MTT_WITH_MEAS_COV
+        if (own) {
+            mtt_kalman_pda_each(n, tf->xpm[j], tf->Ppm[j], trk->row.rj, m, nu, bj[j], b0j[j], trk->row.dj,
+                                t->xm[j], t->Pm[j]);
+            continue;
+        }
+#endif
         mtt_kalman_pda_n(n, tf->xpm[j], tf->Ppm[j], tf->Km[j], tf->Sim[j], trk->R, m, nu, bj[j], b0j[j],
                          t->xm[j], t->Pm[j]);
     }

@@ -81,6 +81,7 @@ static void check(mtt_status st, const char *what)
  * of ALGORITHMS.md §2.2); modes that refuse IMM are skipped. */
 static mtt_motion g_motion = MTT_MOTION_CV;
 static long g_scan = -1; /* --scan: the replay frame to time (-1: the busiest) */
+static int g_meas_cov;    /* --meas-cov: dense detections carry meas_sigma's R as their own */
 
 static int mode_built(mtt_assoc a, const char **name)
 {
@@ -305,6 +306,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     const double side = 200.0 * sqrt((double)n);
     tgt *tg = calloc((size_t)n, sizeof *tg);
     mtt_meas *m = calloc((size_t)n * 3u + 1u, sizeof *m);
+    mtt_meas_cov *c = calloc((size_t)n * 3u + 1u, sizeof *c);
     sim_rng rng = {1000u + (uint64_t)n};
     mtt_params p;
     result r;
@@ -312,7 +314,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     int i;
     char work[32];
     const char *name = "?";
-    if (!tg || !m) {
+    if (!tg || !m || !c) {
         fprintf(stderr, "mtt-bench: out of memory\n");
         exit(1);
     }
@@ -335,6 +337,10 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
         fprintf(stderr, "mtt-bench: init failed\n");
         exit(1);
     }
+    for (i = 0; i < n * 3 + 1; ++i) { /* the same R, through the per-detection paths */
+        c[i].r_xx = p.meas_sigma[0] * p.meas_sigma[0];
+        c[i].r_yy = p.meas_sigma[1] * p.meas_sigma[1];
+    }
     result_alloc(&r, frames);
     for (f = 0; f < 50u + frames; ++f) {
         uint64_t t0;
@@ -348,8 +354,8 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
             fl = floor_ns(&trk, tor(1.0, MTT_IO_TIME));
         }
         t0 = now_ns();
-        if (mtt_tracker_step(&trk, tor((double)f, MTT_IO_TIME), m, nm) != MTT_OK) {
-            fprintf(stderr, "mtt-bench: step failed\n");
+        if (mtt_tracker_step_cov(&trk, tor((double)f, MTT_IO_TIME), m, g_meas_cov ? c : NULL, nm) != MTT_OK) {
+            fprintf(stderr, "mtt-bench: step failed%s\n", g_meas_cov ? " (--meas-cov: a build without MTT_WITH_MEAS_COV?)" : "");
             exit(1);
         }
         dt = (double)(now_ns() - t0);
@@ -363,6 +369,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     result_print(work, name, &r, json, first);
     free(tg);
     free(m);
+    free(c);
 }
 
 /* ---- replay workload: the busiest frame of a detections file (or --scan's) ---- */
@@ -449,7 +456,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: mtt-bench [--frames N] [--dense N,N,...] [--modes m,m,...]\n"
             "                 [--det D.det.csv --config S.json] [--json OUT.json]\n"
-            "                 [--motion cv|imm|auto]\n"
+            "                 [--motion cv|imm|auto] [--meas-cov]\n"
             "\n"
             "Per-frame cost of each association mode against load, beside a floor of\n"
             "bare Kalman predict+update on the same tracks.\n"
@@ -463,6 +470,9 @@ static void usage(FILE *f)
             "  --variant V  lm_ihpda_variant (s0 or contest) of every workload\n"
             "               (default: s0 for dense, the config's for the replay)\n"
             "  --set K=V    a numeric setting of every workload (repeatable, up to 8)\n"
+            "  --meas-cov   the dense detections carry meas_sigma's covariance as their\n"
+            "               own (mtt_tracker_step_cov): the cost of the per-detection\n"
+            "               paths on the same tracks (ALGORITHMS.md section 3.1)\n"
             "  --list-modes print the modes built into this library and exit\n"
             "  --motion M   cv (default), imm (the default CV + CA models, or the\n"
             "               --config file's imm_models) or auto (with --set process_psd=0\n"
@@ -492,6 +502,8 @@ int main(int argc, char **argv)
                 }
             }
             return 0;
+        } else if (!strcmp(argv[i], "--meas-cov")) {
+            g_meas_cov = 1;
         } else if (i + 1 < argc && !strcmp(argv[i], "--frames")) {
             frames = strtoul(argv[++i], NULL, 10);
         } else if (i + 1 < argc && !strcmp(argv[i], "--dense")) {

@@ -102,6 +102,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 FUZZ_FAIL("fuzz_detections", "detection %zu: coordinate not finite", j);
             if (m->has_amplitude && (!mtt_isfinite(m->amplitude) || !(m->amplitude >= MTT_R(0.0))))
                 FUZZ_FAIL("fuzz_detections", "detection %zu: bad amplitude accepted", j);
+#ifndef MTT_REAL_FIXED
+            if (d.cov != NULL) { /* all 0, or a finite positive definite covariance */
+                const mtt_meas_cov *c = &d.cov[j];
+                const int zero = c->r_xx == MTT_R(0.0) && c->r_xy == MTT_R(0.0) && c->r_yy == MTT_R(0.0);
+                if (!zero && !(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy) &&
+                               c->r_xx > MTT_R(0.0) && c->r_yy > MTT_R(0.0)))
+                    FUZZ_FAIL("fuzz_detections", "detection %zu: bad covariance accepted", j);
+            }
+#endif
         }
     }
     if (next != d.n_meas)
@@ -110,8 +119,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     for (k = 0; k < d.n_scans && k < MAX_STEPPED_SCANS; ++k) {
         const mtt_io_scan *sc = &d.scans[k];
-        mtt_status st = mtt_tracker_step(&trk, sc->rtime, sc->count != 0 ? &d.meas[sc->first] : NULL,
-                                         sc->count);
+        const mtt_meas_cov *c = (d.cov != NULL && sc->count != 0) ? &d.cov[sc->first] : NULL;
+        mtt_status st = mtt_tracker_step_cov(&trk, sc->rtime, sc->count != 0 ? &d.meas[sc->first] : NULL, c,
+                                             sc->count);
+        if (st == MTT_ERR_UNSUPPORTED && c != NULL && !MTT_WITH_MEAS_COV)
+            continue; /* a build without a covariance per detection refuses them */
         if (st != MTT_OK)
             FUZZ_FAIL("fuzz_detections", "scan %zu: mtt_tracker_step returned %d", k, (int)st);
     }

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS };
+enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS, COL_RXX = N_COLS, COL_RXY, COL_RYY, N_COLS_COV };
 
 #ifdef MTT_REAL_FIXED
 #define MTT_IO_SATURATES 1 /* out of the format: saturated, skipped by the tracker */
@@ -33,7 +33,7 @@ static int in_range(int col, double v, double *lo, double *hi)
     return mtt_io_to_real(v, MTT_IO_POS, &r) && r >= -MTT_FX_POS_LIMIT && r <= MTT_FX_POS_LIMIT;
 }
 #endif
-static const char *const det_cols[N_COLS] = {"scan", "time", "x", "y", "amplitude"};
+static const char *const det_cols[N_COLS_COV] = {"scan", "time", "x", "y", "amplitude", "r_xx", "r_xy", "r_yy"};
 
 /* Report a field that failed to parse; always MTT_IO_EINPUT. */
 static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *what)
@@ -59,11 +59,12 @@ static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *
 }
 
 /* Parse a finite number into mtt_real of format fmt (mtt_io_to_real).
- * In the fixed-point build a coordinate or amplitude outside its format
- * is not an error of the file: it takes the saturation value, which the
- * tracker skips and counts in meas_bad like a NaN in float
- * (docs/FIXED_POINT.md §3); only the time must fit.  Float and double: a
- * value that overflows mtt_real is an error. */
+ * In the fixed-point build a coordinate or amplitude outside the build's
+ * range (in_range; out_of_range not NULL) is an error naming the line,
+ * the value and the range, or with MTT_IO_SKIP_OUT_OF_RANGE counted in
+ * *out_of_range and kept saturated, which the tracker skips and counts in
+ * meas_out_of_range (docs/FIXED_POINT.md §3); only the time must fit.
+ * Float and double: a value that overflows mtt_real is an error. */
 static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r,
                       unsigned flags, size_t *out_of_range)
 {
@@ -142,34 +143,79 @@ static void *grow(void *p, size_t *cap, size_t elem)
 void mtt_io_free_detections(mtt_io_detections *d)
 {
     free(d->meas);
+    free(d->cov);
     free(d->scans);
     memset(d, 0, sizeof *d);
 }
 
+/* A row's covariance columns (ALGORITHMS.md §3.1): all three empty (the
+ * settings' meas_sigma), or a finite positive definite r_xx, r_xy, r_yy. */
+static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
+{
+    double v[3];
+    int k, rc, n_empty = 0;
+    for (k = 0; k < 3; ++k)
+        n_empty += c->fields[COL_RXX + k][0] == '\0';
+    memset(r, 0, sizeof *r);
+    if (n_empty == 3)
+        return MTT_IO_OK;
+    if (empty_row) {
+        mtt_io_error_at(c->path, c->line, "r_xx", "must be empty on an empty-scan row (x and y empty)");
+        return MTT_IO_EINPUT;
+    }
+    for (k = 0; k < 3; ++k) {
+        mtt_real dummy;
+        if (c->fields[COL_RXX + k][0] == '\0') {
+            mtt_io_error_at(c->path, c->line, det_cols[COL_RXX + k],
+                            "missing value: r_xx, r_xy and r_yy are given together or all left empty");
+            return MTT_IO_EINPUT;
+        }
+        if ((rc = field_real(c, COL_RXX + k, MTT_IO_POS, &v[k], &dummy, 0u, NULL)) != MTT_IO_OK)
+            return rc;
+    }
+    if (!(v[0] > 0.0) || !(v[2] > 0.0)) {
+        k = v[0] > 0.0 ? COL_RYY : COL_RXX;
+        mtt_io_error_at(c->path, c->line, det_cols[k], "'%s' must be > 0 (a variance)", c->fields[k]);
+        return MTT_IO_EINPUT;
+    }
+    if (!(v[0] * v[2] > v[1] * v[1])) {
+        mtt_io_error_at(c->path, c->line, "r_xy",
+                        "'%s' makes the covariance not positive definite (r_xy^2 must be < r_xx r_yy)",
+                        c->fields[COL_RXY]);
+        return MTT_IO_EINPUT;
+    }
+    r->r_xx = (mtt_real)v[0];
+    r->r_xy = (mtt_real)v[1];
+    r->r_yy = (mtt_real)v[2];
+    return MTT_IO_OK;
+}
+
 /* Validate and store one data row. */
-static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empty_row,
+static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empty_row, int ncols,
                    unsigned flags)
 {
     unsigned long scan;
     double time, x = 0, y = 0, amp = 0;
     mtt_meas m;
+    mtt_meas_cov r;
     mtt_real rtime;
     mtt_io_num e;
     int empty, rc;
     size_t oor = 0;
     char t0[32], t1[32];
+    const char *header = ncols == N_COLS ? "scan,time,x,y,amplitude" : "scan,time,x,y,amplitude,r_xx,r_xy,r_yy";
     mtt_io_scan *prev = d->n_scans != 0 ? &d->scans[d->n_scans - 1] : NULL;
 
-    if (c->n_fields < N_COLS) {
+    if (c->n_fields < (size_t)ncols) {
         mtt_io_error_at(c->path, c->line, det_cols[c->n_fields],
-                        "missing: the row has %lu fields, expected %d (scan,time,x,y,amplitude)",
-                        (unsigned long)c->n_fields, N_COLS);
+                        "missing: the row has %lu fields, expected %d (%s)",
+                        (unsigned long)c->n_fields, ncols, header);
         return MTT_IO_EINPUT;
     }
-    if (c->n_fields > N_COLS) {
+    if (c->n_fields > (size_t)ncols) {
         mtt_io_error_at(c->path, c->line, NULL,
-                        "the row has %lu fields, expected %d (scan,time,x,y,amplitude)",
-                        (unsigned long)c->n_fields, N_COLS);
+                        "the row has %lu fields, expected %d (%s)",
+                        (unsigned long)c->n_fields, ncols, header);
         return MTT_IO_EINPUT;
     }
 
@@ -210,6 +256,9 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             m.has_amplitude = 1;
         }
     }
+    memset(&r, 0, sizeof r);
+    if (ncols == N_COLS_COV && (rc = cov_fields(c, empty, &r)) != MTT_IO_OK)
+        return rc;
 
     if (prev != NULL && scan == prev->scan) {
         if (time != prev->time) {
@@ -282,11 +331,22 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
         return MTT_IO_OK;
     }
     if (d->n_meas == d->cap_meas) {
-        mtt_meas *p = grow(d->meas, &d->cap_meas, sizeof *p);
+        size_t cap = d->cap_meas;
+        mtt_meas *p = grow(d->meas, &cap, sizeof *p);
         if (p == NULL)
             goto oom;
         d->meas = p;
+        if (ncols == N_COLS_COV) {
+            size_t cap2 = d->cap_meas;
+            mtt_meas_cov *q = grow(d->cov, &cap2, sizeof *q);
+            if (q == NULL)
+                goto oom;
+            d->cov = q;
+        }
+        d->cap_meas = cap;
     }
+    if (ncols == N_COLS_COV)
+        d->cov[d->n_meas] = r;
     d->meas[d->n_meas++] = m;
     d->out_of_range += oor;
     prev->count++;
@@ -304,7 +364,7 @@ int mtt_io_read_detections(const char *path, mtt_io_detections *d)
 int mtt_io_read_detections_opt(const char *path, mtt_io_detections *d, unsigned flags)
 {
     mtt_io_csv c;
-    int rc, got, scan_has_empty_row = 0;
+    int rc, got, scan_has_empty_row = 0, ncols = N_COLS;
 
     memset(d, 0, sizeof *d);
     if ((rc = mtt_io_csv_open(&c, path)) != MTT_IO_OK)
@@ -316,12 +376,15 @@ int mtt_io_read_detections_opt(const char *path, mtt_io_detections *d, unsigned 
         rc = MTT_IO_EINPUT;
         goto done;
     }
-    if ((rc = mtt_io_csv_expect_header(&c, det_cols, N_COLS)) != MTT_IO_OK)
+    /* the header names the form: with r_xx,r_xy,r_yy every row has them */
+    if (c.n_fields > N_COLS && strcmp(c.fields[N_COLS], "r_xx") == 0)
+        ncols = N_COLS_COV;
+    if ((rc = mtt_io_csv_expect_header(&c, det_cols, (size_t)ncols)) != MTT_IO_OK)
         goto done;
     for (;;) {
         if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK || !got)
             break;
-        if ((rc = det_row(d, &c, &scan_has_empty_row, flags)) != MTT_IO_OK)
+        if ((rc = det_row(d, &c, &scan_has_empty_row, ncols, flags)) != MTT_IO_OK)
             break;
     }
 done:

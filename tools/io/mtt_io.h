@@ -185,6 +185,8 @@ typedef struct mtt_io_scan {
 /** A whole detections file, validated. */
 typedef struct mtt_io_detections {
     mtt_meas *meas;      /**< all detections, file order */
+    mtt_meas_cov *cov;   /**< their covariances (header with r_xx,r_xy,r_yy; all 0 where a
+                              row leaves them empty), or NULL: the file has none */
     size_t n_meas, cap_meas;
     mtt_io_scan *scans;  /**< scans, file order */
     size_t n_scans, cap_scans;

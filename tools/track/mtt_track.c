@@ -401,8 +401,16 @@ static int run(const options *o)
 
     for (k = 0; k < det.n_scans; ++k) {
         const mtt_io_scan *sc = &det.scans[k];
-        st = mtt_tracker_step(trk, sc->rtime, sc->count != 0 ? &det.meas[sc->first] : NULL,
-                              sc->count);
+        st = mtt_tracker_step_cov(trk, sc->rtime, sc->count != 0 ? &det.meas[sc->first] : NULL,
+                                  (det.cov != NULL && sc->count != 0) ? &det.cov[sc->first] : NULL, sc->count);
+        if (st == MTT_ERR_UNSUPPORTED && det.cov != NULL) {
+            mtt_io_error_at(o->detections, sc->line, "r_xx",
+                            "scan %lu: a covariance per detection is not available here (a build without "
+                            "MTT_WITH_MEAS_COV, or split = true): leave r_xx,r_xy,r_yy empty or drop the columns",
+                            sc->scan);
+            rc = EXIT_INPUT;
+            goto done;
+        }
         if (st != MTT_OK) {
             mtt_io_error_at(o->detections, sc->line, NULL, "scan %lu: mtt_tracker_step failed: %s",
                             sc->scan, status_text(st));

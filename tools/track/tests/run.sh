@@ -333,6 +333,17 @@ det_negative_amplitude) det_fail det_negative_amplitude "3: field 'amplitude': '
 det_half_empty)         det_fail det_half_empty "3: field 'x': missing value" ;;
 det_field_count)        det_fail det_field_count "3: field 'amplitude': missing" ;;
 det_mixed_empty_scan)   det_fail det_mixed_empty_scan "4: field 'x': scan 1 has both" ;;
+det_cov_missing)        det_fail det_cov_missing "3: field 'r_yy': missing value" ;;
+det_cov_not_pd)         det_fail det_cov_not_pd "3: field 'r_xy': '5' makes the covariance not positive definite" ;;
+det_cov_field_count)    det_fail det_cov_field_count "3: field 'r_xx': missing" ;;
+valid_cov_empty)
+    # the covariance columns left empty: meas_sigma's, the tracks of valid.det.csv
+    run --config "$data/empty.json" --detections "$data/valid.det.csv" --tracks "$work/a.csv"
+    [ "$rc" -eq 0 ] || fail "exit code $rc on valid.det.csv"
+    run --config "$data/empty.json" --detections "$data/valid_cov_empty.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    cmp -s "$out" "$work/a.csv" || fail "tracks differ from valid.det.csv's"
+    ;;
 
 # ---- bad settings ------------------------------------------------------------
 cfg_missing_file)
