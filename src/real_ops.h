@@ -194,7 +194,7 @@ typedef int32_t mtt_pos;
  * double is clamped before the conversion, which is then always defined. */
 #define MTT_FX_CLAMPD_(v) (((v) > 2147483647.0) ? 2147483647.0 : (((v) < -2147483647.0) ? -2147483647.0 : (v)))
 #define MTT_FX_CONST_SAT(x, f)                                                                     \
-    ((int32_t)MTT_FX_CLAMPD_((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
+    ((int32_t)MTT_FX_CLAMPD_((x) * (double)((uint64_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
 #define MTT_CNT(n) ((int32_t)(n) * ((int32_t)1 << MTT_FX_CNT_FRAC))
 /* The declared density relative to itself: 1.  mtt_params_check refuses
  * a density that is not positive in this build (the estimated density of
@@ -217,6 +217,9 @@ typedef int32_t mtt_pos;
 #define MTT_MUL_PC(a, b) mtt_fx_mul((a), (b), MTT_FX_PROB_FRAC)
 #define MTT_MUL_CR(a, b) mtt_fx_mul((a), (b), MTT_FX_CNT_FRAC)
 #define MTT_DIV_CR(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC + MTT_FX_RATIO_FRAC - MTT_FX_CNT_FRAC)
+/* count / lambda V_G (Q MTT_FX_GATE_FRAC) -> ratio; MTT_GATE: a constant of lambda V_G */
+#define MTT_DIV_CG(a, b) mtt_fx_div((a), (b), MTT_FX_RATIO_FRAC + MTT_FX_GATE_FRAC - MTT_FX_CNT_FRAC)
+#define MTT_GATE(x) MTT_FX_CONST(x, MTT_FX_GATE_FRAC)
 /* round(x / 2^s), 0 < s < 32, ties away from zero: mtt_fx_mul(x, 1, s)'s
  * result by a shift (x is evaluated twice: a side-effect-free operand) */
 #define MTT_FX_RSHIFT(x, s)                                                                        \
@@ -273,8 +276,10 @@ typedef int32_t mtt_pos;
 /* "Finite" in a fixed format: not a saturated value (every kernel
  * saturates to MTT_FX_MIN / MTT_FX_MAX instead of wrapping). */
 #define mtt_isfinite(x) (((x) > MTT_FX_MIN) && ((x) < MTT_FX_MAX))
-/* A coordinate inside the declared range (docs/FIXED_POINT.md §3). */
+/* A coordinate inside the declared range (docs/FIXED_POINT.md §3); a
+ * detection outside it is counted apart from malformed ones. */
 #define MTT_POS_OK(x) (((x) >= -MTT_FX_POS_LIMIT) && ((x) <= MTT_FX_POS_LIMIT))
+#define MTT_MEAS_RANGE(c) (&(c)->meas_out_of_range)
 
 /* The tracker's boundary (tracker.c, track_table.c, initiate.c, merge.c;
  * docs/FIXED_POINT.md §3).  Time is a Q16 count of frames (T0) modulo
@@ -321,6 +326,8 @@ typedef mtt_real mtt_pos;
 #define MTT_MUL_PC(a, b) ((a) * (b))
 #define MTT_MUL_CR(a, b) ((a) * (b))
 #define MTT_DIV_CR(a, b) ((a) / (b))
+#define MTT_DIV_CG(a, b) ((a) / (b))
+#define MTT_GATE(x) MTT_R(x)
 #define MTT_CVT_P_C(x) (x)
 #define MTT_CVT_P_R(x) (x)
 #define MTT_CVT_R_P(x) (x)
@@ -351,6 +358,7 @@ typedef mtt_real mtt_pos;
  * libms lack: NaN fails x == x, and +-Inf fails the magnitude bound. */
 #define mtt_isfinite(x) (((x) == (x)) && (mtt_fabs(x) <= MTT_REAL_MAX))
 #define MTT_POS_OK(x) mtt_isfinite(x)
+#define MTT_MEAS_RANGE(c) (&(c)->meas_bad) /* NaN/Inf: malformed; nothing is out of range */
 
 #define MTT_TIME_OK(t) mtt_isfinite(t)
 #define MTT_TIME_AFTER(t, t0) ((t) > (t0))

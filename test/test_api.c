@@ -58,7 +58,14 @@ void test_overflow_without_amplitude_keeps_first(void)
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_bad);
 }
 
-/* (e) Bad data inside a valid call is skipped and counted. */
+/* (e) Bad data inside a valid call is skipped and counted: malformed in
+ * meas_bad, outside the build's range (fixed point: the four saturated or
+ * out-of-range values) in meas_out_of_range. */
+#ifdef MTT_REAL_FIXED
+#define N_MALFORMED 1u
+#else
+#define N_MALFORMED 5u
+#endif
 void test_bad_data_skipped_and_counted(void)
 {
     mtt_meas m[7];
@@ -68,7 +75,8 @@ void test_bad_data_skipped_and_counted(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(0.0), m, 7));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(7u, st.last.meas_in);
-    TEST_ASSERT_EQUAL_UINT32(5u, st.last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(N_MALFORMED, st.last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(5u - N_MALFORMED, st.last.meas_out_of_range);
     TEST_ASSERT_EQUAL_UINT32(0u, st.last.meas_dropped);
     /* Both good detections still pair with the next frame's one (within
      * vmax = 60 of it: 2.2 and 17.5 away): two births. */
@@ -76,7 +84,8 @@ void test_bad_data_skipped_and_counted(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), m, 1));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_UINT32(2u, st.last.births);
-    TEST_ASSERT_EQUAL_UINT32(5u, st.total.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(N_MALFORMED, st.total.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(5u - N_MALFORMED, st.total.meas_out_of_range);
 }
 
 /* (e) API misuse returns an error and changes nothing. */

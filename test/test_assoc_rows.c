@@ -144,7 +144,7 @@ static void test_tv5_rows(void)
         TV_CAND_IDX(&c[j]) = (uint16_t)j;
     }
     mtt_ihpda_prank(3, MTT_RATIO(3.0), prank);
-    mtt_ihpda_betas(MTT_P(0.9), MTT_P(0.99), MTT_RATIO(291.4001257 * LAMBDA), prank, c, 3, beta, L,
+    mtt_ihpda_betas(MTT_P(0.9), MTT_P(0.99), MTT_GATE(291.4001257 * LAMBDA), prank, c, 3, beta, L,
                     rank);
     for (j = 0; j < 3; ++j) {
         double tl, tb;

@@ -53,7 +53,7 @@ static double pos(mtt_pos v)
 {
     return ldexp((double)v, -MTT_FX_POS_FRAC);
 }
-static const double lam = (double)DENS / 1073741824.0; /* the declared density, quantised */
+static const double lam = (double)DENS / (double)((uint64_t)1 << MTT_FX_DENS_FRAC); /* the declared density, quantised */
 static double lam_or_1(void)
 {
     return lam;

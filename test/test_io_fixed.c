@@ -155,8 +155,10 @@ static void test_out_of_range_saturates(void)
 #endif
 }
 
-/* A detections file whose coordinates leave the declared range: read,
- * saturated (fixed) and then skipped and counted by measure.c. */
+/* A detections file whose coordinates leave the declared range: refused
+ * at its first such line (fixed), or with MTT_IO_SKIP_OUT_OF_RANGE read,
+ * saturated, counted, and then skipped and counted apart from malformed
+ * detections by measure.c. */
 static void test_detections_out_of_range_counted(void)
 {
     mtt_io_detections d;
@@ -170,7 +172,14 @@ static void test_detections_out_of_range_counted(void)
                                 "2,101.0,,,\n"
                                 "3,102.5,3,4,\n");
     mtt_io_progname = "test_io_fixed";
+#ifdef MTT_REAL_FIXED
+    TEST_ASSERT_EQUAL_INT(MTT_IO_EINPUT, mtt_io_read_detections(path, &d));
+#else
     TEST_ASSERT_EQUAL_INT(MTT_IO_OK, mtt_io_read_detections(path, &d));
+    TEST_ASSERT_EQUAL_UINT(0u, d.out_of_range);
+    mtt_io_free_detections(&d);
+#endif
+    TEST_ASSERT_EQUAL_INT(MTT_IO_OK, mtt_io_read_detections_opt(path, &d, MTT_IO_SKIP_OUT_OF_RANGE));
     TEST_ASSERT_EQUAL_UINT(6u, d.n_meas);
     TEST_ASSERT_EQUAL_UINT(3u, d.n_scans);
     TEST_ASSERT_TRUE(d.meas[0].x == MTT_POS(10.5) && d.meas[0].y == MTT_POS(-20.25));
@@ -186,12 +195,15 @@ static void test_detections_out_of_range_counted(void)
     TEST_ASSERT_EQUAL_INT32(163840, d.scans[2].rtime);
     mtt_measure_select(&trk, d.meas, NULL, d.scans[0].count);
     TEST_ASSERT_EQUAL_UINT(1u, tv_meas_count(&trk));
-    TEST_ASSERT_EQUAL_UINT32(4u, TV_STATS(&trk).last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT(4u, d.out_of_range);
+    TEST_ASSERT_EQUAL_UINT32(4u, TV_STATS(&trk).last.meas_out_of_range);
+    TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_bad);
 #else
     TEST_ASSERT_TRUE(d.meas[2].x == MTT_R(1e6));
     TEST_ASSERT_TRUE(d.scans[2].rtime == MTT_R(2.5));
     mtt_measure_select(&trk, d.meas, NULL, d.scans[0].count);
     TEST_ASSERT_EQUAL_UINT(5u, tv_meas_count(&trk));
+    TEST_ASSERT_EQUAL_UINT(0u, d.out_of_range);
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_bad);
 #endif
     mtt_io_free_detections(&d);

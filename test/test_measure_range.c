@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* test_measure_range.c - input that the build cannot represent is skipped
- * and counted in meas_bad, never wrapped or clamped into range (measure.c,
+ * and counted, never wrapped or clamped into range (measure.c,
  * ALGORITHMS.md §16; docs/FIXED_POINT.md §3).  Float and double: NaN and
- * Inf coordinates or amplitudes.  Fixed point: coordinates beyond the
- * declared +-MTT_FX_POS_LIMIT and saturated amplitudes (what the boundary
- * conversion makes of unrepresentable input). */
+ * Inf coordinates or amplitudes, malformed (meas_bad).  Fixed point:
+ * coordinates beyond the declared +-MTT_FX_POS_LIMIT and saturated
+ * amplitudes (what the boundary conversion makes of unrepresentable
+ * input), counted apart in meas_out_of_range.  A negative amplitude is
+ * malformed in every build. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -32,7 +34,7 @@ static void test_unrepresentable_skipped_and_counted(void)
     const mtt_real edge = MTT_REAL_MAX;
     const mtt_real sat = (mtt_real)NAN;
 #endif
-    mtt_meas in[8];
+    mtt_meas in[9];
     in[0] = sim_meas(MTT_POS(1.0), MTT_POS(2.0), MTT_ZERO, 0); /* kept */
     in[1] = sim_meas(big, MTT_POS(2.0), MTT_ZERO, 0);
     in[2] = sim_meas(MTT_POS(1.0), -big, MTT_ZERO, 0);
@@ -41,9 +43,16 @@ static void test_unrepresentable_skipped_and_counted(void)
     in[5] = sim_meas(MTT_POS(3.0), MTT_POS(4.0), -sat, 1);
     in[6] = sim_meas(sat, MTT_POS(4.0), MTT_ZERO, 0);
     in[7] = sim_meas(MTT_POS(-5.0), MTT_POS(6.0), MTT_ZERO, 1); /* kept: amplitude 0 */
-    mtt_measure_select(&trk, in, NULL, 8u);
+    in[8] = sim_meas(MTT_POS(7.0), MTT_POS(8.0), -MTT_AMP(1.0), 1); /* malformed */
+    mtt_measure_select(&trk, in, NULL, 9u);
     TEST_ASSERT_EQUAL_UINT(3u, tv_meas_count(&trk));
-    TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
+#ifdef MTT_REAL_FIXED
+    TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_out_of_range);
+#else
+    TEST_ASSERT_EQUAL_UINT32(6u, TV_STATS(&trk).last.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_out_of_range);
+#endif
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_dropped);
     /* stored in the canonical (x) order */
     TEST_ASSERT_EQUAL_UINT32(7u, tv_meas_src(&trk, 0));

@@ -307,11 +307,14 @@ typedef struct mtt_track_view {
     uint32_t parent;      /**< id of the track this one split off from, MTT_NO_PARENT if none */
 } mtt_track_view;
 
-/** Event counters (one frame, or cumulative). */
+/** Event counters (one frame, or cumulative).  Every field is a uint32_t
+ *  (mtt_tracker_step adds them as such); a new one goes at the end, and
+ *  sizeof(mtt_tracker) carries the change to mtt_tracker_init's check. */
 typedef struct mtt_counts {
     uint32_t frames;          /**< frames stepped */
     uint32_t meas_in;         /**< measurements passed in */
-    uint32_t meas_bad;        /**< skipped: NaN/Inf coordinate, negative/NaN/Inf amplitude */
+    uint32_t meas_bad;        /**< skipped: NaN/Inf coordinate, negative/NaN/Inf amplitude (malformed;
+                                   out of range: meas_out_of_range) */
     uint32_t meas_dropped;    /**< valid, but beyond MTT_MAX_MEAS (weakest dropped) */
     uint32_t pairs;           /**< gated pairs kept */
     uint32_t pairs_dropped;   /**< gated, but beyond MTT_MAX_PAIRS (least likely dropped) */
@@ -329,6 +332,9 @@ typedef struct mtt_counts {
                                    Cheap JPDA instead (per-track IPDA in jipda) */
     uint32_t splits;          /**< split = true: tracks split off a parent (decoupled, ALGORITHMS.md §14.3) */
     uint32_t split_dropped;   /**< split = true: split hypotheses dropped (split pool or track table full) */
+    uint32_t meas_out_of_range; /**< skipped: a value outside the build's range, not counted in
+                                     meas_bad (fixed point: a coordinate beyond +-MTT_FX_POS_LIMIT,
+                                     a saturated amplitude; always 0 in float and double) */
 } mtt_counts;
 
 /** Statistics: the last frame, the tracker's life, and per-stage cycles. */

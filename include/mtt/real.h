@@ -21,9 +21,9 @@
 #endif
 
 /* MTT_REAL_KIND: 1 float, 2 double, 3 fixed point with the declared
- * position and amplitude formats folded in (3 + 4 (MTT_FX_POS_FRAC + 32
- * MTT_FX_AMP_FRAC)): part of the configuration identity, so a caller
- * compiled with other declared units is refused like one with other bounds. */
+ * position, amplitude, variance and density formats folded in (below):
+ * part of the configuration identity, so a caller compiled with other
+ * declared units is refused like one with other bounds. */
 #if defined(MTT_REAL_FIXED)
 #include <stdint.h>
 
@@ -51,29 +51,59 @@ typedef int32_t mtt_real; /* a Q-format integer; its format is its quantity's */
 #error "MTT_FX_AMP_FRAC must lie in 0..30"
 #endif
 
-#define MTT_REAL_KIND (3 + 4 * (MTT_FX_POS_FRAC + 32 * MTT_FX_AMP_FRAC))
+/* Variance LSB 2^-MTT_FX_VAR_FRAC unit^2 at the API (R's sigma^2,
+ * process_psd, views, seeds; inside, covariances are block floating
+ * point), clutter density LSB 2^-MTT_FX_DENS_FRAC per unit^2: declared
+ * with the length unit (configs/firmware_fixed_radar.h). */
+#ifndef MTT_FX_VAR_FRAC
+#define MTT_FX_VAR_FRAC 16
+#endif
+#if MTT_FX_VAR_FRAC < 0 || MTT_FX_VAR_FRAC > 30
+#error "MTT_FX_VAR_FRAC must lie in 0..30"
+#endif
+#ifndef MTT_FX_DENS_FRAC
+#define MTT_FX_DENS_FRAC 30
+#endif
+#if MTT_FX_DENS_FRAC < 16 || MTT_FX_DENS_FRAC > 60
+#error "MTT_FX_DENS_FRAC must lie in 16..60"
+#endif
+
+/* lambda V_G, the expected clutter count of a gate (ALGORITHMS.md §4),
+ * LSB 2^-MTT_FX_GATE_FRAC: a track state's format, declared with the
+ * density (a radar's 1e-4 needs more than Q16's 16 bits). */
+#ifndef MTT_FX_GATE_FRAC
+#define MTT_FX_GATE_FRAC 16
+#endif
+#if MTT_FX_GATE_FRAC < 16 || MTT_FX_GATE_FRAC > 28
+#error "MTT_FX_GATE_FRAC must lie in 16..28"
+#endif
+
+/* The units folded in: 0 for the variance, density and gate terms at
+ * their defaults, so the default build's identity does not move. */
+#define MTT_REAL_KIND                                                                              \
+    (3 + 4 * (MTT_FX_POS_FRAC + 32 * MTT_FX_AMP_FRAC) +                                            \
+     4096 * ((MTT_FX_VAR_FRAC - 16) + 32 * (MTT_FX_DENS_FRAC - 30)) +                               \
+     8388608 * (MTT_FX_GATE_FRAC - 16))
 
 /* The formats of the quantities (docs/FIXED_POINT.md §3):
  *   probabilities, existence            Q30, [0, 2)
  *   likelihood ratios                   Q16, [0, 32768)
  *   squared Mahalanobis distances       Q24, [0, 128)
  *   counts                              Q24
- *   variances and their rates           Q16 (unit^2, per T0^3)
- *   clutter density per unit^2          Q30 (provisional)
+ *   variances and their rates           MTT_FX_VAR_FRAC (16: unit^2, per T0^3)
+ *   clutter density per unit^2          MTT_FX_DENS_FRAC (30)
  *   time                                Q16 frames (T0)
  *   positions, amplitudes               MTT_FX_POS_FRAC, MTT_FX_AMP_FRAC */
 #define MTT_FX_PROB_FRAC 30
 #define MTT_FX_RATIO_FRAC 16
 #define MTT_FX_D2_FRAC 24
 #define MTT_FX_CNT_FRAC 24
-#define MTT_FX_VAR_FRAC 16
-#define MTT_FX_DENS_FRAC 30
 #define MTT_FX_T_FRAC 16
 
 /* round(x 2^f) of a constant x: an arithmetic constant expression that the
  * compiler folds, so no double arithmetic reaches the image. */
 #define MTT_FX_CONST(x, f)                                                                         \
-    ((int32_t)((x) * (double)((int32_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
+    ((int32_t)((x) * (double)((uint64_t)1 << (f)) + (((x) < 0) ? -0.5 : 0.5)))
 /* "No bound" of the parameter table (mtt_param_info): saturates. */
 #define MTT_REAL_MAX 3.4028235e38
 #define MTT_P(x) MTT_FX_CONST(x, MTT_FX_PROB_FRAC)

@@ -55,7 +55,7 @@ typedef struct mtt_track_frame {
     mtt_real S[MTT_SYM_SLOTS];  /* innovation covariance s11, s12, s22 (fixed point: + exponent) */
     mtt_real Si[MTT_SYM_SLOTS]; /* its inverse */
     mtt_real det_s;
-    mtt_real vg;         /* gate area (ALGORITHMS.md §4) */
+    mtt_real vg;         /* gate area (ALGORITHMS.md §4; fixed point: lambda V_G, Q MTT_FX_GATE_FRAC) */
     mtt_real K[MTT_MAX_STATE][2]; /* Kalman gain */
     mtt_real lambda;     /* clutter density of this track: known, or estimate (ALGORITHMS.md §5.2) */
     uint16_t pair_first, pair_count;

@@ -425,7 +425,7 @@ static PyObject *tracker_table(CoreTracker *self, PyObject *unused)
     X(frames) X(meas_in) X(meas_bad) X(meas_dropped) X(pairs) X(pairs_dropped) X(gated_dropped)   \
     X(clusters) X(births) X(births_dropped) X(merges) X(merge_dropped) X(deletions)               \
     X(numeric_deletions) X(confirmations) X(assign_fallbacks) X(jpda_fallbacks) X(splits)         \
-    X(split_dropped)
+    X(split_dropped) X(meas_out_of_range)
 
 /* A field added to mtt_counts must be added to COUNT_FIELDS: this breaks the
  * build until it is (every field is a uint32_t). */

@@ -13,9 +13,9 @@
 /* ---- The gate's arithmetic in the fixed-point build (docs/FIXED_POINT.md
  * §4, step 5).  gamma and d^2 are Q24; S and det S are mantissas with the
  * exponents of mtt/real.h (MTT_SYM_E, MTT_DET_E); densities are held
- * relative to the declared clutter density lambda (Q30 per unit^2), so the
- * gate area is the ratio lambda V_G and the likelihood the ratio p / lambda
- * (both Q16). ---- */
+ * relative to the declared clutter density lambda (Q MTT_FX_DENS_FRAC per
+ * unit^2), so the gate area is lambda V_G, an expected count (Q
+ * MTT_FX_GATE_FRAC), and the likelihood the ratio p / lambda (Q16). ---- */
 
 /* Bit length of v > 0. */
 static int bits(uint32_t v)
@@ -39,12 +39,6 @@ static int32_t sqrt_det(int32_t det, const int32_t S[MTT_SYM_SLOTS], int *e)
     const int f = ((de & 1) != 0) ? 31 : 30; /* de - f even */
     *e = (de - f) / 2;
     return (int32_t)mtt_fx_sqrt((uint32_t)det, f);
-}
-
-/* A mantissa m > 0 at exponent e as a Q16 ratio (saturated, 0 below). */
-static int32_t ratio_at(int32_t m, int e)
-{
-    return mtt_fx_at(m, e, -MTT_FX_RATIO_FRAC);
 }
 
 /* pi 2^29 and 2 pi 2^29 */
@@ -99,7 +93,7 @@ mtt_ratio mtt_fx_gate_area_peak_c(const int32_t gc[4], int32_t det, const int32_
     if (gc[0] > 0) {
         m = mul_e(r, gc[0], &e1);
         /* lambda pi gamma sqrt(det S) */
-        area = ratio_at(m, e + e1 + gc[1]);
+        area = mtt_fx_at(m, e + e1 + gc[1], -MTT_FX_GATE_FRAC); /* saturated, 0 below */
     }
     if (peak != NULL && gc[2] > 0) {
         e1 = 0;

@@ -67,7 +67,7 @@ void mtt_ihpda_betas(mtt_prob pd, mtt_prob pg, mtt_ratio vg, const mtt_prob *pra
     const mtt_prob pdpg = MTT_MUL_PP(pd, pg);
     const mtt_real fm = MTT_CNT(m);
     const mtt_real pdpg_m = MTT_MUL_PC(pdpg, fm);                   /* count */
-    const mtt_ratio z = MULQ_RP(MTT_DIV_CR(fm, vg), pdpg);           /* PD PG m / V_G */
+    const mtt_ratio z = MULQ_RP(MTT_DIV_CG(fm, vg), pdpg);           /* PD PG m / V_G */
     const mtt_prob pr1 = (prank != NULL) ? MTT_ZERO : MTT_DIV_P(MTT_CNT(1), fm); /* P_r without ranks */
     uint16_t i;
     for (i = 0; i < m; ++i) {

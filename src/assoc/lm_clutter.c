@@ -23,7 +23,7 @@
 
 mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg)
 {
-    return MTT_DIV_CR(MTT_SUB(MTT_CNT(m), MTT_MUL_PC(MTT_MUL_PP(pd, pg), ex_pred)), vg);
+    return MTT_DIV_CG(MTT_SUB(MTT_CNT(m), MTT_MUL_PC(MTT_MUL_PP(pd, pg), ex_pred)), vg);
 }
 
 void mtt_clutter_frame(mtt_tracker *trk, int lm)

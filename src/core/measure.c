@@ -3,9 +3,10 @@
  * (ALGORITHMS.md §15, §16).
  *
  * A detection with a NaN/Inf coordinate, or a negative/NaN/Inf amplitude,
- * is skipped and counted; in the fixed-point build so is a coordinate
- * outside the declared range +-MTT_FX_POS_LIMIT or a saturated amplitude
- * (docs/FIXED_POINT.md §3: never wrapped).  Beyond MTT_MAX_MEAS the strongest stay: an
+ * is skipped and counted in meas_bad; in the fixed-point build one with a
+ * coordinate outside the declared range +-MTT_FX_POS_LIMIT or a saturated
+ * amplitude is skipped and counted apart, in meas_out_of_range
+ * (docs/FIXED_POINT.md §3: never wrapped, never silent).  Beyond MTT_MAX_MEAS the strongest stay: an
  * amplitude beats none, a larger amplitude a smaller, then the canonical
  * order below.  A heap of the kept input indices holds the weakest at its
  * root, so the cap costs O(n log MTT_MAX_MEAS).
@@ -114,20 +115,28 @@ static void sort_canonical(uint32_t *idx, uint32_t *tmp, uint32_t n, const frame
     }
 }
 
-static int meas_ok(const mtt_meas *m, const mtt_meas_cov *c)
+/* 0: valid; else the counter that skips it.  A float NaN/Inf fails
+ * MTT_POS_OK and mtt_isfinite too, and is malformed there (MTT_MEAS_RANGE). */
+static uint32_t *meas_skip(mtt_counts *n, const mtt_meas *m, const mtt_meas_cov *c)
 {
     if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y)) {
-        return 0;
+        return MTT_MEAS_RANGE(n);
     }
 #if MTT_WITH_MEAS_COV
     if (has_cov(c) && !(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy) &&
                         c->r_xx > MTT_ZERO && c->r_yy > MTT_ZERO && c->r_xx * c->r_yy > c->r_xy * c->r_xy)) {
-        return 0; /* not a covariance */
+        return &n->meas_bad; /* not a covariance */
     }
 #else
     (void)c;
 #endif
-    return !m->has_amplitude || (mtt_isfinite(m->amplitude) && m->amplitude >= MTT_ZERO);
+    if (!m->has_amplitude) {
+        return NULL;
+    }
+    if (!mtt_isfinite(m->amplitude)) {
+        return MTT_MEAS_RANGE(n);
+    }
+    return (m->amplitude >= MTT_ZERO) ? NULL : &n->meas_bad;
 }
 
 static void store_meas(mtt_mstore *s, const mtt_meas *m, const mtt_meas_cov *c, uint32_t src)
@@ -155,8 +164,9 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
     size_t i;
     uint32_t kept = 0, valid = 0;
     for (i = 0; i < n; ++i) {
-        if (!meas_ok(&meas[i], (cov != NULL) ? &cov[i] : NULL)) {
-            trk->stats.last.meas_bad++;
+        uint32_t *skip = meas_skip(&trk->stats.last, &meas[i], (cov != NULL) ? &cov[i] : NULL);
+        if (skip != NULL) {
+            ++*skip;
             continue;
         }
         ++valid;

@@ -4,11 +4,13 @@
 #
 #   ./tools/ci/dev.sh deps    install what the build needs (idempotent)
 #   ./tools/ci/dev.sh test    deps, then the workflows test-float, test-double,
-#                            test-float-small, test-imm-nosplit, test-fixed
+#                            test-float-small, test-imm-nosplit, test-fixed,
+#                            test-fixed-radar
 #                            (configure + build + ctest each; test-imm-nosplit:
 #                            the IMM without the split models, configs/imm_nosplit.h;
 #                            test-fixed: the stages converted to fixed point
-#                            so far, docs/FIXED_POINT.md),
+#                            so far, docs/FIXED_POINT.md; test-fixed-radar:
+#                            the same at a radar's scale, configs/firmware_fixed_radar.h),
 #                            then the Python package (python-package below),
 #                            then tools/ci/coverage.sh --check (gcov builds of
 #                            the default and the firmware configuration; prints
@@ -38,7 +40,7 @@ DEB_PACKAGES=(cmake ninja-build gcc pkg-config libcjson-dev dpkg-dev)
 PY_MODULES=(numpy scipy matplotlib pandas trackeval optuna distributed)  # import names
 PY_PIP=(numpy scipy matplotlib pandas trackeval optuna "dask[distributed]")  # what pip installs
 PY_DEBS=(python3-numpy python3-scipy python3-matplotlib python3-pandas python3-optuna python3-distributed)
-WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed)
+WORKFLOWS=(test-float test-double test-float-small test-imm-nosplit test-fixed test-fixed-radar)
 
 say() { printf 'dev.sh: %s\n' "$*"; }
 die() { printf 'dev.sh: error: %s\n' "$*" >&2; exit 1; }

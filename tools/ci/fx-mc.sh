@@ -16,6 +16,17 @@
 # fixed-point build has no contest variant).  Output under build/fx-mc/; the
 # table (Markdown) on stdout.  GOSPA goal: fixed within 3 % of float.
 # FX_MC_TABLE_ONLY=1 prints the table of the runs already under build/fx-mc/.
+#
+# FX_MC_SCALE=radar: the radar scale instead (docs/FIXED_POINT.md, "Scales"):
+# the fixed side is build/host-fixed-radar's mtt-track (the test-fixed-radar
+# workflow), the float side the same configuration in float
+# (configs/firmware_fixed_radar.h: default bounds, the firmware switches),
+# built into build/fx-float-radar; a SCENARIO may be a path under
+# scenarios/ (recorded/quickstart).  FX_MC_SET adds --set KEY=VALUE
+# settings to both sides (space-separated; the recorded scenes' IMM is not
+# in the fixed build: FX_MC_SET='tracker.process_psd=500 tracker.motion="cv"').
+# The fixed side runs without --skip-out-of-range, so a run that met a
+# detection outside the build's range fails and shows in "runs ok".
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -27,11 +38,21 @@ SCENARIOS=("$@")
 MODES=(lm-ihpda ihpda lm-ipda ipda)
 OUT="$ROOT/build/fx-mc"
 JOBS="${JOBS:-2}"
-declare -A BIN=([float]="$ROOT/build/fx-float/tools/track/mtt-track" [fixed]="$ROOT/build/host-fixed/tools/track/mtt-track")
-
-cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \
-  -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
-cmake --build "$ROOT/build/fx-float" -j2 --target mtt-track >/dev/null
+SET_ARGS=()
+for kv in ${FX_MC_SET:-}; do SET_ARGS+=(--set "$kv"); done
+if [[ "${FX_MC_SCALE:-default}" == radar ]]; then
+  OUT="$ROOT/build/fx-mc-radar"
+  declare -A BIN=([float]="$ROOT/build/fx-float-radar/tools/track/mtt-track"
+    [fixed]="$ROOT/build/host-fixed-radar/tools/track/mtt-track")
+  cmake --preset host-float -B "$ROOT/build/fx-float-radar" -DMTT_CONFIG_HEADER="$ROOT/configs/firmware_fixed_radar.h" \
+    -DMTT_BUILD_TESTS=OFF -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
+  cmake --build "$ROOT/build/fx-float-radar" -j2 --target mtt-track >/dev/null
+else
+  declare -A BIN=([float]="$ROOT/build/fx-float/tools/track/mtt-track" [fixed]="$ROOT/build/host-fixed/tools/track/mtt-track")
+  cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \
+    -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
+  cmake --build "$ROOT/build/fx-float" -j2 --target mtt-track >/dev/null
+fi
 mkdir -p "$OUT"
 for b in float fixed; do
   [[ -x "${BIN[$b]}" ]] || { echo "fx-mc: ${BIN[$b]} missing (build the host-$b preset)" >&2; exit 2; }
@@ -41,8 +62,9 @@ for scn in "${SCENARIOS[@]}"; do
     [[ -n "${FX_MC_TABLE_ONLY:-}" ]] && continue # the table of the runs already made
     echo "fx-mc: $scn $b ($RUNS runs)" >&2
     PYTHONPATH=python nice -n 10 python3 -m mtt_sim.mc --scenario "scenarios/$scn.json" --runs "$RUNS" \
-      --out "$OUT/$scn-$b" --mtt-track "${BIN[$b]}" --tracker mtt-track --assoc "${MODES[@]}" \
-      --set tracker.lm_ihpda_variant=s0 --no-plots --jobs "$JOBS" >/dev/null 2>"$OUT/$scn-$b.log"
+      --out "$OUT/${scn//\//_}-$b" --mtt-track "${BIN[$b]}" --tracker mtt-track --assoc "${MODES[@]}" \
+      --set tracker.lm_ihpda_variant=s0 "${SET_ARGS[@]}" --no-plots --jobs "$JOBS" >/dev/null \
+      2>"$OUT/${scn//\//_}-$b.log"
   done
 done
 
@@ -54,7 +76,7 @@ print(f"| scenario | mode | GOSPA float | GOSPA fixed | fixed/float | track frac
 print("|---|---|---|---|---|---|---|---|---|")
 worst = 0.0
 for scn in scns:
-    s = {b: json.load(open(f"{out}/{scn}-{b}/summary.json")) for b in ("float", "fixed")}
+    s = {b: json.load(open(f"{out}/{scn.replace('/', '_')}-{b}/summary.json")) for b in ("float", "fixed")}
     for mode in s["float"]["modes"]:
         t = {b: s[b]["results"][mode]["totals"] for b in s}
         ok = {b: s[b]["results"][mode]["runs_ok"] for b in s}

@@ -7,7 +7,12 @@
  * takes: scans in file order partition the detections, scan numbers never
  * decrease, times and tracker times strictly increase, every coordinate is
  * finite, every amplitude finite and >= 0; and stepping a default tracker
- * over the first scans returns MTT_OK every time (as mtt-track does). */
+ * over the first scans returns MTT_OK every time (as mtt-track does).
+ * The read with MTT_IO_SKIP_OUT_OF_RANGE (mtt-track --skip-out-of-range)
+ * accepts what the plain read accepts, the same detections, and where the
+ * plain read fails it succeeds only with detections out of range, each
+ * counted once by the reader and once by the tracker (meas_out_of_range;
+ * none in float and double, whose range is the format's). */
 #include "fuzz_io_common.h"
 
 #include <stdint.h>
@@ -34,12 +39,40 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    mtt_io_detections d;
+    mtt_io_detections d, ds;
     mtt_params p;
     const char *path = fuzz_io_file(data, size);
     size_t k, next = 0;
     int rc = mtt_io_read_detections(path, &d);
+    const int rc_skip = mtt_io_read_detections_opt(path, &ds, MTT_IO_SKIP_OUT_OF_RANGE);
+    mtt_stats st_all;
 
+    if (rc_skip == MTT_IO_OK) {
+        if (rc == MTT_IO_OK && (ds.n_meas != d.n_meas || ds.n_scans != d.n_scans || ds.out_of_range != 0))
+            FUZZ_FAIL("fuzz_detections", "the skipping read differs from the plain one (%zu, %zu)",
+                      ds.n_meas, ds.out_of_range);
+        if (rc != MTT_IO_OK && ds.out_of_range == 0)
+            FUZZ_FAIL("fuzz_detections", "the skipping read accepts a file the plain read refuses");
+#ifndef MTT_REAL_FIXED
+        if (ds.out_of_range != 0)
+            FUZZ_FAIL("fuzz_detections", "%zu detections out of range in float", ds.out_of_range);
+#endif
+        if (mtt_params_default(&p) != MTT_OK || mtt_tracker_init(&trk, &p) != MTT_OK)
+            abort();
+        for (k = 0; k < ds.n_scans && k < MAX_STEPPED_SCANS; ++k) {
+            const mtt_io_scan *sc = &ds.scans[k];
+            if (mtt_tracker_step(&trk, sc->rtime, sc->count != 0 ? &ds.meas[sc->first] : NULL,
+                                 sc->count) != MTT_OK)
+                break;
+        }
+        if (k == ds.n_scans && (mtt_tracker_stats(&trk, &st_all) != MTT_OK ||
+                                st_all.total.meas_out_of_range != (uint32_t)ds.out_of_range))
+            FUZZ_FAIL("fuzz_detections", "the tracker counted %u of %zu detections out of range",
+                      (unsigned)st_all.total.meas_out_of_range, ds.out_of_range);
+        mtt_io_free_detections(&ds);
+    } else if (rc == MTT_IO_OK) {
+        FUZZ_FAIL("fuzz_detections", "the skipping read refuses a file the plain read accepts");
+    }
     if (rc != MTT_IO_OK) {
         if (rc != MTT_IO_EINPUT)
             FUZZ_FAIL("fuzz_detections", "reader returned %d (not EINPUT) on bad input", rc);

@@ -206,6 +206,7 @@ static inline void mtt_check_add(mtt_counts *t, const mtt_counts *l)
     t->deletions += l->deletions;
     t->numeric_deletions += l->numeric_deletions;
     t->confirmations += l->confirmations;
+    t->meas_out_of_range += l->meas_out_of_range;
 }
 
 /* Verify the tracker after a successful step with n inputs of which
@@ -322,9 +323,16 @@ static inline int mtt_check_frame(mtt_check *c, const mtt_tracker *trk, size_t n
         MTT_CHECK_FAIL(c, "stats.last.frames = %u", (unsigned)st.last.frames);
     if (st.last.meas_in != (uint32_t)n)
         MTT_CHECK_FAIL(c, "stats.last.meas_in = %u, passed %zu", (unsigned)st.last.meas_in, n);
-    if (st.last.meas_bad != (uint32_t)n_bad)
-        MTT_CHECK_FAIL(c, "stats.last.meas_bad = %u, expected %zu", (unsigned)st.last.meas_bad,
-                       n_bad);
+    /* n_bad: malformed (meas_bad) or outside the build's range (meas_out_of_range,
+     * fixed point only) */
+    if (st.last.meas_bad + st.last.meas_out_of_range != (uint32_t)n_bad)
+        MTT_CHECK_FAIL(c, "stats.last.meas_bad + meas_out_of_range = %u + %u, expected %zu",
+                       (unsigned)st.last.meas_bad, (unsigned)st.last.meas_out_of_range, n_bad);
+#ifndef MTT_REAL_FIXED
+    if (st.last.meas_out_of_range != 0u)
+        MTT_CHECK_FAIL(c, "stats.last.meas_out_of_range = %u in float",
+                       (unsigned)st.last.meas_out_of_range);
+#endif
     if (st.last.meas_dropped != (uint32_t)(valid > MTT_MAX_MEAS ? valid - MTT_MAX_MEAS : 0))
         MTT_CHECK_FAIL(c, "stats.last.meas_dropped = %u with %zu valid measurements",
                        (unsigned)st.last.meas_dropped, valid);
@@ -368,6 +376,7 @@ static inline int mtt_check_frame(mtt_check *c, const mtt_tracker *trk, size_t n
         MTT_CHECK_SUM(deletions)
         MTT_CHECK_SUM(numeric_deletions)
         MTT_CHECK_SUM(confirmations)
+        MTT_CHECK_SUM(meas_out_of_range)
 #undef MTT_CHECK_SUM
     }
 

@@ -16,6 +16,23 @@ enum { COL_SCAN, COL_TIME, COL_X, COL_Y, COL_AMP, N_COLS, COL_RXX = N_COLS, COL_
 #else
 #define MTT_IO_SATURATES 0
 #endif
+
+#ifdef MTT_REAL_FIXED
+/* The build's range of a coordinate (col COL_X, COL_Y) or amplitude: what
+ * mtt_measure_select keeps (MTT_POS_OK, a finite amplitude). */
+static int in_range(int col, double v, double *lo, double *hi)
+{
+    mtt_real r;
+    if (col == COL_AMP) {
+        *lo = 0.0;
+        *hi = mtt_io_from_real(MTT_FX_MAX - 1, MTT_IO_AMP);
+        return v < 0.0 || mtt_io_to_real(v, MTT_IO_AMP, &r); /* negative: malformed (below) */
+    }
+    *hi = mtt_io_from_real(MTT_FX_POS_LIMIT, MTT_IO_POS);
+    *lo = -*hi;
+    return mtt_io_to_real(v, MTT_IO_POS, &r) && r >= -MTT_FX_POS_LIMIT && r <= MTT_FX_POS_LIMIT;
+}
+#endif
 static const char *const det_cols[N_COLS_COV] = {"scan", "time", "x", "y", "amplitude", "r_xx", "r_xy", "r_yy"};
 
 /* Report a field that failed to parse; always MTT_IO_EINPUT. */
@@ -42,12 +59,14 @@ static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *
 }
 
 /* Parse a finite number into mtt_real of format fmt (mtt_io_to_real).
- * In the fixed-point build a coordinate or amplitude outside its format
- * is not an error of the file: it takes the saturation value, which the
- * tracker skips and counts in meas_bad like a NaN in float
- * (docs/FIXED_POINT.md §3); only the time must fit.  Float and double: a
- * value that overflows mtt_real is an error. */
-static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r)
+ * In the fixed-point build a coordinate or amplitude outside the build's
+ * range (in_range; out_of_range not NULL) is an error naming the line,
+ * the value and the range, or with MTT_IO_SKIP_OUT_OF_RANGE counted in
+ * *out_of_range and kept saturated, which the tracker skips and counts in
+ * meas_out_of_range (docs/FIXED_POINT.md §3); only the time must fit.
+ * Float and double: a value that overflows mtt_real is an error. */
+static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real *r,
+                      unsigned flags, size_t *out_of_range)
 {
     mtt_io_num e = mtt_io_parse_double(c->fields[col], d);
     if (e != MTT_IO_NUM_OK)
@@ -55,6 +74,28 @@ static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real
 #ifdef MTT_REAL_FIXED
     if (col == COL_TIME)
         return MTT_IO_OK; /* only time - time0 is converted (below) */
+#endif
+#ifdef MTT_REAL_FIXED
+    {
+        double lo, hi;
+        char a[32], b[32];
+        if (out_of_range != NULL && !in_range(col, *d, &lo, &hi)) {
+            if ((flags & MTT_IO_SKIP_OUT_OF_RANGE) == 0u) {
+                mtt_io_format_double(lo, a, sizeof a);
+                mtt_io_format_double(hi, b, sizeof b);
+                mtt_io_error_at(c->path, c->line, det_cols[col],
+                                "'%s' is outside this build's range [%s, %s] (mtt_real="
+                                MTT_IO_REAL_NAME ", Q%d; --skip-out-of-range skips and counts "
+                                "such detections)",
+                                c->fields[col], a, b, fmt);
+                return MTT_IO_EINPUT;
+            }
+            ++*out_of_range; /* one per detection: the caller passes NULL after the first */
+        }
+    }
+#else
+    (void)flags;
+    (void)out_of_range;
 #endif
     if (!mtt_io_to_real(*d, fmt, r) && !MTT_IO_SATURATES) {
         mtt_io_error_at(c->path, c->line, det_cols[col],
@@ -129,7 +170,7 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
                             "missing value: r_xx, r_xy and r_yy are given together or all left empty");
             return MTT_IO_EINPUT;
         }
-        if ((rc = field_real(c, COL_RXX + k, MTT_IO_POS, &v[k], &dummy)) != MTT_IO_OK)
+        if ((rc = field_real(c, COL_RXX + k, MTT_IO_POS, &v[k], &dummy, 0u, NULL)) != MTT_IO_OK)
             return rc;
     }
     if (!(v[0] > 0.0) || !(v[2] > 0.0)) {
@@ -150,7 +191,8 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
 }
 
 /* Validate and store one data row. */
-static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empty_row, int ncols)
+static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empty_row, int ncols,
+                   unsigned flags)
 {
     unsigned long scan;
     double time, x = 0, y = 0, amp = 0;
@@ -159,6 +201,7 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     mtt_real rtime;
     mtt_io_num e;
     int empty, rc;
+    size_t oor = 0;
     char t0[32], t1[32];
     const char *header = ncols == N_COLS ? "scan,time,x,y,amplitude" : "scan,time,x,y,amplitude,r_xx,r_xy,r_yy";
     mtt_io_scan *prev = d->n_scans != 0 ? &d->scans[d->n_scans - 1] : NULL;
@@ -180,7 +223,7 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     if (e != MTT_IO_NUM_OK)
         return bad_number(c, COL_SCAN, e, "a non-negative integer");
     memset(&m, 0, sizeof m);
-    if ((rc = field_real(c, COL_TIME, MTT_IO_TIME, &time, &rtime)) != MTT_IO_OK)
+    if ((rc = field_real(c, COL_TIME, MTT_IO_TIME, &time, &rtime, flags, NULL)) != MTT_IO_OK)
         return rc;
     if (prev == NULL)
         d->time0 = time;
@@ -197,11 +240,13 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             return MTT_IO_EINPUT;
         }
     } else {
-        if ((rc = field_real(c, COL_X, MTT_IO_POS, &x, &m.x)) != MTT_IO_OK ||
-            (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y)) != MTT_IO_OK)
+        if ((rc = field_real(c, COL_X, MTT_IO_POS, &x, &m.x, flags, &oor)) != MTT_IO_OK ||
+            (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y, flags, oor != 0 ? NULL : &oor)) !=
+                MTT_IO_OK)
             return rc;
         if (c->fields[COL_AMP][0] != '\0') {
-            if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude)) != MTT_IO_OK)
+            if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude, flags,
+                                 oor != 0 ? NULL : &oor)) != MTT_IO_OK)
                 return rc;
             if (!(amp >= 0.0)) {
                 mtt_io_error_at(c->path, c->line, "amplitude", "'%s' is negative: must be >= 0",
@@ -303,6 +348,7 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     if (ncols == N_COLS_COV)
         d->cov[d->n_meas] = r;
     d->meas[d->n_meas++] = m;
+    d->out_of_range += oor;
     prev->count++;
     return MTT_IO_OK;
 oom:
@@ -311,6 +357,11 @@ oom:
 }
 
 int mtt_io_read_detections(const char *path, mtt_io_detections *d)
+{
+    return mtt_io_read_detections_opt(path, d, 0u);
+}
+
+int mtt_io_read_detections_opt(const char *path, mtt_io_detections *d, unsigned flags)
 {
     mtt_io_csv c;
     int rc, got, scan_has_empty_row = 0, ncols = N_COLS;
@@ -333,7 +384,7 @@ int mtt_io_read_detections(const char *path, mtt_io_detections *d)
     for (;;) {
         if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK || !got)
             break;
-        if ((rc = det_row(d, &c, &scan_has_empty_row, ncols)) != MTT_IO_OK)
+        if ((rc = det_row(d, &c, &scan_has_empty_row, ncols, flags)) != MTT_IO_OK)
             break;
     }
 done:

@@ -191,11 +191,22 @@ typedef struct mtt_io_detections {
     mtt_io_scan *scans;  /**< scans, file order */
     size_t n_scans, cap_scans;
     double time0;        /**< time of the first scan */
+    size_t out_of_range; /**< detections with a value outside the build's range, kept
+                              saturated (MTT_IO_SKIP_OUT_OF_RANGE; the tracker skips and
+                              counts them in meas_out_of_range) */
 } mtt_io_detections;
 
+/** mtt_io_read_detections_opt: a detection with a coordinate or amplitude
+ *  outside the build's range (fixed point: +-2^(30-MTT_FX_POS_FRAC), the
+ *  amplitude format) is read, saturated, and counted in out_of_range
+ *  instead of failing the read. */
+#define MTT_IO_SKIP_OUT_OF_RANGE 1u
+
 /** Read and validate a detections file (docs/FORMATS.md).  On failure nothing
- *  needs freeing. */
+ *  needs freeing.  A detection outside the build's range fails the read with
+ *  its line, value and the range (mtt_io_read_detections_opt with 0). */
 int mtt_io_read_detections(const char *path, mtt_io_detections *d);
+int mtt_io_read_detections_opt(const char *path, mtt_io_detections *d, unsigned flags);
 void mtt_io_free_detections(mtt_io_detections *d);
 
 /* ---- settings (*.json) ------------------------------------------------ */

@@ -25,9 +25,37 @@ static const char *const seed_keys[] = {"x", "y", "vx", "vy", "P"};
 
 #define KEY_MAX 160 /* longest key path in a message */
 #ifdef MTT_REAL_FIXED
+#include "core/params_table.h" /* MTT_FX_FRAC_<member>: private (src/) */
 #define MTT_IO_FIXED 1
 /* A value outside its row's Q format is refused too (docs/FIXED_POINT.md §3). */
 #define FIXED_NOTE " within its fixed-point format"
+
+/* Each REAL key's Q format, for the message that names the format's range. */
+typedef struct key_frac {
+    const char *key;
+    int frac;
+} key_frac;
+#define KF_REAL(key, member, count, lo, hi, flags, cross, tier, text) {key, MTT_FX_FRAC_##member},
+#define KF_FLAG(key, member, tier, text)
+#define KF_ENUM(key, member, type, n_names, names, tier, text)
+static const key_frac key_fracs[] = {MTT_PARAM_ROWS(KF_REAL, KF_FLAG, KF_ENUM)};
+#undef KF_REAL
+#undef KF_FLAG
+#undef KF_ENUM
+
+/* " (this build holds |v| < a, Q f)" for a REAL key, "" for another. */
+static void format_range(const char *key, char *buf, size_t size)
+{
+    size_t k;
+    buf[0] = '\0';
+    for (k = 0; k < sizeof key_fracs / sizeof key_fracs[0]; ++k) {
+        if (strcmp(key, key_fracs[k].key) == 0) {
+            const double a = mtt_io_from_real(MTT_FX_MAX, key_fracs[k].frac);
+            snprintf(buf, size, " (this build holds |v| < %.4g, Q%d)", a, key_fracs[k].frac);
+            return;
+        }
+    }
+}
 #else
 #define MTT_IO_FIXED 0
 #define FIXED_NOTE ""
@@ -296,11 +324,19 @@ static void values_text(const double *v, size_t n, void (*format_number)(double,
 static int report_range(const sctx *c, const mtt_param_info *info, const char *key,
                         const double *v)
 {
-    char sub[KEY_MAX + 32], range[96], val[64];
+    char sub[KEY_MAX + 32], range[256], val[64];
     double w[VALS_MAX];
     size_t e;
 
     range_text(info, range, sizeof range);
+#ifdef MTT_REAL_FIXED
+    {
+        char fr[128];
+        format_range(info->key, fr, sizeof fr);
+        strncat(range, FIXED_NOTE, sizeof range - strlen(range) - 1);
+        strncat(range, fr, sizeof range - strlen(range) - 1);
+    }
+#endif
     for (e = 0; e < info->count && info->count > 1 && info->type == MTT_PARAM_REAL; ++e) {
         mtt_params q = c->s->params;
         if (mtt_params_get(&q, info->key, w, info->count) != MTT_OK)
@@ -309,12 +345,12 @@ static int report_range(const sctx *c, const mtt_param_info *info, const char *k
         if (mtt_params_set(&q, info->key, w, info->count) != MTT_OK) {
             snprintf(sub, sizeof sub, "%s[%lu]", key, (unsigned long)e);
             format_bound(v[e], val, sizeof val);
-            mtt_io_error_key(c->file, sub, "must be %s" FIXED_NOTE ", found %s", range, val);
+            mtt_io_error_key(c->file, sub, "must be %s, found %s", range, val);
             return MTT_IO_EINPUT;
         }
     }
     values_text(v, info->count, format_bound, val, sizeof val);
-    mtt_io_error_key(c->file, key, "must be %s" FIXED_NOTE ", found %s", range,
+    mtt_io_error_key(c->file, key, "must be %s, found %s", range,
                      info->type == MTT_PARAM_MODELS ? "a model out of range" : val);
     return MTT_IO_EINPUT;
 }
@@ -542,8 +578,16 @@ static int seed_real(const sctx *c, const char *key, double v, int fmt, mtt_real
 {
     if (mtt_io_to_real(v, fmt, out))
         return MTT_IO_OK;
+#ifdef MTT_REAL_FIXED
+    {
+        mtt_io_error_key(c->file, key, "%g does not fit the tracker's real type (mtt_real="
+                         MTT_IO_REAL_NAME ": this build holds |v| < %.4g, Q%d)", v,
+                         mtt_io_from_real(MTT_FX_MAX, fmt), fmt);
+    }
+#else
     mtt_io_error_key(c->file, key, "%g does not fit the tracker's real type (mtt_real="
                      MTT_IO_REAL_NAME ")", v);
+#endif
     return MTT_IO_EINPUT;
 }
 

@@ -34,7 +34,7 @@
 
 static const char usage_text[] =
     "Usage: " PROG " --config SETTINGS.json --detections RUN.det.csv --tracks RUN.tracks.csv\n"
-    "                 [--tentative | --confirmed-only] [--stats]\n"
+    "                 [--tentative | --confirmed-only] [--stats] [--skip-out-of-range]\n"
     "       " PROG " --config SETTINGS.json --prepared-c PARAMS.h\n"
     "       " PROG " --help | --version | --list-settings\n"
     "\n"
@@ -53,6 +53,10 @@ static const char usage_text[] =
     "  --tentative         write tentative and confirmed tracks (the default)\n"
     "  --confirmed-only    write confirmed tracks only\n"
     "  --stats             print a summary of the tracker's counters to stderr\n"
+    "  --skip-out-of-range a detection outside this build's range (fixed point:\n"
+    "                      the position and amplitude formats) is skipped and\n"
+    "                      counted, the count printed on stderr; without it the\n"
+    "                      first one is an error naming its line, value and range\n"
     "  --help              print this help and exit\n"
     "  --version           print the version and exit\n"
     "  --list-settings     print the settings keys (key, type, range, default,\n"
@@ -76,7 +80,7 @@ static const char usage_text[] =
 
 typedef struct options {
     const char *config, *detections, *tracks, *prepared;
-    int tentative, confirmed_only, stats;
+    int tentative, confirmed_only, stats, skip_out_of_range;
 } options;
 
 /* ---- the temporary output, removed on failure or signal ---------------- */
@@ -169,6 +173,8 @@ static int parse_args(int argc, char **argv, options *o)
             o->confirmed_only = 1;
         } else if (strcmp(a, "--stats") == 0) {
             o->stats = 1;
+        } else if (strcmp(a, "--skip-out-of-range") == 0) {
+            o->skip_out_of_range = 1;
         } else if (a[0] == '-') {
             return usage_error("unknown option '%s'", a);
         } else {
@@ -180,7 +186,8 @@ static int parse_args(int argc, char **argv, options *o)
     if (o->config == NULL)
         return usage_error("missing option '%s'", "--config");
     if (o->prepared != NULL) {
-        if (o->detections != NULL || o->tracks != NULL || o->tentative || o->confirmed_only || o->stats)
+        if (o->detections != NULL || o->tracks != NULL || o->tentative || o->confirmed_only || o->stats ||
+            o->skip_out_of_range)
             return usage_error("--prepared-c takes --config only");
         return 0;
     }
@@ -331,6 +338,9 @@ static void print_stats(const mtt_tracker *trk, size_t scans, unsigned long rows
             "%s: stats: dropped: %" PRIu32 " pairs (MTT_MAX_PAIRS), %" PRIu32
             " gated (MTT_MAX_GATED), %" PRIu32 " merge candidates; %lu rows written\n",
             PROG, t->pairs_dropped, t->gated_dropped, t->merge_dropped, rows);
+    if (t->meas_out_of_range != 0) /* only with --skip-out-of-range; never in float */
+        fprintf(stderr, "%s: stats: %" PRIu32 " detections outside this build's range (skipped)\n",
+                PROG, t->meas_out_of_range);
 }
 
 static int run(const options *o)
@@ -347,7 +357,9 @@ static int run(const options *o)
     memset(&det, 0, sizeof det);
     if ((rc = mtt_io_read_settings(o->config, &settings)) != MTT_IO_OK)
         return rc;
-    if ((rc = mtt_io_read_detections(o->detections, &det)) != MTT_IO_OK)
+    if ((rc = mtt_io_read_detections_opt(o->detections, &det,
+                                          o->skip_out_of_range ? MTT_IO_SKIP_OUT_OF_RANGE : 0u)) !=
+        MTT_IO_OK)
         goto done;
     if ((rc = check_distinct(o)) != 0)
         goto done;
@@ -432,6 +444,15 @@ static int run(const options *o)
     g_tmp_live = 0;
     if (o->stats)
         print_stats(trk, det.n_scans, rows);
+    if (o->skip_out_of_range) {
+        mtt_stats s;
+        if (mtt_tracker_stats(trk, &s) == MTT_OK)
+            fprintf(stderr,
+                    "%s: %s: %lu detections outside this build's range skipped (%" PRIu32
+                    " counted by the tracker, meas_out_of_range)\n",
+                    PROG, o->detections, (unsigned long)det.out_of_range,
+                    s.total.meas_out_of_range);
+    }
     rc = 0;
 done:
     if (out != NULL)

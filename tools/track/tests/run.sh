@@ -308,6 +308,23 @@ det_extra_column)       det_fail det_extra_column "1: field 'snr': unexpected ex
 det_non_numeric)        det_fail det_non_numeric "3: field 'x': 'abc' is not a finite number" ;;
 det_nan)                det_fail det_nan "5: field 'y': 'nan' is not allowed" ;;
 det_inf)                det_fail det_inf "2: field 'amplitude': 'inf' is not allowed" ;;
+det_out_of_range)       expect_fail 2 "det_out_of_range.det.csv:11: field 'y': '-5e6' is outside this build's range [-" \
+                            "$data/valid.json" "$data/det_out_of_range.det.csv"
+                        stderr_has "--skip-out-of-range skips" ;;
+det_out_of_range_skip)
+    rm -f "$out"
+    run --config "$data/valid.json" --detections "$data/det_out_of_range.det.csv" --tracks "$out" \
+        --skip-out-of-range
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ -f "$out" ] || fail "no tracks file written"
+    one_line_stderr
+    stderr_has "det_out_of_range.det.csv: 1 detections outside this build's range skipped (1 counted by the tracker, meas_out_of_range)"
+    run --config "$data/valid.json" --detections "$data/det_out_of_range.det.csv" --tracks "$out" \
+        --skip-out-of-range --stats
+    [ "$rc" -eq 0 ] || fail "exit code $rc with --stats, expected 0"
+    stderr_has "stats: 1 detections outside this build's range (skipped)"
+    stderr_has " 0 bad (skipped)"
+    ;;
 det_trailing_garbage)   det_fail det_trailing_garbage "3: field 'x': '4.5e1x' is not" ;;
 det_decreasing_time)    det_fail det_decreasing_time "4: field 'time': '1.5' is not later" ;;
 det_scan_time_mismatch) det_fail det_scan_time_mismatch "4: field 'time': '1.25' differs" ;;
@@ -343,6 +360,9 @@ cfg_duplicate_key)      cfg_fail cfg_duplicate_key "key 'pd': given twice" ;;
 cfg_wrong_type)         cfg_fail cfg_wrong_type "key 'pd': must be a number, found a string" ;;
 cfg_wrong_type_bool)    cfg_fail cfg_wrong_type_bool "key 'initiate': must be true or false" ;;
 cfg_out_of_range)       cfg_fail cfg_out_of_range "key 'pd': must be in (0, 1], found 1.5" ;;
+cfg_fixed_format)       cfg_fail cfg_fixed_format "key 'clutter_density': must be >= 0 within its fixed-point format (this build holds |v| < "
+                        stderr_has ", Q"
+                        stderr_has "found 5" ;;
 cfg_sigma_out_of_range) cfg_fail cfg_sigma_out_of_range "key 'meas_sigma[1]': must be in [1e-9, 1e9], found -2" ;;
 cfg_array_length)       cfg_fail cfg_array_length "key 'meas_sigma': must be an array of 2 numbers" ;;
 cfg_bad_association)    cfg_fail cfg_bad_association "key 'association': unknown association 'lm-ihpdaa'" ;;

@@ -1,0 +1,229 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* test_fixed_radar.c - the fixed-point build at a radar's scale
+ * (configs/firmware_fixed_radar.h, preset host-fixed-radar;
+ * docs/FIXED_POINT.md §3, "Scales"): metres to +-500 km, variances from
+ * (1 m)^2 to (10 km)^2, a clutter density of 1.1e-9 per m^2, and the host's
+ * default bounds (a scan of 250 detections and 100 targets).  Built only
+ * with MTT_FIXED_SCALE radar: the vectors are in metres and seconds. */
+#include <math.h>
+#include <string.h>
+
+#include "mtt_internal.h"
+#include "sim.h"
+#include "unity.h"
+
+#if !defined(MTT_REAL_FIXED) || MTT_FX_POS_FRAC != 10 || MTT_FX_VAR_FRAC != 4 ||                  \
+    MTT_FX_DENS_FRAC != 42 || MTT_FX_GATE_FRAC != 24
+#error "test_fixed_radar.c is the radar scale's test (configs/firmware_fixed_radar.h)"
+#endif
+
+#define T_SCAN 4.0     /* s: the time unit T0 is the file's, 1 s */
+#define SIGMA 50.0     /* m */
+#define DENSITY 1.111111111111111e-9 /* per m^2: 100 false detections over 300 x 300 km */
+
+static mtt_tracker trk;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* A deterministic standard normal (Box-Muller on a 64-bit LCG). */
+static uint64_t rng = 12345u;
+static double unif(void)
+{
+    rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+    return ((double)(rng >> 11) + 0.5) / 9007199254740992.0;
+}
+static double gauss(void)
+{
+    return sqrt(-2.0 * log(unif())) * cos(6.283185307179586 * unif());
+}
+
+static mtt_real pos(double v)
+{
+    mtt_real r = 0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_fx_from_double(v, MTT_FX_POS_FRAC, &r));
+    return r;
+}
+static double pos_d(mtt_real r)
+{
+    return mtt_fx_to_double(r, MTT_FX_POS_FRAC);
+}
+
+static void radar_params(mtt_params *p, mtt_assoc mode)
+{
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(p));
+    p->association = mode;
+    p->motion = MTT_MOTION_CV;
+    p->process_psd = MTT_VAR(5.0);
+    p->meas_sigma[0] = MTT_POS(SIGMA);
+    p->meas_sigma[1] = MTT_POS(SIGMA);
+    p->pd = MTT_P(0.9);
+    p->clutter_density = MTT_DENS(DENSITY);
+    p->vmax = MTT_POS(350.0);
+}
+
+/* The declared ranges (mtt/real.h): +-1048576 m on a 1/1024 m LSB. */
+static void test_ranges_hold_the_radar(void)
+{
+    double v;
+    mtt_real r;
+    TEST_ASSERT_TRUE(MTT_POS(500000.0) < MTT_FX_POS_LIMIT && -MTT_POS(500000.0) > -MTT_FX_POS_LIMIT);
+    TEST_ASSERT_EQUAL_DOUBLE(1048576.0, pos_d(MTT_FX_POS_LIMIT));
+    TEST_ASSERT_EQUAL_DOUBLE(499999.9990234375, pos_d(pos(499999.999)));
+    /* velocity per frame: 1000 m/s in one 4-s frame */
+    TEST_ASSERT_TRUE(MTT_POS(4000.0) < MTT_FX_POS_LIMIT);
+    /* variances at the API: (1 m)^2 is 16 units, (10 km)^2 round-trips exactly */
+    TEST_ASSERT_EQUAL_INT32(16, MTT_VAR(1.0));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_fx_from_double(1e8, MTT_FX_VAR_FRAC, &r));
+    TEST_ASSERT_EQUAL_DOUBLE(1e8, mtt_fx_to_double(r, MTT_FX_VAR_FRAC));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_fx_from_double(1.3e8, MTT_FX_VAR_FRAC, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_fx_from_double(1.4e8, MTT_FX_VAR_FRAC, &r));
+    /* sigma 50 m squared by the tracker: 2500 m^2 exactly */
+    TEST_ASSERT_EQUAL_INT32(MTT_VAR(2500.0), MTT_VAR_OF(MTT_POS(SIGMA)));
+    /* the clutter density: 1.1e-9 per m^2 on 12 bits, within 2^-13 relative */
+    TEST_ASSERT_TRUE(MTT_DENS(DENSITY) >= 4096);
+    v = mtt_fx_to_double(MTT_DENS(DENSITY), MTT_FX_DENS_FRAC);
+    TEST_ASSERT_DOUBLE_WITHIN(DENSITY * ldexp(1.0, -13), DENSITY, v);
+    /* and 1e-12 .. 4e-4 per m^2 fit */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_fx_from_double(4e-4, MTT_FX_DENS_FRAC, &r));
+    TEST_ASSERT_TRUE(MTT_DENS(1e-12) >= 4);
+    /* bounds: a scan of 250 detections and 100 targets */
+    TEST_ASSERT_TRUE(MTT_MAX_MEAS >= 250 && MTT_MAX_TRACKS >= 100);
+}
+
+/* lambda V_G of a radar gate (sigma 50 m, gamma 9.21: about 1.3e-4
+ * expected false detections) on more than 11 bits of its format, where
+ * the default Q16 would leave it 9 units. */
+static void test_gate_area_resolved(void)
+{
+    int32_t S[MTT_SYM_SLOTS], det;
+    double want, got;
+    const mtt_d2 gamma = MTT_D2(9.21034);
+    /* S = diag(5000, 5000) m^2 as a block: mantissas 5000 2^16 at exponent -16 */
+    S[0] = 5000 * 65536;
+    S[1] = 0;
+    S[2] = 5000 * 65536;
+    MTT_SYM_E(S) = -16;
+    /* det S = 2.5e7 m^4 as a mantissa at 2 e(S) + 28 */
+    det = (int32_t)llround(ldexp(2.5e7, -(2 * MTT_SYM_E(S) + 28)));
+    want = 9.21034 * 3.141592653589793 * 5000.0 * mtt_fx_to_double(MTT_DENS(DENSITY), MTT_FX_DENS_FRAC);
+    got = mtt_fx_to_double(mtt_fx_gate_area(gamma, det, S, MTT_DENS(DENSITY)), MTT_FX_GATE_FRAC);
+    TEST_ASSERT_TRUE(want * ldexp(1.0, MTT_FX_GATE_FRAC) > 2048.0);
+    TEST_ASSERT_DOUBLE_WITHIN(want * 1e-3, want, got);
+}
+
+/* A seeded track holds (10 km)^2 and (1 m)^2 through the block exponent:
+ * the view gives both back (the view's variance format). */
+static void test_seed_variances_round_trip(void)
+{
+    mtt_params p;
+    mtt_track_view v;
+    mtt_real x[4], P[16];
+    uint32_t id;
+    memset(P, 0, sizeof P);
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    x[0] = pos(400000.0);
+    x[1] = pos(-300000.0);
+    x[2] = pos(800.0); /* 200 m/s in one 4-s frame */
+    x[3] = pos(0.0);
+    P[0] = MTT_VAR(1e8); /* row-major: the diagonal at 0, 5, 10, 15 */
+    P[5] = MTT_VAR(1e8);
+    P[10] = MTT_VAR(1.0);
+    P[15] = MTT_VAR(1.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, &id));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_EQUAL_DOUBLE(400000.0, pos_d(v.x[0]));
+    TEST_ASSERT_EQUAL_DOUBLE(-300000.0, pos_d(v.x[1]));
+    TEST_ASSERT_DOUBLE_WITHIN(1e8 * ldexp(1.0, -26), 1e8, mtt_fx_to_double(v.P[0][0], MTT_FX_VAR_FRAC));
+    /* (1 m)^2 beside (10 km)^2 in one block: 2^27 / 1e8 of a unit below the top, a few LSB */
+    TEST_ASSERT_DOUBLE_WITHIN(0.5, 1.0, mtt_fx_to_double(v.P[2][2], MTT_FX_VAR_FRAC));
+}
+
+/* One target at 400 km, 200 m/s, sigma 50 m, PD 1, one frame per 4 s:
+ * confirmed and tracked to a few sigma; nothing skipped or out of range.
+ * With a detection at 1100 km in every scan: counted out of range. */
+static void test_target_at_400_km_tracked(void)
+{
+    mtt_params p;
+    mtt_stats st;
+    mtt_track_view v;
+    mtt_meas m[2];
+    size_t n = 0;
+    int k;
+    double tx = 400000.0, ty = -300000.0;
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    for (k = 0; k < 30; ++k) {
+        tx += 200.0 * T_SCAN;
+        ty += 50.0 * T_SCAN;
+        m[0] = sim_meas(pos(tx + SIGMA * gauss()), pos(ty + SIGMA * gauss()), MTT_ZERO, 0);
+        m[1] = sim_meas(MTT_FX_POS_LIMIT + MTT_POS(51200.0), pos(0.0), MTT_ZERO, 0);
+        TEST_ASSERT_EQUAL_INT(MTT_OK,
+                              mtt_tracker_step(&trk, MTT_TIME((double)k * T_SCAN), m, 2));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(0u, st.total.meas_bad);
+    TEST_ASSERT_EQUAL_UINT32(30u, st.total.meas_out_of_range);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.total.numeric_deletions);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    TEST_ASSERT_EQUAL_UINT(1u, n);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_TRUE(v.confirmed);
+    TEST_ASSERT_DOUBLE_WITHIN(3.0 * SIGMA, tx, pos_d(v.x[0]));
+    TEST_ASSERT_DOUBLE_WITHIN(3.0 * SIGMA, ty, pos_d(v.x[1]));
+    TEST_ASSERT_DOUBLE_WITHIN(20.0, 200.0, pos_d(v.x[2]));
+    TEST_ASSERT_DOUBLE_WITHIN(20.0, 50.0, pos_d(v.x[3]));
+    /* the view's position variance: between (1 m)^2 and sigma^2 */
+    TEST_ASSERT_TRUE(v.P[0][0] > MTT_VAR(1.0) && v.P[0][0] < MTT_VAR(SIGMA * SIGMA));
+}
+
+/* 100 targets on a 20-km grid out to +-495 km, plus 150 false detections
+ * over the +-500 km box (density 1.5e-10 per m^2): a scan of 250, all
+ * kept, all 100 confirmed after 12 frames. */
+static void test_full_scan_fits(void)
+{
+    static mtt_meas m[250];
+    mtt_params p;
+    mtt_stats st;
+    size_t n = 0, i, conf = 0;
+    int k, t;
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.pd = MTT_P(0.95);
+    p.clutter_density = MTT_DENS(1.5e-10);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    for (k = 0; k < 12; ++k) {
+        for (t = 0; t < 100; ++t) {
+            const double x0 = -495000.0 + 110000.0 * (double)(t % 10);
+            const double y0 = -495000.0 + 110000.0 * (double)(t / 10);
+            m[t] = sim_meas(pos(x0 + 150.0 * T_SCAN * k + SIGMA * gauss()),
+                            pos(y0 - 100.0 * T_SCAN * k + SIGMA * gauss()), MTT_ZERO, 0);
+        }
+        for (t = 100; t < 250; ++t) {
+            m[t] = sim_meas(pos(-500000.0 + 1e6 * unif()), pos(-500000.0 + 1e6 * unif()), MTT_ZERO, 0);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME((double)k * T_SCAN), m, 250));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
+    TEST_ASSERT_EQUAL_UINT32(3000u, st.total.meas_in);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.total.meas_dropped + st.total.meas_bad + st.total.meas_out_of_range);
+    TEST_ASSERT_EQUAL_UINT32(0u, st.total.pairs_dropped + st.total.births_dropped);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    for (i = 0; i < n; ++i) {
+        mtt_track_view v;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, i, &v));
+        conf += v.confirmed ? 1u : 0u;
+    }
+    TEST_ASSERT_EQUAL_UINT(100u, conf);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_ranges_hold_the_radar);
+    RUN_TEST(test_gate_area_resolved);
+    RUN_TEST(test_seed_variances_round_trip);
+    RUN_TEST(test_target_at_400_km_tracked);
+    RUN_TEST(test_full_scan_fits);
+    return UNITY_END();
+}
