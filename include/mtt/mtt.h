@@ -100,7 +100,7 @@ typedef enum mtt_assoc {
 typedef enum mtt_motion {
     MTT_MOTION_CV = 0,  /**< one constant-velocity filter (ALGORITHMS.md §2) */
     MTT_MOTION_IMM = 1, /**< interacting multiple models imm_model[] (ALGORITHMS.md §14); needs MTT_WITH_IMM
-                             and lm-ihpda, ihpda, lm-ipda, ipda or jipda, else MTT_ERR_UNSUPPORTED */
+                             and an association other than ihpda-2d and lm-ipda-all, else MTT_ERR_UNSUPPORTED */
     MTT_MOTION_AUTO = 2 /**< the default: imm when the motion follows max_accel (process_psd 0) and the build
                              and the association mode have the IMM, else cv (ALGORITHMS.md §2.2) */
 } mtt_motion;

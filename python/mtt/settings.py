@@ -425,7 +425,7 @@ class _Reader:
         if st == _core.ERR_UNSUPPORTED and bad == "motion":
             assoc = self._row("association")
             _, a = self.core.get_param("association", 1)
-            self.fail(bad, "motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda, and a "
+            self.fail(bad, "motion = imm needs an association other than ihpda-2d and lm-ipda-all, and a "
                       f"build with MTT_WITH_IMM (association is {assoc.names[int(a[0])]})")
         if st == _core.ERR_UNSUPPORTED and bad == "split":
             _, m = self.core.get_param("motion", 1)

@@ -98,7 +98,8 @@ const char *const mtt_assoc_names[MTT_ASSOC_ROWS] = {
 
 /* One row per mode, in mtt_assoc order: association routine, LM
  * densities (2: over all tracks, §8.3), update kind, baseline, IMM (ALGORITHMS.md §14.2: the modes whose
- * event likelihoods are linear in each track's detection factors). */
+ * event likelihoods are linear in each track's detection factors: all but
+ * the 2-D assignment and lm-ipda-all's untruncated single-model terms). */
 const mtt_mode mtt_modes[MTT_ASSOC_ROWS] = {
     {MTT_ASSOCIATE_MMR, 1, ONE, 0, 1},
     {MTT_ASSOCIATE_SELECT, 0, ONE, 0, 1},
@@ -106,12 +107,12 @@ const mtt_mode mtt_modes[MTT_ASSOC_ROWS] = {
     {MTT_ASSOCIATE_IPDA, 0, PDA, 0, 1},
     {MTT_ASSOCIATE_ASSIGN_2D, 0, ONE, 1, 0},
     {MTT_ASSOCIATE_JIPDA, 0, PDA, 1, 1},
-    {MTT_ASSOCIATE_JPDA, 0, PDA, 1, 0},
-    {MTT_ASSOCIATE_CHEAP_JPDA, 0, PDA, 1, 0},
-    {MTT_ASSOCIATE_SUBOPT_JPDA, 0, PDA, 1, 0},
-    {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1, 0},
-    {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1, 0},
-    {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_JPDA, 0, PDA, 1, 1},
+    {MTT_ASSOCIATE_CHEAP_JPDA, 0, PDA, 1, 1},
+    {MTT_ASSOCIATE_SUBOPT_JPDA, 0, PDA, 1, 1},
+    {MTT_ASSOCIATE_NNJPDA, 0, HARD, 1, 1},
+    {MTT_ASSOCIATE_JPDA_STAR, 0, PDA, 1, 1},
+    {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 1},
 #if MTT_WITH_BASELINES
     {MTT_ASSOCIATE_IPDA, 2, PDA, 1, 0}, /* lm-ipda-all (§8.3) */
 #endif

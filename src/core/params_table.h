@@ -186,7 +186,7 @@ extern const char *const mtt_model_names[3];
     REAL("adaptive_jpda_shrink", adaptive_jpda_shrink, 1, 1.0, MTT_REAL_MAX, 0, NULL, BASELINE,                   \
          "adaptive JPDA: gate shrink factor n of overlapping tracks (§13.7)")                       \
     ENUM("motion", motion, mtt_motion, 3, mtt_motion_names, TUNING,                                        \
-         "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with lm-ihpda, ihpda, lm-ipda, ipda or jipda; `auto` (the default): imm when the motion follows max_accel (process_psd not given) and the build and the mode have it, else cv (§2.2)") \
+         "motion model: `cv` is one constant-velocity filter per track (§2); `imm` an interacting multiple model filter per track over imm_models (§14.1, §14.2), with every association but ihpda-2d and lm-ipda-all; `auto` (the default): imm when the motion follows max_accel (process_psd not given) and the build and the mode have it, else cv (§2.2)") \
     MTT_PARAM_IMM_ROWS(REAL, FLAG, ENUM)                                                          \
     FLAG("split", split, TUNING,                                                                           \
          "true: split-target detection of [S3], the \"just split\" and \"split\" models with the coupled update and decoupling into two tracks; needs motion imm with a cv model (§14.3)") \

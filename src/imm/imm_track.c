@@ -7,7 +7,7 @@
  * the track table.
  *
  * Why the association stages need no change: every association mode with
- * IMM (lm-ihpda, ihpda, lm-ipda, ipda, jipda) sees a track as one filter
+ * IMM (every mode but ihpda-2d and lm-ipda-all) sees a track as one filter
  * whose likelihood of measurement i is p*_i = Σ_j c̄_j p_i^j (one PD for
  * all models), ALGORITHMS.md §14.2.  The gate writes p* into pair.p, so
  * the LM weights, IHPDA selection, MMR and JIPDA events run unchanged; the
@@ -347,6 +347,20 @@ void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind)
         mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
         t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
         t->meas = -1;
+        return;
+    }
+    if (kind == MTT_UPDATE_HARD) {
+        /* NNJPDA (§13.5): every model takes the assigned measurement with
+         * beta 1, or keeps its prediction; existence of §13.2 either way */
+        if (tf->assigned < 0) {
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+            t->meas = -1;
+        } else {
+            beta[0] = MTT_R(1.0);
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(0.0));
+            t->meas = (int32_t)trk->meas[trk->pairs[tf->assigned].meas].src;
+        }
+        t->existence = tf->ex_post;
         return;
     }
     for (j = 0; j < tf->pair_count; ++j) {

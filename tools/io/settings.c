@@ -797,8 +797,8 @@ static int check_params(const sctx *c)
         }
         name_list(list, sizeof list, info, 1);
         if (strcmp(bad, "motion") == 0) {
-            mtt_io_error_key(c->file, bad, "motion = imm needs association lm-ihpda, ihpda, lm-ipda, "
-                             "ipda or jipda, and a build with MTT_WITH_IMM (association is %s)",
+            mtt_io_error_key(c->file, bad, "motion = imm needs an association other than ihpda-2d and "
+                             "lm-ipda-all, and a build with MTT_WITH_IMM (association is %s)",
                              mtt_params_info(0, &info) == MTT_OK
                                  ? info->names[(size_t)c->s->params.association] : "?");
             return MTT_IO_EINPUT;

@@ -381,7 +381,7 @@ cfg_seed_missing_member) cfg_fail cfg_seed_missing_member "key 'initial_tracks[1
 cfg_seed_bad_cov)
     cfg_fail cfg_seed_bad_cov "key 'initial_tracks[0].P': must be a symmetric positive definite"
     ;;
-cfg_imm_unsupported)    cfg_fail cfg_imm_unsupported "key 'motion': motion = imm needs association lm-ihpda, ihpda, lm-ipda, ipda or jipda" ;;
+cfg_imm_unsupported)    cfg_fail cfg_imm_unsupported "key 'motion': motion = imm needs an association other than ihpda-2d and lm-ipda-all" ;;
 cfg_imm_transition_size) cfg_fail cfg_imm_transition_size "key 'imm_transition': must be r rows of r (r models), each row summing to 1 (with 2 models in imm_models)" ;;
 cfg_imm_bad_model)      cfg_fail cfg_imm_bad_model "key 'imm_models[0].model': unknown model 'cj' (expected one of: cv, ca, ct)" ;;
 cfg_imm_valid)          imm_ok cfg_imm_valid 2 ;;
