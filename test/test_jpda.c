@@ -2,7 +2,9 @@
 /* test_jpda.c - the JPDA family on TV13 (ALGORITHMS.md §13): Cheap JPDA raw and
  * normalised, Suboptimal JPDA (N, D, both B choices), exact JPDA (8 events
  * and their weights), NNJPDA, the 2x2 JPDA* case, JIPDA, the N x N claim
- * checks, the event counts, and the counted fallbacks. */
+ * checks, the event counts, and the counted fallbacks; TV13b: the gate
+ * shrink of adaptive JPDA (§13.7) in jpda-vg, adaptive-jpda-star,
+ * adaptive-nnjpda and adaptive-jpda, one tracker step against plain jpda. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -380,6 +382,96 @@ static void test_event_bound_fallback(void)
     TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.jpda_fallbacks);
 }
 
+/* TV13b: one step of the tracker (the first frame: no prediction) with
+ * three seeded tracks, P = I, S = 2 I; T1 and T2 overlap, T3 does not.  The
+ * gate-shrink modes gate T1 and T2 with gamma / 3 (T1 loses z1 and z5);
+ * each row: x, P diagonal (position), P[0][1]; NNJPDA also the measurement. */
+typedef struct {
+    mtt_assoc mode;
+    double x[3][2], p[3][3];
+    int32_t meas[3];
+} tv13b_row;
+
+static const tv13b_row tv13b[5] = {
+    {MTT_ASSOC_JPDA,
+     {{0.1026787467, 0.13826745}, {2.899862848, 0.2168495777}, {50.4358588, 0.1992402551}},
+     {{1.129417612, 0.7234655845, -0.01251444907}, {1.062714506, 0.7151994054, 0.07523455396},
+      {0.6624824234, 0.5169854573, -0.03703055431}},
+     {-2, -2, -2}},
+    {MTT_ASSOC_JPDA_VG,
+     {{0.2690088809, 0.2637888296}, {2.923225434, 0.225235214}, {50.4358588, 0.1992402551}},
+     {{0.9551560841, 0.614009952, -0.2151481373}, {1.065590812, 0.7218413691, 0.07436360612},
+      {0.6624824234, 0.5169854573, -0.03703055431}},
+     {-2, -2, -2}},
+    {MTT_ASSOC_ADAPTIVE_JPDA_STAR,
+     {{0.1988043957, 0.304264213}, {3.014818035, 0.2336059331}, {50.4358588, 0.1992402551}},
+     {{0.9565699717, 0.6103320249, -0.210704499}, {1.044728253, 0.7458237434, 0.07497966477},
+      {0.6624824234, 0.5169854573, -0.03703055431}},
+     {-2, -2, -2}},
+    {MTT_ASSOC_ADAPTIVE_NNJPDA,
+     {{0.6, 0.15}, {2.4, -0.1}, {50.25, 0.25}},
+     {{0.5, 0.5, 0.0}, {0.5, 0.5, 0.0}, {0.5, 0.5, 0.0}},
+     {2, 3, 6}},
+    {MTT_ASSOC_ADAPTIVE_JPDA,
+     {{0.4112503596, 0.1887289929}, {2.69088149, 0.1806637621}, {50.4358588, 0.1992402551}},
+     {{0.9107918971, 0.6039926946, -0.2046459813}, {1.010649919, 0.6582892564, 0.0706733375},
+      {0.6624824234, 0.5169854573, -0.03703055431}},
+     {-2, -2, -2}},
+};
+
+static void test_tv13b_gate_shrink(void)
+{
+    static const double zx[8] = {-2.2, -1.5, 1.2, 1.8, 3.5, 5.2, 50.5, 52.5};
+    static const double zy[8] = {-1.5, 1.5, 0.3, -0.2, 2.2, 0.0, 0.5, 0.0};
+    static const double x0[3] = {0.0, 3.0, 50.0};
+    mtt_meas z[8];
+    mtt_real P[16];
+    int r, t, j;
+    memset(z, 0, sizeof z);
+    for (j = 0; j < 8; ++j) {
+        z[j].x = (mtt_real)zx[j];
+        z[j].y = (mtt_real)zy[j];
+    }
+    for (j = 0; j < 16; ++j) {
+        P[j] = (j % 5 == 0) ? MTT_R(1.0) : MTT_R(0.0);
+    }
+    for (r = 0; r < 5; ++r) {
+        const tv13b_row *e = &tv13b[r];
+        mtt_params p;
+        mtt_track_view v;
+        const char *name = NULL;
+        char w[64];
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_assoc_name(e->mode, &name));
+        p.association = e->mode;
+        p.pd = MTT_R(0.9);
+        p.pg = MTT_R(0.99);
+        p.clutter_density = MTT_R(0.01);
+        p.meas_sigma[0] = p.meas_sigma[1] = MTT_R(1.0);
+        p.initiate = 0;
+        p.merge_threshold = MTT_R(0.0);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+        for (t = 0; t < 3; ++t) {
+            const mtt_real x[4] = {(mtt_real)x0[t], MTT_R(0.0), MTT_R(0.0), MTT_R(0.0)};
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&trk, x, P, NULL));
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_R(0.0), z, 8));
+        for (t = 0; t < 3; ++t) {
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, (size_t)t, &v));
+            snprintf(w, sizeof w, "TV13b %s T%d", name, t + 1);
+            tv_assert_real(e->x[t][0], (double)v.x[0], w, __LINE__);
+            tv_assert_real(e->x[t][1], (double)v.x[1], w, __LINE__);
+            tv_assert_real(e->p[t][0], (double)v.P[0][0], w, __LINE__);
+            tv_assert_real(e->p[t][1], (double)v.P[1][1], w, __LINE__);
+            tv_assert_real(e->p[t][2], (double)v.P[0][1], w, __LINE__);
+            tv_assert_real(1.0, (double)v.existence, w, __LINE__);
+            if (e->meas[t] != -2) {
+                TEST_ASSERT_EQUAL_INT32_MESSAGE(e->meas[t], v.meas, w); /* NNJPDA's assignment */
+            }
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -398,6 +490,7 @@ int main(void)
     RUN_TEST(test_tv13_claims_n_by_n);
     RUN_TEST(test_tv13_event_counts);
     RUN_TEST(test_event_bound_fallback);
+    RUN_TEST(test_tv13b_gate_shrink);
     return UNITY_END();
 }
 

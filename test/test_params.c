@@ -283,12 +283,12 @@ static void test_assoc_names_round_trip(void)
     static const char *const names[MTT_ASSOC_COUNT] = {
         "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
         "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
-        "lm-ipda-all"}; /* docs/FORMATS.md */
+        "lm-ipda-all", "jpda-vg", "adaptive-nnjpda", "adaptive-jpda-star"}; /* docs/FORMATS.md */
     int a;
     for (a = 0; a < (int)MTT_ASSOC_COUNT; ++a) {
         const char *name = NULL;
         mtt_assoc back = (mtt_assoc)-1;
-        if (a >= MTT_ASSOC_ROWS) { /* lm-ipda-all without the baselines: unknown */
+        if (a >= MTT_ASSOC_ROWS) { /* the last four without the baselines: unknown */
             TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_assoc_name((mtt_assoc)a, &name));
             TEST_ASSERT_EQUAL_INT(MTT_ERR_RANGE, mtt_assoc_parse(names[a], &back));
             continue;

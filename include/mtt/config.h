@@ -65,7 +65,7 @@
 #define MTT_MAX_ASSIGN_TRACKS 16
 #endif
 
-/* Exact JPDA enumeration (jpda, jipda, nnjpda, jpda-star, adaptive-jpda,
+/* Exact JPDA enumeration (jpda, jipda, nnjpda, jpda-star and the §13.7 modes,
  * ALGORITHMS.md §13.1, §16): tracks and measurements of one cluster, and feasible
  * joint events.  Beyond any of them the cluster falls back (counted in the
  * stats): to Cheap JPDA, or to per-track IPDA in jipda. */

@@ -92,7 +92,12 @@ typedef enum mtt_assoc {
     MTT_ASSOC_JPDA_STAR,    /**< JPDA* with optional pruning (ALGORITHMS.md §13.6) */
     MTT_ASSOC_ADAPTIVE_JPDA,/**< adaptive JPDA: gate shrink and equal split for overlapping tracks (ALGORITHMS.md §13.7) */
     MTT_ASSOC_LM_IPDA_ALL,  /**< lm-ipda with the LM density over all tracks, [S4]'s LM-IPDAF (ALGORITHMS.md §8.3);
-                                 a build with MTT_WITH_BASELINES=0 does not know it (MTT_ERR_PARAM, MTT_ERR_RANGE) */
+                                 a build with MTT_WITH_BASELINES=0 does not know it (MTT_ERR_PARAM, MTT_ERR_RANGE),
+                                 nor the next three */
+    MTT_ASSOC_JPDA_VG,      /**< exact JPDA with adaptive JPDA's gate shrink ([S1]'s "JPDA (VG change)", ALGORITHMS.md §13.7);
+                                 over the bounds Cheap JPDA (counts.jpda_fallbacks) */
+    MTT_ASSOC_ADAPTIVE_NNJPDA,   /**< NNJPDA with adaptive JPDA's gate shrink (ALGORITHMS.md §13.7) */
+    MTT_ASSOC_ADAPTIVE_JPDA_STAR,/**< JPDA* with adaptive JPDA's gate shrink (ALGORITHMS.md §13.7) */
     MTT_ASSOC_COUNT
 } mtt_assoc;
 

@@ -22,6 +22,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 MODES = ("lm-ihpda", "ihpda", "lm-ipda", "ipda", "lm-ipda-all")
+# The JPDA family modes the reference models (§13.1, §13.5, §13.6, §13.7):
+# name -> (the betas, the §13.7 gate shrink, the §13.7 equal share).
+JPDA_MODES = {
+    "jpda": ("exact", False, False), "nnjpda": ("nn", False, False), "jpda-star": ("star", False, False),
+    "adaptive-jpda": ("exact", True, True), "jpda-vg": ("exact", True, False),
+    "adaptive-nnjpda": ("nn", True, False), "adaptive-jpda-star": ("star", True, False),
+}
 
 # Compile-time bounds of the default configuration (include/mtt/config.h).
 MAX_TRACKS = 128
@@ -29,6 +36,9 @@ MAX_MEAS = 256
 MAX_GATED = 32
 MAX_PAIRS = 1024
 MAX_MERGE_PAIRS = 2 * MAX_TRACKS
+MAX_JPDA_TRACKS = 8       # exact JPDA per cluster (§16); beyond: Cheap JPDA (§13.1)
+MAX_JPDA_MEAS = 32
+MAX_JPDA_EVENTS = 2048
 
 TIE_REL = 1e-9
 
@@ -55,9 +65,12 @@ class Params:
     intensity_f1: tuple = (-0.0007, 0.5072, 39.70)
     intensity_f2: tuple = (-0.0001, 0.2097, 57.25)
     intensity_blend: tuple = (150.0, 250.0)
+    adaptive_jpda_distance: float = 9.0
+    adaptive_jpda_shrink: float = 3.0
+    nnjpda_threshold: float = 0.0
 
     def check(self):
-        if self.association not in MODES:
+        if self.association not in MODES and self.association not in JPDA_MODES:
             raise ValueError(f"association {self.association!r} is not modelled by mtt_ref")
         if not 0.0 < self.pd <= 1.0 or not 0.0 < self.pg < 1.0:
             raise ValueError("pd / pg out of range")
@@ -199,9 +212,24 @@ class Tracker:
                 tr.age += 1              # SPEC GAP: "frames since birth" counts predictions
             tr.fr.update(xp=xp, Pp=Pp, ep=ep)
 
+        # --- §13.7 rules 1 and 2: overlapping tracks gate with gamma / n -----
+        jp = JPDA_MODES.get(p.association)
+        if jp is not None and jp[1]:
+            dmax = p.adaptive_jpda_distance * max(p.meas_sigma)
+            for tr in self.tracks:
+                tr.fr["shrink"] = False
+            for a_i, a in enumerate(self.tracks):
+                for b in self.tracks[a_i + 1:]:
+                    d = math.hypot(*(a.fr["xp"][:2] - b.fr["xp"][:2]))
+                    self._tie(f"overlap {a.id},{b.id}", d, dmax)
+                    if d <= dmax:
+                        a.fr["shrink"] = b.fr["shrink"] = True
+            self.events["gate shrink"] += sum(tr.fr["shrink"] for tr in self.tracks)
+
         # --- 2. gate (§4), with the MTT_MAX_GATED cap (§7.2) -----------------
         for tr in self.tracks:
             f = tr.fr
+            gamma = self.gamma / p.adaptive_jpda_shrink if f.get("shrink") else self.gamma
             S = f["Pp"][:2, :2] + self.R
             s11, s12, s22 = S[0, 0], 0.5 * (S[0, 1] + S[1, 0]), S[1, 1]
             det = s11 * s22 - s12 * s12
@@ -210,16 +238,16 @@ class Tracker:
                 continue
             Si = np.array([[s22, -s12], [-s12, s11]]) / det
             f["S"], f["Si"], f["det"] = S, Si, det
-            f["VG"] = math.pi * self.gamma * math.sqrt(det)
+            f["VG"] = math.pi * gamma * math.sqrt(det)
             f["K"] = f["Pp"] @ self.H.T @ Si
             gated = []
             NU = Z - f["xp"][:2]
             D2 = np.einsum("ji,ik,jk->j", NU, Si, NU)
-            for j in np.flatnonzero(D2 <= self.gamma * (1.0 + 2.0 * TIE_REL)):
+            for j in np.flatnonzero(D2 <= gamma * (1.0 + 2.0 * TIE_REL)):
                 j = int(j)
                 d2 = float(NU[j] @ Si @ NU[j])
-                self._tie(f"gate d2 track {tr.id} meas {j}", d2, self.gamma)
-                if d2 <= self.gamma:
+                self._tie(f"gate d2 track {tr.id} meas {j}", d2, gamma)
+                if d2 <= gamma:
                     gated.append((d2, j))
             if len(gated) > MAX_GATED:
                 self.events["gate cap"] += 1
@@ -364,6 +392,8 @@ class Tracker:
                     if f["G"]:
                         self.events["gate taken by others (m = 0)"] += 1
                     self._update(tr, 1.0 - p.pd * p.pg, [], 1.0)
+        elif jp is not None:                    # the JPDA family (§13)
+            self._jpda_frame(live, cluster, jp, used, ms)
         else:                                   # lm-ipda, ipda, lm-ipda-all (§6)
             for tr in live:
                 f = tr.fr
@@ -539,6 +569,168 @@ class Tracker:
                 if j in u.fr["G"]:
                     rows.pop(u.id, None)
         return assigned
+
+    def _jpda_frame(self, live, cluster, jp, used, ms):
+        """§13: per cluster the betas of the mode, existence by §6 (§13.2 CHOICE), update §13.8."""
+        p = self.par
+        kind, _, share = jp
+        pdpg = p.pd * p.pg
+        groups = {}
+        for tr in live:
+            groups.setdefault(cluster[tr.id], []).append(tr)
+        for trs in groups.values():
+            if len(trs) == 1 and not trs[0].fr["G"]:
+                rows = {trs[0].id: (1.0, {})}          # empty gate: the m = 0 update
+            else:
+                rows = self._jpda_rows(trs, kind)
+            if share:
+                self._share(trs, rows)
+            assigned = self._nn_assign(trs, rows) if kind == "nn" else None
+            for tr in trs:
+                f = tr.fr
+                L = 1.0 - pdpg + pdpg * sum(f["p"][j] / f["lam"] for j in f["G"])
+                beta0, beta = rows[tr.id]
+                if assigned is not None:
+                    j = assigned.get(tr.id)
+                    if j is None:
+                        self._update(tr, L, [], 1.0)
+                    else:
+                        self._update(tr, L, [(j, 1.0)], 0.0)
+                        tr.meas = ms[j][3]
+                        used[j] = True
+                    continue
+                for j in f["G"]:
+                    used[j] = True
+                if not f["G"]:
+                    self._update(tr, L, [], 1.0)
+                    continue
+                betas = [(j, beta[j]) for j in f["G"]]
+                self._update(tr, L, betas, beta0)
+                jb = max(betas, key=lambda q: (q[1], -q[0]))   # §6 "Reported measurement"
+                for j, b in betas:
+                    if j != jb[0]:
+                        self._tie(f"jpda meas track {tr.id}", b, jb[1])
+                tr.meas = ms[jb[0]][3]
+
+    def _jpda_rows(self, trs, kind):
+        """{track id: (beta_0, {j: beta_j})} of one cluster: exact JPDA (§13.1) or JPDA*
+        (§13.6) by enumeration, or Cheap JPDA normalised past the bounds (§13.1 CHOICE)."""
+        p = self.par
+        A = {tr.id: {j: p.pg * tr.fr["p"][j] for j in tr.fr["G"]} for tr in trs}   # N(nu; 0, S)
+        B = {tr.id: tr.fr["lam"] * (1.0 - p.pd * p.pg) / p.pd for tr in trs}
+        A0, B0 = dict(A), dict(B)
+        # each row over its largest entry: the same probabilities, no underflow
+        for tr in trs:
+            big = max([B[tr.id]] + list(A[tr.id].values()))
+            big = big if big > 0.0 else 1.0
+            B[tr.id] /= big
+            A[tr.id] = {j: a / big for j, a in A[tr.id].items()}
+        n_meas = len({j for tr in trs for j in tr.fr["G"]})
+        events = []
+
+        class Over(Exception):
+            pass
+
+        def walk(k, used, combo, w):
+            if k == len(trs):
+                if len(events) >= MAX_JPDA_EVENTS:
+                    raise Over
+                events.append((tuple(combo), w))
+                return
+            tr = trs[k]
+            walk(k + 1, used, combo + [None], w * B[tr.id])        # "none" first
+            for j in tr.fr["G"]:                                    # then ascending
+                if j not in used:
+                    walk(k + 1, used | {j}, combo + [j], w * A[tr.id][j])
+        try:
+            if len(trs) > MAX_JPDA_TRACKS or n_meas > MAX_JPDA_MEAS:
+                raise Over
+            walk(0, frozenset(), [], 1.0)
+        except Over:
+            self.events["jpda fallback (Cheap JPDA)"] += 1
+            return self._cheap(trs, A0, B0)
+        if kind == "star":
+            best = {}
+            for combo, w in events:
+                key = (tuple(c is not None for c in combo), frozenset(c for c in combo if c is not None))
+                if key in best:
+                    self._tie("jpda-star group", w, best[key][1])
+                if key not in best or w > best[key][1]:
+                    best[key] = (combo, w)
+            if len(best) < len(events):
+                self.events["jpda-star pruned"] += 1
+            events = list(best.values())
+        W = sum(w for _, w in events)
+        rows = {}
+        for k, tr in enumerate(trs):
+            if not W > 0.0:
+                rows[tr.id] = (1.0, {j: 0.0 for j in tr.fr["G"]})
+                continue
+            beta = {j: 0.0 for j in tr.fr["G"]}
+            b0 = 0.0
+            for combo, w in events:
+                if combo[k] is None:
+                    b0 += w
+                else:
+                    beta[combo[k]] += w
+            rows[tr.id] = (b0 / W, {j: b / W for j, b in beta.items()})
+        return rows
+
+    def _cheap(self, trs, A, B):
+        """Cheap JPDA (§13.3), rows normalised."""
+        Mj = {}
+        for tr in trs:
+            for j, a in A[tr.id].items():
+                Mj[j] = Mj.get(j, 0.0) + a
+        rows = {}
+        for tr in trs:
+            T = sum(A[tr.id].values())
+            if not tr.fr["G"]:
+                rows[tr.id] = (1.0, {})
+                continue
+            b0 = B[tr.id] / (T + B[tr.id])
+            beta = {j: a / (T + Mj[j] - a + B[tr.id]) for j, a in A[tr.id].items()}
+            tot = b0 + sum(beta.values())
+            rows[tr.id] = (b0 / tot, {j: b / tot for j, b in beta.items()}) if tot > 0.0 else (b0, beta)
+        return rows
+
+    def _share(self, trs, rows):
+        """§13.7 rule 3: beta = 1/N_c(j) for a measurement gated by N_c >= 2 overlapping tracks."""
+        for tr in trs:
+            if not tr.fr.get("shrink"):
+                continue
+            b0, beta = rows[tr.id]
+            shared = False
+            for j in tr.fr["G"]:
+                nc = sum(1 for s in trs if s.fr.get("shrink") and j in s.fr["G"])
+                if nc >= 2:
+                    beta[j] = 1.0 / nc
+                    shared = True
+            if not shared:
+                continue
+            tot = sum(beta.values())
+            if tot > 1.0:
+                rows[tr.id] = (0.0, {j: b / tot for j, b in beta.items()})
+            else:
+                rows[tr.id] = (1.0 - tot, beta)
+            self.events["adaptive equal share"] += 1
+
+    def _nn_assign(self, trs, rows):
+        """§13.5: static MMR on the betas (beta >= nnjpda_threshold and > 0); ties: the lower
+        track, then the lower measurement.  Returns {track id: measurement}."""
+        thr = self.par.nnjpda_threshold
+        cands = [(b, tr, j) for tr in trs for j, b in rows[tr.id][1].items() if b >= thr and b > 0.0]
+        assigned, taken = {}, set()
+        while True:
+            live = [c for c in cands if c[1].id not in assigned and c[2] not in taken]
+            if not live:
+                return assigned
+            best = max(live, key=lambda c: (c[0], -c[1].id, -c[2]))
+            for c in live:
+                if c is not best:
+                    self._tie(f"nnjpda argmax ({best[1].id},{best[2]}) vs ({c[1].id},{c[2]})", best[0], c[0])
+            assigned[best[1].id] = best[2]
+            taken.add(best[2])
 
     def _update(self, tr, L, betas, beta0):
         """Existence (§6 L form, §7.4) and the PDA / single-measurement state update (§6, §7.4)."""

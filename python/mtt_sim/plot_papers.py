@@ -18,8 +18,8 @@ between two modes at one scan.
 rates: coalescence-or-switch rate per mode, one bar per LABEL=SUMMARY
 argument (an mc.py summary.json of a seeded scenario), modes in the order of
 the first summary; [S1] Table 5's rates as black diamonds on the modes
-they correspond to (jpda, nnjpda, jpda-star, adaptive-jpda), the variants the
-library does not have in a note.
+they correspond to (jpda, jpda-vg, nnjpda, adaptive-nnjpda, jpda-star,
+adaptive-jpda-star, adaptive-jpda).
 """
 import argparse
 import json
@@ -34,7 +34,8 @@ S4_TIMES = [52, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70]
 S4_LMIPDAF = [1238, 1351, 1366, 1386, 1400, 1417, 1427, 1435, 1445, 1456, 1459, 1466, 1471, 1473]
 S4_STAR = [v + 1 for v in S4_LMIPDAF]  # LM-IPDAF* is higher by exactly 1 at every listed time
 # [S1] Table 5, coalescence-and-switch probability (%)
-S1_RATES = {"jpda": 36.0, "nnjpda": 47.4, "jpda-star": 13.0, "adaptive-jpda": 5.1}
+S1_RATES = {"jpda": 36.0, "jpda-vg": 20.6, "nnjpda": 47.4, "adaptive-nnjpda": 12.8, "jpda-star": 13.0,
+            "adaptive-jpda-star": 8.0, "adaptive-jpda": 5.1}
 S1_OTHER = [("JPDA, gate changed", 20.6), ("adaptive NNJPDA", 12.8), ("adaptive JPDA*", 8.0)]
 
 

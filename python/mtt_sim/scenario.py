@@ -56,7 +56,7 @@ TRACKER_KEYS = {
 ASSOC_MODES = (
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
     "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
-    "lm-ipda-all",
+    "lm-ipda-all", "jpda-vg", "adaptive-nnjpda", "adaptive-jpda-star",
 )
 
 # docs/FORMATS.md defaults that the harness itself needs (plots, gates).

@@ -10,7 +10,9 @@ existence within REL = 1e-9 relative, with an absolute floor (see close()).
 Scenes: N_RANDOM random small scenes (1-6 targets, 3-30 frames, clutter,
 random valid parameters, random seeded tracks; deterministic seeds), the
 regression cases of test/differential/cases/, and a few full scenarios made
-by the simulation package's generator from scenarios/*.json.
+by the simulation package's generator from scenarios/*.json.  The JPDA
+family (mtt_ref.tracker.JPDA_MODES: [S1]'s variants, §13) has its own rows:
+N_JPDA random scenes, the mode taken in turn, and coalesce3 and crossing3.
 
 A scene in which the reference took a decision on two numbers closer than
 1e-9 relative (mtt_ref.tracker TIE_REL: a gate or threshold test, an argmax)
@@ -24,7 +26,8 @@ Run:  ctest --preset host-double -R differential
       python3 -m unittest -v python/tests/test_differential.py
   or  PYTHONPATH=python python3 python/tests/test_differential.py [-v]
       (finds the driver under build/host-double)
-Environment: MTT_DIFF_SCENES (default 2000) random scenes; MTT_DIFF_KEEP=DIR
+Environment: MTT_DIFF_SCENES (default 2000) random scenes, MTT_DIFF_JPDA_SCENES
+(default 350) those of the JPDA family; MTT_DIFF_KEEP=DIR
 writes every failing scene there.
 """
 
@@ -47,6 +50,9 @@ from mtt_ref import Scene, parse_driver_output, read_scene, two_point_cov, write
 
 REL = 1e-9
 N_RANDOM = int(os.environ.get("MTT_DIFF_SCENES", "2000"))
+N_JPDA = int(os.environ.get("MTT_DIFF_JPDA_SCENES", "350"))
+# The JPDA-family rows, in turn: [S1]'s gate-shrink variants first (§13.7).
+JPDA_ROWS = ("jpda-vg", "adaptive-nnjpda", "adaptive-jpda-star", "jpda", "nnjpda", "jpda-star", "adaptive-jpda")
 CASES_DIR = os.path.join(ROOT, "test", "differential", "cases")
 
 # EXPECTED TO FAIL: scenes known to disagree because of a bug in the C library:
@@ -507,6 +513,23 @@ class Differential(unittest.TestCase):
             for name in filter(None, cases.split(", ")):
                 self.assertTrue(os.path.exists(os.path.join(CASES_DIR, name)), name)
 
+    def test_jpda_family(self):
+        """The JPDA family: the random scenes with the association replaced, each mode in turn."""
+        def scenes():
+            for s in range(N_JPDA):
+                sc = random_scene(s)
+                sc.params["association"] = JPDA_ROWS[s % len(JPDA_ROWS)]
+                yield f"jpda-{s}-{sc.params['association']}", sc
+        events = Counter()
+        n, failures, tie_fail = self._run_many("jpda family", scenes(), events)
+        self.assertGreaterEqual(n, N_JPDA)
+        if N_JPDA >= 300:
+            for path in ["scene " + m for m in JPDA_ROWS] + ["gate shrink", "adaptive equal share",
+                                                               "jpda-star pruned", "jpda fallback (Cheap JPDA)"]:
+                self.assertGreaterEqual(events[path], 10, path)
+        self.assertLessEqual(len(tie_fail), max(1, n // 100), "too many tie-sensitive disagreements")
+        self.assertEqual(failures, [])
+
     def test_scenarios(self):
         runs = [(scn, seed) for scn in ("crossing3", "coalesce3", "formations", "split") for seed in (0, 1)]
         scenes = []
@@ -514,8 +537,11 @@ class Differential(unittest.TestCase):
             for scn, seed in runs:
                 for mode in ("lm-ihpda", "lm-ipda", "lm-ipda-all"):
                     scenes.append((f"{scn}-s{seed}-{mode}", scenario_scene(scn, seed, mode, tmp)))
+            for scn in ("coalesce3", "crossing3"):             # [S1]'s gate-shrink variants
+                for mode in JPDA_ROWS[:3]:
+                    scenes.append((f"{scn}-s0-{mode}", scenario_scene(scn, 0, mode, tmp)))
         n, failures, tie_fail = self._run_many("scenarios", scenes, Counter())
-        self.assertEqual(n, 3 * len(runs))
+        self.assertEqual(n, 3 * len(runs) + 6)
         self.assertEqual(failures + tie_fail, [])
 
 

@@ -48,11 +48,12 @@ static void jpda_cluster(mtt_tracker *trk, uint16_t c, uint8_t how)
         mtt_subopt_jpda(trk, c, !trk->par.subopt_jpda_constant_b); /* §13.4: B_t or [S1]'s B */
         break;
     case MTT_ASSOCIATE_JPDA_STAR:
+    case MTT_ASSOCIATE_ADAPTIVE_JPDA_STAR: /* the gates were shrunk before gating (§13.7) */
         exact_or_cheap(trk, c, MTT_JPDA_STAR);
         break;
-    default: /* exact JPDA; NNJPDA and adaptive JPDA post-process it */
+    default: /* exact JPDA (jpda, jpda-vg); NNJPDA and adaptive JPDA post-process it */
         exact_or_cheap(trk, c, MTT_JPDA_EXACT);
-        if (how == MTT_ASSOCIATE_NNJPDA) {
+        if (how == MTT_ASSOCIATE_NNJPDA || how == MTT_ASSOCIATE_ADAPTIVE_NNJPDA) {
             mtt_nnjpda_cluster(trk, c);
         } else if (how == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
             mtt_adaptive_share(trk, c);
@@ -92,7 +93,7 @@ const char *const mtt_assoc_names[MTT_ASSOC_ROWS] = {
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda",
     "jpda", "cheap-jpda", "suboptimal-jpda", "nnjpda", "jpda-star", "adaptive-jpda",
 #if MTT_WITH_BASELINES
-    "lm-ipda-all",
+    "lm-ipda-all", "jpda-vg", "adaptive-nnjpda", "adaptive-jpda-star",
 #endif
 };
 
@@ -115,6 +116,9 @@ const mtt_mode mtt_modes[MTT_ASSOC_ROWS] = {
     {MTT_ASSOCIATE_ADAPTIVE_JPDA, 0, PDA, 1, 1},
 #if MTT_WITH_BASELINES
     {MTT_ASSOCIATE_IPDA, 2, PDA, 1, 0}, /* lm-ipda-all (§8.3) */
+    {MTT_ASSOCIATE_JPDA_VG, 0, PDA, 1, 0},
+    {MTT_ASSOCIATE_ADAPTIVE_NNJPDA, 0, HARD, 1, 0},
+    {MTT_ASSOCIATE_ADAPTIVE_JPDA_STAR, 0, PDA, 1, 0},
 #endif
 };
 
@@ -174,11 +178,12 @@ mtt_status mtt_assoc_name(mtt_assoc a, const char **name)
 }
 
 /* strcmp(a, b) == 0 without libc's strcmp (0.7 KiB on newlib); the names
- * are short, so at most 16 characters are compared. */
+ * are short (at most 18 characters, 15 without the baselines), so at most
+ * 20 (16) characters are compared. */
 static int same_text(const char *a, const char *b)
 {
     int i;
-    for (i = 0; i < 16; ++i) {
+    for (i = 0; i < (MTT_WITH_BASELINES ? 20 : 16); ++i) {
         if (a[i] != b[i]) {
             return 0;
         }

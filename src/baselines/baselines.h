@@ -40,7 +40,7 @@ void mtt_subopt_jpda(mtt_tracker *trk, uint16_t c, int per_track_b);
 /* Static MMR on the betas of cluster c with the nnjpda threshold. */
 void mtt_nnjpda_cluster(mtt_tracker *trk, uint16_t c);
 
-/* ---- jpda_adaptive.c: adaptive JPDA (ALGORITHMS.md §13.7) ---- */
+/* ---- jpda_adaptive.c: adaptive JPDA and the gate-change variants (ALGORITHMS.md §13.7) ---- */
 /* Before gating: tf.shrink = 1 for tracks that overlap another track. */
 void mtt_adaptive_gates(mtt_tracker *trk);
 /* After the JPDA betas of cluster c: equal shares of the shared measurements. */

@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* jpda_adaptive.c - adaptive JPDA (ALGORITHMS.md §13.7, CHOICE
- * interpretation of [S1] §3).
+ * interpretation of [S1] §3).  Rules 1, 2 and 4 also make [S1]'s other
+ * gate-change variants (jpda-vg, adaptive-nnjpda, adaptive-jpda-star: the
+ * association routines from MTT_ASSOCIATE_ADAPTIVE_JPDA on); rule 3 is
+ * adaptive-jpda's alone.
  *
  * 1. Overlap: tracks t and s overlap when |H xbar_t - H xbar_s| <=
  *    adaptive_jpda_distance * max(sigma_x, sigma_y).

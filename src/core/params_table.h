@@ -47,8 +47,9 @@ enum {
     PF_PER_MODEL2 = 64     /* an r x r matrix of IMM models (MTT_MAX_MODELS^2 slots) */
 };
 
-/* The modes this build knows: lm-ipda-all, the last, only with the
- * baselines, so that a firmware's mode tables and checks stay as they were
+/* The modes this build knows: lm-ipda-all and [S1]'s three gate-shrink
+ * variants, the last four, only with the baselines, so that a firmware's
+ * mode tables and checks stay as they were
  * (a build without it refuses the value as out of range, MTT_ERR_PARAM). */
 #define MTT_ASSOC_ROWS (MTT_WITH_BASELINES ? (int)MTT_ASSOC_COUNT : (int)MTT_ASSOC_LM_IPDA_ALL)
 

@@ -188,7 +188,7 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES
-    if (md->associate == MTT_ASSOCIATE_ADAPTIVE_JPDA) {
+    if (md->associate >= MTT_ASSOCIATE_ADAPTIVE_JPDA) {
         mtt_adaptive_gates(trk); /* per-track gate thresholds before gating (ALGORITHMS.md §13.7) */
     }
 #endif

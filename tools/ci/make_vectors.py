@@ -397,6 +397,93 @@ def suboptimal_jpda(A, B):
     return beta, D, Nmat, At, Cj, Lt
 
 
+def tv13b_gate_shrink():
+    """TV13b: one tracker step of the JPDA family with and without the gate
+    shrink of §13.7, end to end: overlap, gates, A and B, events, betas, update."""
+    h("TV13b Gate shrink of the adaptive JPDA family (§13.7), one tracker step")
+    PD, PG, lam, n_shrink, dist = 0.9, 0.99, 0.01, 3.0, 9.0
+    gam = gate_gamma(PG)
+    R = np.eye(2)
+    xs = [np.array([0.0, 0.0, 0.0, 0.0]), np.array([3.0, 0.0, 0.0, 0.0]), np.array([50.0, 0.0, 0.0, 0.0])]
+    P0 = np.eye(4)
+    Z = [(-2.2, -1.5), (-1.5, 1.5), (1.2, 0.3), (1.8, -0.2), (3.5, 2.2), (5.2, 0.0), (50.5, 0.5), (52.5, 0.0)]
+    p("Inputs: the first frame (no prediction), three seeded tracks (existence 1) with P = I, "
+      "measurements in input order z1..z8, meas_sigma = (1, 1), so S = 2 I for every track; "
+      "initiate off, merging off.")
+    p()
+    kv("x1, x2, x3 (positions)", [x[:2] for x in xs]); kv("z", Z)
+    kv("PD", PD); kv("PG", PG); kv("clutter_density", lam); kv("gamma", gam)
+    kv("adaptive_jpda_distance", dist); kv("adaptive_jpda_shrink", n_shrink)
+    # rule 1: overlap on the predicted positions, 9 sigma_m
+    T = len(xs)
+    over = [any(s_ != t and np.hypot(*(xs[t][:2] - xs[s_][:2])) <= dist * 1.0 for s_ in range(T))
+            for t in range(T)]
+    assert over == [True, True, False]
+    p(f"- overlap (|H x_t - H x_s| <= 9 sigma_m): T1 {over[0]}, T2 {over[1]}, T3 {over[2]}")
+    Bmiss = lam * (1.0 - PD * PG) / PD
+    kv("B = lambda (1 - PD PG) / PD", Bmiss)
+    S, K = kf_gain(P0, R)
+    modes = [("jpda", False, "exact"), ("jpda-vg", True, "exact"), ("adaptive-jpda-star", True, "star"),
+             ("adaptive-nnjpda", True, "nn"), ("adaptive-jpda", True, "share")]
+    for name, shrink, kind in modes:
+        gates = []
+        for t in range(T):
+            g = gam / n_shrink if (shrink and over[t]) else gam
+            d2 = [maha2(np.array(z) - xs[t][:2], S) for z in Z]
+            for v in d2:   # no pair within 5 % of its gate threshold: float decides the same
+                assert abs(v - g) > 0.05 * g
+            gates.append([j for j in range(len(Z)) if d2[j] <= g])
+        A = np.zeros((T, len(Z)))
+        for t in range(T):
+            for j in gates[t]:
+                A[t, j] = gauss_pdf(np.array(Z[j]) - xs[t][:2], S)
+        ev = jpda_events(A, [Bmiss] * T)
+        if kind == "star":
+            ev = jpda_star_events(ev)
+        beta, _ = betas_from_events(ev, T, len(Z))
+        M = len(Z)
+        p()
+        p(f"`{name}`: gates T1 {[j + 1 for j in gates[0]]}, T2 {[j + 1 for j in gates[1]]}, "
+          f"T3 {[j + 1 for j in gates[2]]} (measurement numbers); {len(ev)} events of the three tracks together (the clusters factor)"
+          + (" kept by JPDA*" if kind == "star" else "") + ":")
+        p()
+        if kind == "nn":
+            steps = mmr_static(beta[:, :M])
+            assign = {i: j for i, j, _ in steps}
+            p("- NNJPDA assignment on the betas: "
+              + ", ".join(f"T{i + 1} -> z{j + 1} (beta {f(v)})" for i, j, v in steps))
+        if kind == "share":
+            for t in range(T):
+                if not over[t]:
+                    continue
+                shared = False
+                for j in gates[t]:
+                    nc = sum(1 for s_ in range(T) if over[s_] and j in gates[s_])
+                    if nc >= 2:
+                        beta[t, j] = 1.0 / nc
+                        shared = True
+                if shared:
+                    tot = beta[t, :M].sum()
+                    if tot > 1.0:
+                        beta[t, :M] /= tot
+                        beta[t, M] = 0.0
+                    else:
+                        beta[t, M] = 1.0 - tot
+        for t in range(T):
+            nus = [np.array(Z[j]) - xs[t][:2] for j in gates[t]]
+            if kind == "nn":
+                j = assign.get(t)
+                x, P = pda_update(xs[t], P0, K, R, [np.array(Z[j]) - xs[t][:2]], [1.0], 0.0) \
+                    if j is not None else (xs[t], P0)
+                p(f"- T{t + 1}: assigned z{j + 1}, x = {vec(x)}, P diagonal = {vec(np.diag(P))}, "
+                  f"P[0][1] = {f(P[0, 1])}")
+                continue
+            x, P = pda_update(xs[t], P0, K, R, nus, [beta[t, j] for j in gates[t]], beta[t, M])
+            p(f"- T{t + 1}: beta_0 = {f(beta[t, M])}, beta over its gate = {vec([beta[t, j] for j in gates[t]])}, "
+              f"x = {vec(x)}, P diagonal = {vec(np.diag(P))}, P[0][1] = {f(P[0, 1])}")
+
+
+
 # ==========================================================================
 # main
 # ==========================================================================
@@ -1157,6 +1244,8 @@ def main():
         b0_ = p0 * q / Pexist
         p(f"- T{t+1}: P(exist|Z^k) = {f(Pexist)}, beta_0 = {f(b0_)}, beta_1..3 = "
           f"{vec([b_[j] for j in range(M_)])}")
+
+    tv13b_gate_shrink()
 
     # ---------------------------------------------------------------- TV14
     h("TV14 IMM mixing and combination (§14)")
