@@ -10,7 +10,7 @@
 # The set (about 300 runs, about 1 minute a tree on 2 cores): for each
 # scenarios/*.json and seeds 0 and 1, the detections of mtt_sim.gen tracked by
 # the host-float mtt-track with the scenario's own settings and with each of
-# the 12 association modes (IMM settings dropped for the modes without an IMM
+# the 16 association modes (IMM settings dropped for the modes without an IMM
 # form); the host-fixed mtt-track with its four modes on seed 0; and the IMM
 # with each IMM mode on manoeuvre.json.  A run's tracks file, stdout and stderr
 # (--stats counters and error messages) are compared, so a change that moves
@@ -19,7 +19,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 usage() { sed -n '3,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
-MODES="lm-ihpda ihpda lm-ipda ipda ihpda-2d jipda jpda cheap-jpda suboptimal-jpda nnjpda jpda-star adaptive-jpda"
+MODES="lm-ihpda ihpda lm-ipda ipda ihpda-2d jipda jpda cheap-jpda suboptimal-jpda nnjpda jpda-star adaptive-jpda lm-ipda-all jpda-vg adaptive-nnjpda adaptive-jpda-star"
 
 # write_outputs TREE DIR: build TREE's host-float and host-fixed tools, run the set.
 write_outputs() {
