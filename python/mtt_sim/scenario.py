@@ -48,7 +48,7 @@ TRACKER_KEYS = {
     "association", "lm_ihpda_variant", "contest_beta", "process_psd", "max_accel", "meas_sigma", "pd",
     "pg", "clutter_density", "snr_rho", "amplitude_eta", "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "adapt_s_max", "markov_p11", "markov_p21",
     "existence_init", "confirm_threshold", "terminate_threshold", "merge_threshold", "initiate", "vmax", "init_gate",
-    "intensity_gate", "jpda_bias", "jpda_star_threshold", "nnjpda_threshold",
+    "intensity_gate", "jpda_bias", "subopt_jpda_constant_b", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
     "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_decide", "split_provisional_exist", "split_provisional_scans", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
 }

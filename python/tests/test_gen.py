@@ -38,6 +38,18 @@ def make(overrides=None, **top):
     return scenario.loads(json.dumps(d), "unit.json", overrides)
 
 
+class TestTrackerKeys(unittest.TestCase):
+    def test_tracker_keys_are_the_settings_table_of_formats_md(self):
+        # a key added to the library and FORMATS.md must reach mtt_sim's own list
+        import re
+        doc = open(os.path.join(os.path.dirname(__file__), "..", "..", "docs", "FORMATS.md"),
+                   encoding="utf-8").read()
+        sec = doc[doc.index("## Tracker settings"):doc.index("## Command line")]
+        keys = {k.split(".")[0] for k in re.findall(r"^\| `([a-z_0-9.]+)` \|", sec, re.M)}
+        self.assertGreater(len(keys), 40)
+        self.assertEqual(scenario.TRACKER_KEYS, keys)
+
+
 class TestDeterminism(unittest.TestCase):
     def test_same_seed_same_bytes(self):
         scn = make()
