@@ -534,9 +534,23 @@ PyMODINIT_FUNC PyInit__core(void)
         Py_DECREF(m);
         return NULL;
     }
+    {
+        /* one name per field, however many COUNT_FIELDS has */
 #define NAME_OF(f) #f,
-    fields = Py_BuildValue("(sssssssssssssssssss)", COUNT_FIELDS(NAME_OF) NULL);
+        static const char *const names[] = {COUNT_FIELDS(NAME_OF)};
 #undef NAME_OF
+        const Py_ssize_t nf = (Py_ssize_t)(sizeof names / sizeof names[0]);
+        Py_ssize_t k;
+        fields = PyTuple_New(nf);
+        for (k = 0; fields != NULL && k < nf; ++k) {
+            PyObject *o = PyUnicode_FromString(names[k]);
+            if (o == NULL) {
+                Py_CLEAR(fields);
+                break;
+            }
+            PyTuple_SET_ITEM(fields, k, o);
+        }
+    }
     if (fields == NULL || PyModule_AddObject(m, "COUNT_FIELDS", fields) < 0 ||
         PyModule_AddStringConstant(m, "VERSION", MTT_VERSION_STRING) < 0 ||
         PyModule_AddStringConstant(m, "REAL", REAL_NAME) < 0 ||

@@ -26,7 +26,9 @@
 /* The frame's input: the detections and their covariances (NULL: none). */
 typedef struct frame_in {
     const mtt_meas *m;
+#if MTT_WITH_MEAS_COV
     const mtt_meas_cov *cov;
+#endif
 } frame_in;
 
 #if MTT_WITH_MEAS_COV
@@ -115,28 +117,30 @@ static void sort_canonical(uint32_t *idx, uint32_t *tmp, uint32_t n, const frame
     }
 }
 
-/* 0: valid; else the counter that skips it.  A float NaN/Inf fails
- * MTT_POS_OK and mtt_isfinite too, and is malformed there (MTT_MEAS_RANGE). */
-static uint32_t *meas_skip(mtt_counts *n, const mtt_meas *m, const mtt_meas_cov *c)
+/* Why a detection is skipped: 0 valid, SKIP_BAD malformed, SKIP_RANGE
+ * outside the build's range.  A float NaN/Inf fails MTT_POS_OK and
+ * mtt_isfinite too, and is malformed there (MTT_MEAS_RANGE). */
+enum { SKIP_NONE, SKIP_BAD, SKIP_RANGE };
+static int meas_skip(const mtt_meas *m, const mtt_meas_cov *c)
 {
     if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y)) {
-        return MTT_MEAS_RANGE(n);
+        return SKIP_RANGE;
     }
 #if MTT_WITH_MEAS_COV
     if (has_cov(c) && !(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy) &&
                         c->r_xx > MTT_ZERO && c->r_yy > MTT_ZERO && c->r_xx * c->r_yy > c->r_xy * c->r_xy)) {
-        return &n->meas_bad; /* not a covariance */
+        return SKIP_BAD; /* not a covariance */
     }
 #else
     (void)c;
 #endif
     if (!m->has_amplitude) {
-        return NULL;
+        return SKIP_NONE;
     }
     if (!mtt_isfinite(m->amplitude)) {
-        return MTT_MEAS_RANGE(n);
+        return SKIP_RANGE;
     }
-    return (m->amplitude >= MTT_ZERO) ? NULL : &n->meas_bad;
+    return (m->amplitude >= MTT_ZERO) ? SKIP_NONE : SKIP_BAD;
 }
 
 static void store_meas(mtt_mstore *s, const mtt_meas *m, const mtt_meas_cov *c, uint32_t src)
@@ -160,13 +164,17 @@ static void store_meas(mtt_mstore *s, const mtt_meas *m, const mtt_meas_cov *c, 
 void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, size_t n)
 {
     uint32_t *const sel = trk->sel; /* in a local: a large field offset (a firmware's .text) */
+#if MTT_WITH_MEAS_COV
     const frame_in in = {meas, cov};
+#else
+    const frame_in in = {meas};
+#endif
     size_t i;
     uint32_t kept = 0, valid = 0;
     for (i = 0; i < n; ++i) {
-        uint32_t *skip = meas_skip(&trk->stats.last, &meas[i], (cov != NULL) ? &cov[i] : NULL);
-        if (skip != NULL) {
-            ++*skip;
+        const int skip = meas_skip(&meas[i], (cov != NULL) ? &cov[i] : NULL);
+        if (skip != SKIP_NONE) {
+            ++*((skip == SKIP_RANGE) ? MTT_MEAS_RANGE(&trk->stats.last) : &trk->stats.last.meas_bad);
             continue;
         }
         ++valid;
