@@ -6,9 +6,8 @@
  * +-2^(30-10) = +-1,048,576 m with a 1/1024 m LSB, variances at the API
  * to (11.6 km)^2 with a 1/16 m^2 LSB, and clutter densities from 2^-52
  * to 4.7e-7 per m^2 (1e-9 on 22 bits).  The host's default bounds (a
- * scan of 256 detections, 128 tracks: mtt/config.h) and the firmware
- * switches (the fixed build covers lm-ihpda, ihpda, lm-ipda, ipda with CV
- * motion).  Each value is a default: a -D still overrides it.  The units
+ * scan of 256 detections, 128 tracks: mtt/config.h) and the fixed
+ * build's switches (lm-ihpda, ihpda, lm-ipda, ipda with CV motion).  Each value is a default: a -D still overrides it.  The units
  * are part of MTT_REAL_KIND and so of MTT_CONFIG_ID. */
 #ifndef MTT_CONFIGS_FIRMWARE_FIXED_RADAR_H
 #define MTT_CONFIGS_FIRMWARE_FIXED_RADAR_H
@@ -26,14 +25,7 @@
 #define MTT_FX_GATE_FRAC 24
 #endif
 
-#ifndef MTT_WITH_BASELINES
-#define MTT_WITH_BASELINES 0
-#endif
-#ifndef MTT_WITH_IMM
-#define MTT_WITH_IMM 0
-#endif
-#ifndef MTT_WITH_CONTEST
-#define MTT_WITH_CONTEST 0
-#endif
+/* The firmware switches (IMM, baselines, contest, split, a covariance per
+ * detection all 0) are mtt/config.h's defaults under MTT_REAL_FIXED. */
 
 #endif /* MTT_CONFIGS_FIRMWARE_FIXED_RADAR_H */
