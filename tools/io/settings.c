@@ -225,20 +225,29 @@ static int get_numbers(const sctx *c, const cJSON *j, const char *key, size_t n,
     return MTT_IO_OK;
 }
 
-/* "lm-ihpda, ihpda, ..." for the values that pass mtt_params_check with
- * the other keys as in *base (the fixed-point build's defaults do not: no
- * declared clutter density), or all of an enum key's names (base NULL). */
+/* Value v of enum key `key` passes mtt_params_check with the other keys
+ * as in *base. */
+static int value_passes(const mtt_params *base, const char *key, double v)
+{
+    mtt_params q = *base;
+    return mtt_params_set(&q, key, &v, 1) == MTT_OK && mtt_params_check(&q, NULL) == MTT_OK;
+}
+
+/* "lm-ihpda, ihpda, ..." for the values that pass mtt_params_check with the
+ * defaults or with the other keys as in *base (the fixed-point build's
+ * defaults pass none: no declared clutter density), or all of an enum
+ * key's names (base NULL). */
 static void name_list(char *buf, size_t size, const mtt_param_info *info, const mtt_params *base)
 {
+    mtt_params def;
     size_t a, len = 0;
     buf[0] = '\0';
+    if (base != NULL && mtt_params_default(&def) != MTT_OK)
+        return;
     for (a = 0; a < info->n_names; ++a) {
-        if (base != NULL) {
-            mtt_params q = *base;
-            double v = (double)a;
-            if (mtt_params_set(&q, info->key, &v, 1) != MTT_OK || mtt_params_check(&q, NULL) != MTT_OK)
-                continue;
-        }
+        if (base != NULL && !value_passes(&def, info->key, (double)a) &&
+            !value_passes(base, info->key, (double)a))
+            continue;
         if (len + strlen(info->names[a]) + 3 >= size)
             break;
         len += (size_t)snprintf(buf + len, size - len, "%s%s", len != 0 ? ", " : "",
