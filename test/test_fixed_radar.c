@@ -217,6 +217,42 @@ static void test_full_scan_fits(void)
     TEST_ASSERT_EQUAL_UINT(100u, conf);
 }
 
+/* The motion from max_accel (ALGORITHMS.md §2.2) at this scale: a in
+ * Q10 m/s^2, a^2 in the variance format Q4 m^2/s^3 (MTT_VAR_OF), q = a^2 dT
+ * per frame (dT in Q16 s).  Against the double a^2 dT, the tolerance from
+ * the formats: a's rounding (2^-11) times 2a, a^2's rounding (2^-5), both
+ * times dT, plus dT's rounding (2^-17) times a^2 and q's rounding (2^-5).
+ * An a whose square leaves [2^-5, 2^27) m^2/s^3 is refused, naming it. */
+static void test_motion_from_max_accel(void)
+{
+    const double a = 9.81, dt = 4.7;
+    const double tol1 = 2.0 * a * 0x1p-11 + 0x1p-5;
+    mtt_params p, r;
+    mtt_meas m;
+    const char *bad = NULL;
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.process_psd = 0;
+    p.max_accel = pos(a);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_CV, r.motion);
+    TEST_ASSERT_DOUBLE_WITHIN(tol1, a * a, mtt_fx_to_double(r.process_psd, MTT_FX_VAR_FRAC));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    m = sim_meas(pos(1000.0), pos(2000.0), MTT_ZERO, 0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(100.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(100.0 + dt), &m, 1));
+    TEST_ASSERT_DOUBLE_WITHIN(dt * tol1 + a * a * 0x1p-17 + 0x1p-5, a * a * dt,
+                              mtt_fx_to_double(trk.par.process_psd, MTT_FX_VAR_FRAC));
+    p.max_accel = pos(12000.0); /* a^2 = 1.44e8 > 1.34e8 */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("max_accel", bad);
+    p.max_accel = pos(0.1); /* a^2 = 0.01: 0.16 units, rounds to 0 */
+    bad = NULL;
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("max_accel", bad);
+    p.max_accel = pos(11000.0); /* a^2 = 1.21e8 fits */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -225,5 +261,6 @@ int main(void)
     RUN_TEST(test_seed_variances_round_trip);
     RUN_TEST(test_target_at_400_km_tracked);
     RUN_TEST(test_full_scan_fits);
+    RUN_TEST(test_motion_from_max_accel);
     return UNITY_END();
 }

@@ -86,51 +86,49 @@ static void test_estimated_density(void)
 #endif
 }
 
-/* max_accel with process_psd left out (ALGORITHMS.md §2.2).  Fixed point:
- * refused, naming max_accel.  Float and double: with motion cv the tracker
- * predicts with q = a² ΔT, frame for frame the tracker with process_psd =
- * a² ΔT given (ΔT = 2: the level follows the interval). */
+/* max_accel with process_psd left out (ALGORITHMS.md §2.2): with motion cv
+ * the tracker predicts with q = a² ΔT, frame for frame the tracker with
+ * process_psd = a² ΔT given (ΔT = 2: the level follows the interval).  In
+ * fixed point a² and a² ΔT are exact here (a = 2: 4 and 8 on their bits). */
 static mtt_tracker ta, tb;
 static void test_motion_from_max_accel_cv(void)
 {
-    mtt_params pe;
+    mtt_params pe, r;
+    int k;
     p.max_accel = MTT_POS(2.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_WITH_IMM ? MTT_MOTION_IMM : MTT_MOTION_CV, r.motion);
 #ifdef MTT_REAL_FIXED
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
-    TEST_ASSERT_EQUAL_STRING("max_accel", bad);
-    (void)pe;
-    (void)ta;
-    (void)tb;
+    TEST_ASSERT_EQUAL_INT32(4 << MTT_FX_VAR_FRAC, r.process_psd); /* a² at ΔT = 1 */
 #else
-    {
-        mtt_params r;
-        int k;
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
-        TEST_ASSERT_EQUAL_INT(MTT_WITH_IMM ? MTT_MOTION_IMM : MTT_MOTION_CV, r.motion);
-        TEST_ASSERT_TRUE(r.process_psd == MTT_R(4.0)); /* a² at ΔT = 1 */
-        p.motion = MTT_MOTION_CV;
-        pe = p;
-        pe.process_psd = MTT_R(8.0);
-#if MTT_WITH_CONTEST
-        p.adapt_s_max = pe.adapt_s_max = MTT_R(1.0); /* the derived motion's rise resolves to 100 */
+    TEST_ASSERT_TRUE(r.process_psd == MTT_R(4.0)); /* a² at ΔT = 1 */
 #endif
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &pe));
-        for (k = 0; k < 8; ++k) {
-            const mtt_meas m = {MTT_R(10.0) * (mtt_real)k, MTT_R(0.5) * (mtt_real)(k * k), MTT_R(0.0), 0};
-            mtt_track_view va, vb;
-            size_t n;
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, MTT_R(2.0) * (mtt_real)k, &m, 1));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, MTT_R(2.0) * (mtt_real)k, &m, 1));
-            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &n));
-            if (k >= 1) {
-                TEST_ASSERT_EQUAL_UINT64(1u, (uint64_t)n);
-                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, 0, &va));
-                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, 0, &vb));
-                TEST_ASSERT_TRUE(va.x[0] == vb.x[0] && va.x[3] == vb.x[3] && va.P[2][2] == vb.P[2][2]);
-            }
+    p.motion = MTT_MOTION_CV;
+    pe = p;
+    pe.process_psd = MTT_VAR(8.0);
+#if MTT_WITH_CONTEST
+    p.adapt_s_max = pe.adapt_s_max = MTT_R(1.0); /* the derived motion's rise resolves to 100 */
+#endif
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &pe));
+    for (k = 0; k < 8; ++k) {
+        const mtt_meas m = {MTT_POS(10.0) * (mtt_real)k, MTT_POS(0.5) * (mtt_real)(k * k), MTT_AMP(0.0), 0};
+        mtt_track_view va, vb;
+        size_t n;
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&ta, MTT_TIME(2.0) * (mtt_real)k, &m, 1));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&tb, MTT_TIME(2.0) * (mtt_real)k, &m, 1));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &n));
+        if (k >= 1) {
+            TEST_ASSERT_EQUAL_UINT64(1u, (uint64_t)n);
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, 0, &va));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, 0, &vb));
+            TEST_ASSERT_TRUE(va.x[0] == vb.x[0] && va.x[3] == vb.x[3] && va.P[2][2] == vb.P[2][2]);
         }
     }
+#ifdef MTT_REAL_FIXED
+    p.max_accel = MTT_POS(182.0); /* a² = 33124 px²: beyond the variance format's 32768 */
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_STRING("max_accel", bad);
 #endif
 }
 

@@ -4,7 +4,13 @@
  * the host, on the target (float builds), and the host step of the
  * fixed-point build (prepare_main.c), which prepares them once
  * (mtt_params_prepare) and writes fw_prepared.h for the target's
- * mtt_tracker_load (docs/FIRMWARE.md, "Parameters prepared on the host"). */
+ * mtt_tracker_load (docs/FIRMWARE.md, "Parameters prepared on the host").
+ *
+ * FW_MAX_ACCEL 1 (e.g. MTT_EXTRA_DEFINITIONS=FW_MAX_ACCEL=1) runs the same
+ * scene with the real-target default instead of process_psd: max_accel
+ * sqrt(0.5) px/frame², which the firmware configurations (no IMM, no contest)
+ * resolve to CV with q = a² ΔT = 0.5 at ΔT = 1 (ALGORITHMS.md §2.2;
+ * docs/FIRMWARE.md, "The real-target default"). */
 #include "fw.h"
 
 int fw_params(mtt_params *par)
@@ -19,6 +25,10 @@ int fw_params(mtt_params *par)
 #else
     par->process_psd = 0.5f;
     par->vmax = 10.0f;
+#endif
+#if defined(FW_MAX_ACCEL) && FW_MAX_ACCEL
+    par->process_psd = MTT_ZERO;
+    par->max_accel = MTT_POS(0.70710678118654752);
 #endif
     return 0;
 }

@@ -402,8 +402,10 @@ MTT_MUST_CHECK mtt_status mtt_params_default_checked(mtt_params *p, size_t param
  *          ranges and rules: see mtt_params_info); MTT_ERR_UNSUPPORTED if the
  *          association mode is not built into this version (bad_field =
  *          "association"), nor the IMM ("motion"), nor lm-ihpda's contest
- *          variant (MTT_WITH_CONTEST 0, "lm_ihpda_variant"); MTT_ERR_CONFIG
- *          (bad_field not written). */
+ *          variant (MTT_WITH_CONTEST 0, "lm_ihpda_variant"); in the fixed-point
+ *          build MTT_ERR_PARAM "max_accel" when the motion follows it and
+ *          max_accel² does not fit the variance format (docs/FIXED_POINT.md
+ *          §3); MTT_ERR_CONFIG (bad_field not written). */
 #define mtt_params_check(p, bad_field) mtt_params_check_checked((p), (bad_field), MTT_PARAMS_GUARD_)
 MTT_MUST_CHECK mtt_status mtt_params_check_checked(const mtt_params *p, const char **bad_field,
                                                    size_t params_size, uint32_t config_id);

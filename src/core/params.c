@@ -267,6 +267,17 @@ int mtt_params_rule_ok(const mtt_params *p, size_t rule, int cross)
         bad = key;                                                                                 \
     }
 
+#ifdef MTT_REAL_FIXED
+/* s^2 (s in the position format) is a variance of its format, (0, MTT_FX_MAX)
+ * units of Q MTT_FX_VAR_FRAC (docs/FIXED_POINT.md §3): R = sigma^2, the
+ * derived motion's a^2. */
+static int var_fits(mtt_real s)
+{
+    const mtt_real v = MTT_VAR_OF(s);
+    return v > 0 && v < MTT_FX_MAX;
+}
+#endif
+
 /* mtt_params_check after its guards, with the keys as the tracker
  * resolves them in *q (written once the ranges hold; resolved when
  * MTT_OK). */
@@ -306,10 +317,11 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
         }
     }
 #ifdef MTT_REAL_FIXED
-    if (bad == NULL && mtt_manoeuvre_derived(p)) {
-        /* the derived motion's a^2 dT has no format here yet (docs/FIXED_POINT.md) */
+    if (bad == NULL && mtt_manoeuvre_derived(p) && !var_fits(p->max_accel)) {
+        /* the derived level q = a^2 dT: a^2 must be a variance of its format
+         * (docs/FIXED_POINT.md §3) */
         bad = "max_accel";
-        st = MTT_ERR_UNSUPPORTED;
+        st = MTT_ERR_PARAM;
     }
     if (bad == NULL && !(p->clutter_density > 0)) {
         /* the fixed-point build holds densities relative to lambda
@@ -318,8 +330,7 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
         bad = "clutter_density";
         st = MTT_ERR_UNSUPPORTED;
     }
-    if (bad == NULL && (!(MTT_VAR_OF(p->meas_sigma[0]) > 0) || !(MTT_VAR_OF(p->meas_sigma[0]) < MTT_FX_MAX) ||
-                        !(MTT_VAR_OF(p->meas_sigma[1]) > 0) || !(MTT_VAR_OF(p->meas_sigma[1]) < MTT_FX_MAX))) {
+    if (bad == NULL && (!var_fits(p->meas_sigma[0]) || !var_fits(p->meas_sigma[1]))) {
         /* R = sigma^2 must be a variance of its format: (0, 32768) unit^2 */
         bad = "meas_sigma";
         st = MTT_ERR_PARAM;

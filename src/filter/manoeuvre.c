@@ -14,10 +14,11 @@
  *        1/τ, entering it at rate 1/(10 τ)): Π(ΔT) in closed form
  *   split_dv = a ΔT
  *
- * Explicit keys override each piece.  The fixed-point build refuses the
- * derived motion (mtt_params_check: max_accel, MTT_ERR_UNSUPPORTED; its
- * formats for a² ΔT are the fixed-point issue's work): there this file only
- * resolves process_psd 0 to 5 and auto to cv. */
+ * Explicit keys override each piece.  The fixed-point build (no IMM, no
+ * split) derives the CV level only: a in the position format, a² in the
+ * variance format (MTT_VAR_OF; mtt_params_check refuses an a whose square
+ * does not fit it) and q = a² ΔT per frame with ΔT in Q16 frames, saturated
+ * (docs/FIXED_POINT.md §3). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -83,12 +84,12 @@ void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
         p->adapt_s_max = derive ? MTT_R(ADAPT_RISE_DERIVED) : MTT_R(1.0);
     }
 #endif
-#ifndef MTT_REAL_FIXED
     if (derive) {
         lv->bits |= MTT_DERIVE_CV;
-        lv->cv = p->max_accel * p->max_accel;
+        lv->cv = MTT_VAR_OF(p->max_accel);
         p->process_psd = lv->cv; /* a placeholder at ΔT = 1 until the first frame */
     }
+#ifndef MTT_REAL_FIXED
     if (p->split_dv == MTT_ZERO && p->max_accel > MTT_ZERO) {
         lv->bits |= MTT_DERIVE_DV;
         lv->dv = p->max_accel;
@@ -142,12 +143,12 @@ void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
 
 void mtt_manoeuvre_frame(mtt_tracker *trk, mtt_real dt)
 {
-#ifndef MTT_REAL_FIXED
     const mtt_manoeuvre *lv = &trk->lv;
     mtt_params *p = &trk->par;
     if (lv->bits & MTT_DERIVE_CV) {
-        p->process_psd = lv->cv * dt;
+        p->process_psd = MTT_MUL_T(dt, lv->cv);
     }
+#ifndef MTT_REAL_FIXED
     if (lv->bits & MTT_DERIVE_DV) {
         p->split_dv = lv->dv * dt;
     }
@@ -162,8 +163,5 @@ void mtt_manoeuvre_frame(mtt_tracker *trk, mtt_real dt)
         switch_matrix(lv->rate[0], lv->rate[1], dt, p->imm_transition);
     }
 #endif
-#else
-    (void)trk;
-    (void)dt;
 #endif
 }

@@ -23,8 +23,9 @@
 # (configs/firmware_fixed_radar.h: default bounds, the firmware switches),
 # built into build/fx-float-radar; a SCENARIO may be a path under
 # scenarios/ (recorded/quickstart).  FX_MC_SET adds --set KEY=VALUE
-# settings to both sides (space-separated; the recorded scenes' IMM is not
-# in the fixed build: FX_MC_SET='tracker.process_psd=500 tracker.motion="cv"').
+# settings to both sides (space-separated; the recorded scenes' max_accel
+# derives an IMM in float, which the fixed build has not: FX_MC_SET=
+# 'tracker.motion="cv"' compares the fixed default, CV with q = a² ΔT).
 # The fixed side runs without --skip-out-of-range, so a run that met a
 # detection outside the build's range fails and shows in "runs ok".
 set -euo pipefail

@@ -225,20 +225,29 @@ static int get_numbers(const sctx *c, const cJSON *j, const char *key, size_t n,
     return MTT_IO_OK;
 }
 
-/* "lm-ihpda, ihpda, ..." for the modes that pass mtt_params_check
- * (implemented only) or all of an enum key's names. */
-static void name_list(char *buf, size_t size, const mtt_param_info *info, int implemented_only)
+/* Value v of enum key `key` passes mtt_params_check with the other keys
+ * as in *base. */
+static int value_passes(const mtt_params *base, const char *key, double v)
 {
+    mtt_params q = *base;
+    return mtt_params_set(&q, key, &v, 1) == MTT_OK && mtt_params_check(&q, NULL) == MTT_OK;
+}
+
+/* "lm-ihpda, ihpda, ..." for the values that pass mtt_params_check with the
+ * defaults or with the other keys as in *base (the fixed-point build's
+ * defaults pass none: no declared clutter density), or all of an enum
+ * key's names (base NULL). */
+static void name_list(char *buf, size_t size, const mtt_param_info *info, const mtt_params *base)
+{
+    mtt_params def;
     size_t a, len = 0;
     buf[0] = '\0';
+    if (base != NULL && mtt_params_default(&def) != MTT_OK)
+        return;
     for (a = 0; a < info->n_names; ++a) {
-        if (implemented_only) {
-            mtt_params q;
-            double v = (double)a;
-            if (mtt_params_default(&q) != MTT_OK || mtt_params_set(&q, info->key, &v, 1) != MTT_OK ||
-                mtt_params_check(&q, NULL) != MTT_OK)
-                continue;
-        }
+        if (base != NULL && !value_passes(&def, info->key, (double)a) &&
+            !value_passes(base, info->key, (double)a))
+            continue;
         if (len + strlen(info->names[a]) + 3 >= size)
             break;
         len += (size_t)snprintf(buf + len, size - len, "%s%s", len != 0 ? ", " : "",
@@ -394,7 +403,7 @@ static int parse_models(const sctx *c, const mtt_param_info *info, const cJSON *
         }
         m = cJSON_GetObjectItemCaseSensitive(e, "model");
         snprintf(sub, sizeof sub, "%s[%lu].model", key, (unsigned long)i);
-        name_list(list, sizeof list, info, 0);
+        name_list(list, sizeof list, info, NULL);
         if (!cJSON_IsString(m)) {
             mtt_io_error_key(c->file, sub, "must be one of: %s", list);
             return MTT_IO_EINPUT;
@@ -511,7 +520,7 @@ static int parse_param(const sctx *c, const mtt_param_info *info, const cJSON *j
             ;
         if (a == info->n_names) {
             char list[512];
-            name_list(list, sizeof list, info, 0);
+            name_list(list, sizeof list, info, NULL);
             mtt_io_error_key(c->file, key, "unknown %s '%s' (expected one of: %s)", key,
                              j->valuestring, list);
             return MTT_IO_EINPUT;
@@ -774,6 +783,19 @@ static int check_params(const sctx *c)
             return MTT_IO_EINPUT;
         }
         values_text(v, info->count, format_bound, val, sizeof val);
+#ifdef MTT_REAL_FIXED
+        if (strcmp(bad, "max_accel") == 0 || strcmp(bad, "meas_sigma") == 0) {
+            /* params.c's var_fits: the square is a variance of its format */
+            mtt_io_error_key(c->file, bad, "%s is a variance of this fixed-point build's format (Q%d), "
+                             "so it needs about %.4g <= v < %.4g (docs/FIXED_POINT.md §3), found %s",
+                             strcmp(bad, "max_accel") == 0
+                                 ? "with process_psd not given, max_accel² (the process noise per unit of time)"
+                                 : "meas_sigma² (R)",
+                             MTT_FX_VAR_FRAC, sqrt(0.5 * mtt_io_from_real(1, MTT_FX_VAR_FRAC)),
+                             sqrt(mtt_io_from_real(MTT_FX_MAX, MTT_FX_VAR_FRAC)), val);
+            return MTT_IO_EINPUT;
+        }
+#endif
         if (info->cross != NULL) {
             mtt_io_error_key(c->file, bad, "must be %s, found %s", info->cross, val);
         } else {
@@ -795,12 +817,20 @@ static int check_params(const sctx *c)
             mtt_io_error_key(c->file, bad != NULL ? bad : "?", "not supported by this version");
             return MTT_IO_EINPUT;
         }
-        name_list(list, sizeof list, info, 1);
+        name_list(list, sizeof list, info, &c->s->params);
         if (strcmp(bad, "motion") == 0) {
             mtt_io_error_key(c->file, bad, "motion = imm needs an association other than ihpda-2d and "
-                             "lm-ipda-all, and a build with MTT_WITH_IMM (association is %s)",
+                             "lm-ipda-all, and a build with MTT_WITH_IMM%s (association is %s)",
+                             MTT_IO_FIXED ? ", which the fixed-point build leaves out (docs/FIXED_POINT.md §5)" : "",
                              mtt_params_info(0, &info) == MTT_OK
                                  ? info->names[(size_t)c->s->params.association] : "?");
+            return MTT_IO_EINPUT;
+        }
+        if (strcmp(bad, "lm_ihpda_variant") == 0) {
+            mtt_io_error_key(c->file, bad, "lm_ihpda_variant '%s' needs a build with MTT_WITH_CONTEST%s "
+                             "(available: %s)", info->names[(size_t)v[0]],
+                             MTT_IO_FIXED ? ", which the fixed-point build leaves out with the adaptive "
+                                            "process noise (docs/FIXED_POINT.md §5)" : "", list);
             return MTT_IO_EINPUT;
         }
         mtt_io_error_key(c->file, bad, "%s '%s' is not implemented in this version (available: %s)",
