@@ -39,6 +39,10 @@ Model (every number comes from the scenario, see scenarios/README.md):
   target's own ``rho`` if it has one, else the scenario's.  Without an
   ``amplitude`` object the amplitudes are still drawn (so the other numbers
   of a seed do not change) but written empty.
+- With ``"sensor": {"kind": "radar", ...}`` the sensor is a radar instead
+  (mtt_sim/radar.py: range, bearing, optional range rate, clutter uniform in
+  range x bearing over its coverage, the polar detections file; or, with
+  ``"output": "xy"``, the user's conversion of it to x, y).
 - Detections of one scan are written in a random order (targets and clutter
   shuffled together) so that no tracker tie rule sees targets first.
 

@@ -548,9 +548,11 @@ def build_summary(scn: dict, scenario_file: str, overrides, modes, runs, seed0, 
         "jobs": mc["jobs"], "wall_s": mc["wall_s"],
         "scan_times": scnmod.scan_times(scn),
         "area": scn["area"],
-        # a radar's: its range sigma on both axes (the plots' gate ellipses) and its position
+        # a radar's: its range sigma on both axes (the plots' gate ellipses) and, for its polar
+        # file, its position (the plots show the detections converted)
         "meas_sigma": scn.get("meas_sigma") or [radar.sensor(scn)["sr"]] * 2,
-        **({"sensor_xy": [radar.sensor(scn)["xs"], radar.sensor(scn)["ys"]]} if radar.is_radar(scn) else {}),
+        **({"sensor_xy": [radar.sensor(scn)["xs"], radar.sensor(scn)["ys"]]}
+           if radar.is_radar(scn) and radar.sensor(scn)["output"] == "polar" else {}),
         "metrics": {"match_distance": scn.get("metrics", {}).get("match_distance"),
                     "gospa_c": scn.get("metrics", {}).get("gospa_c"),
                     "gospa_p": 1, "gospa_alpha": 2},
