@@ -6,6 +6,7 @@ Command line: DIR/<name>.det.csv, .truth.csv, .settings.json.
 
     PYTHONPATH=python python3 -m mtt_sim.gen scenarios/crossing3.json --seed 7 --out out/gen
     PYTHONPATH=python python3 -m mtt_sim.gen scenarios/dense.json --seed 1 --out out/gen --set random_targets.count=80
+    PYTHONPATH=python python3 -m mtt_sim.gen scenarios/recorded/radar_quickstart.json --seed 0 --out out/gen  # polar
 
 Formats: docs/FORMATS.md.  Same scenario + seed = same bytes.
 

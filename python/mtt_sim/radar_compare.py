@@ -25,12 +25,13 @@ output form), the rows are:
                   at process_psd --stonesoup-q (default 50, quickstart's best
                   constant-velocity value of #25), JPDAwithEHM unless
                   --stonesoup-associator jpda; --no-stonesoup leaves it out
-                  (slow: about 8 s per scan of 200 clutter points with jpda)
+                  (slow: on radar_quickstart's first scans, 200 clutter points
+                  each, about 3 s per scan with ehm, 8 s with jpda)
 
 The polar rows need an mtt-track that reads polar detections (issue 26): the
-command asks the binary first and, when it refuses ``measurement: polar``,
-leaves those rows out with mtt-track's message (never a number in their
-place).  --shuffle-check also tracks run 0's files with each scan's rows
+command asks the binary first and, when it refuses ``measurement: polar``
+(or the range_rate column), leaves that row out with mtt-track's message
+(never a number in its place).  --shuffle-check also tracks run 0's files with each scan's rows
 in a shuffled order and says whether the tracks files are byte-identical.
 
 Columns as mtt_sim.compare's: GOSPA per scan, ID switches per run,
@@ -59,14 +60,17 @@ STONESOUP_Q = 50.0
 POLAR_ONLY = ("measurement", "sensor_xy", "range_rate_sigma")
 
 
-def polar_support(exe: str) -> tuple[bool, str]:
-    """(True, "") when mtt-track tracks a polar detections file, else (False, its message)."""
+def polar_support(exe: str, range_rate: bool = False) -> tuple[bool, str]:
+    """(True, "") when mtt-track tracks a polar detections file (with its range_rate column
+    and range_rate_sigma), else (False, its message)."""
     with tempfile.TemporaryDirectory(prefix="mtt_polar_probe_") as td:
         cfg, det, trk = (os.path.join(td, n) for n in ("s.json", "d.csv", "t.csv"))
         with open(cfg, "w", encoding="utf-8") as f:
-            json.dump({"measurement": "polar", "sensor_xy": [0.0, 0.0], "meas_sigma": [10.0, 0.01]}, f)
+            json.dump({"measurement": "polar", "sensor_xy": [0.0, 0.0], "meas_sigma": [10.0, 0.01],
+                       **({"range_rate_sigma": 1.0} if range_rate else {})}, f)
         with open(det, "w", encoding="utf-8") as f:
-            f.write("scan,time,range,bearing,amplitude\n0,0,1000,0.5,\n1,1,1001,0.5,\n")
+            f.write("scan,time,range,bearing,amplitude,range_rate\n0,0,1000,0.5,,1\n1,1,1001,0.5,,1\n"
+                    if range_rate else "scan,time,range,bearing,amplitude\n0,0,1000,0.5,\n1,1,1001,0.5,\n")
         try:
             mc.run_tracker(exe, cfg, det, trk, timeout=60.0)
         except mc.TrackerError as e:
@@ -127,9 +131,11 @@ def shuffle_check(scn: dict, exe: str, seed: int, out_dir: str) -> bool:
         return fa.read() == fb.read()
 
 
-def run_rows(scn, runs, exe, jobs, seed0, sweep, rr_sigma, stonesoup_q, polar_ok, associator="ehm",
+def run_rows(scn, runs, exe, jobs, seed0, sweep, rr_sigma, stonesoup_q, support, associator="ehm",
              log=sys.stderr):
-    """The rows of one scenario (the module's doc); a row left out is {"row", "skipped": reason}."""
+    """The rows of one scenario (the module's doc); a row left out is {"row", "skipped": reason}.
+
+    ``support``: {"polar": (ok, message), "polar+rr": (ok, message)}, polar_support's answers."""
     rows = []
     mode = scenario.tracker_value(scn, "association")
 
@@ -145,11 +151,13 @@ def run_rows(scn, runs, exe, jobs, seed0, sweep, rr_sigma, stonesoup_q, polar_ok
     polar_rows = (("polar", scn), ("polar+rr", with_settings(
         scn, {"sigma_range_rate": rr_sigma}, {"range_rate_sigma": rr_sigma})))
     for name, s in polar_rows:
-        if polar_ok[0]:
+        ok, msg = support[name]
+        if ok:
             one(name, s)
         else:
-            rows.append({"row": name, "skipped": f"mtt-track refuses polar input: {polar_ok[1]}"})
-            log.write(f"  {scn['name']}: {name:16s} skipped (mtt-track refuses polar input)\n")
+            what = "polar input" if name == "polar" else "polar input with range rate"
+            rows.append({"row": name, "skipped": f"mtt-track refuses {what}: {msg}"})
+            log.write(f"  {scn['name']}: {name:16s} skipped (mtt-track refuses {what})\n")
     for sig in sweep:
         one(f"xy sigma={sig:g}", converted_scenario(scn, sig))
     if stonesoup_q is not None:
@@ -235,10 +243,12 @@ def main(argv=None):
     if exe is None:
         print("radar_compare.py: no mtt-track binary (give --mtt-track or build build/host-float)", file=sys.stderr)
         return 2
-    polar_ok = polar_support(exe)
-    if not polar_ok[0]:
-        sys.stderr.write(f"radar_compare.py: {exe} refuses polar input ({polar_ok[1]}): the polar rows are "
-                         f"left out\n")
+    support = {"polar": polar_support(exe), "polar+rr": polar_support(exe, True)}
+    polar_ok = support["polar"]
+    for name, (ok, msg) in support.items():
+        if not ok:
+            sys.stderr.write(f"radar_compare.py: {exe} refuses {'polar input' if name == 'polar' else 'range rate'} "
+                             f"({msg}): the {name} row is left out\n")
     os.makedirs(a.out, exist_ok=True)
     text, failed = "", 0
     for k, (f, scn) in enumerate(scns):
@@ -246,7 +256,7 @@ def main(argv=None):
         d = os.path.join(a.out, scn["name"])
         os.makedirs(d, exist_ok=True)
         rows = run_rows(scn, a.runs, exe, a.jobs, a.seed0, a.sweep, a.range_rate_sigma,
-                        None if a.no_stonesoup else a.stonesoup_q, polar_ok, a.stonesoup_associator)
+                        None if a.no_stonesoup else a.stonesoup_q, support, a.stonesoup_associator)
         acc = acceptance(rows)
         t = table(f"{scn['name']} ({a.runs} runs, seeds {a.seed0}..{a.seed0 + a.runs - 1}, "
                   f"{scn['scans']['count']} scans)", rows, acc)

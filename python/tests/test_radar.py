@@ -294,6 +294,8 @@ class TestRadarCompare(unittest.TestCase):
                            timeout=600)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("refuses polar input", r.stderr)
+        self.assertIn("refuses range rate", r.stderr)
+        self.assertFalse(radar_compare.polar_support(FAKE, True)[0])
         with open(os.path.join(d, "out", "radar_unit", "summary.json")) as f:
             summ = json.load(f)
         rows = {row["row"]: row for row in summ["rows"]}
