@@ -109,6 +109,9 @@ def table(name: str, rows: list[dict], acc: dict | None) -> str:
     lines = [f"{name}", f"{'row':24s} {'GOSPA':>9s} {'ID sw/run':>9s} {'false/scan':>10s} {'tracked':>8s} "
              f"{'ms/frame':>8s}"]
     for r in rows:
+        if "skipped" in r:  # a row that could not run (mtt_sim.radar_compare's polar rows): why
+            lines.append(f"{r['row']:24s} skipped: {r['skipped']}")
+            continue
         ms = "-" if r.get("ms_per_frame") is None else f"{r['ms_per_frame']:.3f}"
         lines.append(f"{r['row']:24s} {r['gospa']:9.2f} {r['idsw']:9.2f} {r['false']:10.4f} {r['tracked']:8.3f} "
                      f"{ms:>8s}")

@@ -3,7 +3,9 @@
 
 In memory, each file is a dict of equal-length numpy arrays (a "table"):
 
-- detections: scan (int), time, x, y, amp (float; NaN = empty amplitude)
+- detections: scan (int), time, x, y, amp (float; NaN = empty amplitude);
+  a radar's polar detections have range, bearing (and range_rate) instead
+  of x, y (header ``scan,time,range,bearing,amplitude[,range_rate]``)
   The table holds real detections only; the writer adds the single empty
   row ``scan,time,,,`` for every scan that has none, so it needs the times
   of all scans.
@@ -24,14 +26,16 @@ import os
 import numpy as np
 
 DET_HEADER = "scan,time,x,y,amplitude"
+POLAR_HEADER = "scan,time,range,bearing,amplitude"
+RANGE_RATE_COLUMN = "range_rate"  # optional last column of a polar file
 TRUTH_HEADER = "scan,time,target,x,y,vx,vy"
 TRACKS_HEADER = "scan,time,track,status,x,y,vx,vy,existence,pxx,pxy,pyy"
 
 __all__ = [
-    "DET_HEADER", "TRUTH_HEADER", "TRACKS_HEADER", "FormatError",
+    "DET_HEADER", "POLAR_HEADER", "RANGE_RATE_COLUMN", "TRUTH_HEADER", "TRACKS_HEADER", "FormatError",
     "empty_det", "empty_truth", "empty_tracks",
     "write_det", "write_truth", "write_settings", "format_det", "format_truth",
-    "read_det", "read_truth", "read_tracks", "parse_tracks",
+    "read_det", "read_polar_det", "read_truth", "read_tracks", "parse_tracks",
 ]
 
 
@@ -66,8 +70,15 @@ def empty_tracks():
 
 
 def format_det(det: dict, times) -> str:
-    """Detections CSV text; ``times[k]`` is the time of scan k (all scans)."""
-    lines = [DET_HEADER]
+    """Detections CSV text; ``times[k]`` is the time of scan k (all scans).
+
+    A table with ``range`` and ``bearing`` (a radar's) gives the polar file,
+    with its ``range_rate`` column when the table has one."""
+    polar = "range" in det
+    rate = polar and RANGE_RATE_COLUMN in det
+    cols = ("range", "bearing") if polar else ("x", "y")
+    lines = [POLAR_HEADER + ("," + RANGE_RATE_COLUMN if rate else "") if polar else DET_HEADER]
+    empty = ",,," if rate else ",,"
     scans = np.asarray(det["scan"], int)
     order = np.argsort(scans, kind="stable")
     pos = 0
@@ -75,13 +86,14 @@ def format_det(det: dict, times) -> str:
     for k, t in enumerate(times):
         ts = _f(t)
         if pos >= n or scans[order[pos]] != k:
-            lines.append(f"{k},{ts},,,")
+            lines.append(f"{k},{ts},{empty}")
             continue
         while pos < n and scans[order[pos]] == k:
             i = order[pos]
             a = det["amp"][i]
             amp = "" if not np.isfinite(a) else f"{float(a):.6g}"
-            lines.append(f"{k},{ts},{_f(det['x'][i])},{_f(det['y'][i])},{amp}")
+            rr = f",{_f(det[RANGE_RATE_COLUMN][i])}" if rate else ""
+            lines.append(f"{k},{ts},{_f(det[cols[0]][i])},{_f(det[cols[1]][i])},{amp}{rr}")
             pos += 1
     if pos != n:
         raise ValueError("detections reference a scan beyond the scan times")
@@ -144,28 +156,37 @@ def _num(path, n, field, text, *, empty_ok=False, integer=False):
 
 
 def _read(path, header, parse_row):
+    """Rows of a CSV whose header is ``header`` (or one of the tuple ``header``; the first
+    matching one's index then goes to parse_row as its last argument)."""
     rows = []
     it = _lines(path)
     try:
         n, first = next(it)
     except StopIteration:
         raise FormatError(f"{path}: empty file (no header)") from None
-    if first.strip() != header:
-        raise FormatError(f"{path}:{n}: header must be '{header}', got '{first.strip()}'")
+    several = isinstance(header, tuple)
+    heads = header if several else (header,)
+    if first.strip() not in heads:
+        want = "' or '".join(heads)
+        raise FormatError(f"{path}:{n}: header must be '{want}', got '{first.strip()}'")
+    which = heads.index(first.strip())
+    header = heads[which]
     ncol = header.count(",") + 1
     for n, line in it:
         f = line.split(",")
         if len(f) != ncol:
             raise FormatError(f"{path}:{n}: expected {ncol} fields, got {len(f)}")
-        rows.append(parse_row(path, n, [a.strip() for a in f]))
+        f = [a.strip() for a in f]
+        rows.append(parse_row(path, n, f, which) if several else parse_row(path, n, f))
     return rows
 
 
-def read_det(path: str):
-    """Read a detections CSV; returns (table, times) where times maps scan -> time."""
+def _det_rows(path, header, names):
+    """(rows, times) of a detections file: rows (scan, time, a, b, amplitude, extra...) of the
+    columns ``names`` after scan, time; a scan's empty row gives no row."""
     times = {}
 
-    def row(p, n, f):
+    def row(p, n, f, which=0):
         scan = _num(p, n, "scan", f[0], integer=True)
         t = _num(p, n, "time", f[1])
         if scan < 0:
@@ -175,14 +196,35 @@ def read_det(path: str):
         times[scan] = t
         if f[2] == "" and f[3] == "":
             return None
-        return (scan, t, _num(p, n, "x", f[2]), _num(p, n, "y", f[3]), _num(p, n, "amplitude", f[4], empty_ok=True))
+        cols = names[:len(f) - 2]
+        return (scan, t) + tuple(_num(p, n, c, v, empty_ok=(c == "amplitude")) for c, v in zip(cols, f[2:]))
 
-    rows = [r for r in _read(path, DET_HEADER, row) if r is not None]
+    return [r for r in _read(path, header, row) if r is not None], times
+
+
+def read_det(path: str):
+    """Read a detections CSV; returns (table, times) where times maps scan -> time."""
+    rows, times = _det_rows(path, DET_HEADER, ("x", "y", "amplitude"))
     det = empty_det()
     if rows:
         a = list(zip(*rows))
         det = {"scan": np.array(a[0], int), "time": np.array(a[1], float), "x": np.array(a[2], float),
                "y": np.array(a[3], float), "amp": np.array(a[4], float)}
+    return det, times
+
+
+def read_polar_det(path: str):
+    """Read a polar detections CSV (a radar's); returns (table with range, bearing, amp and,
+    when the file has the column, range_rate; times as read_det's)."""
+    rows, times = _det_rows(path, (POLAR_HEADER, POLAR_HEADER + "," + RANGE_RATE_COLUMN),
+                            ("range", "bearing", "amplitude", RANGE_RATE_COLUMN))
+    with open(path, encoding="utf-8") as f:
+        rate = RANGE_RATE_COLUMN in next((ln for ln in f if ln.strip() and not ln.lstrip().startswith("#")), "")
+    a = list(zip(*rows)) if rows else [[] for _ in range(6 if rate else 5)]
+    det = {"scan": np.array(a[0], int), "time": np.array(a[1], float), "range": np.array(a[2], float),
+           "bearing": np.array(a[3], float), "amp": np.array(a[4], float)}
+    if rate:
+        det[RANGE_RATE_COLUMN] = np.array(a[5], float)
     return det, times
 
 

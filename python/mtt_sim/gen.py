@@ -6,6 +6,7 @@ Command line: DIR/<name>.det.csv, .truth.csv, .settings.json.
 
     PYTHONPATH=python python3 -m mtt_sim.gen scenarios/crossing3.json --seed 7 --out out/gen
     PYTHONPATH=python python3 -m mtt_sim.gen scenarios/dense.json --seed 1 --out out/gen --set random_targets.count=80
+    PYTHONPATH=python python3 -m mtt_sim.gen scenarios/recorded/radar_quickstart.json --seed 0 --out out/gen  # polar
 
 Formats: docs/FORMATS.md.  Same scenario + seed = same bytes.
 
@@ -39,6 +40,10 @@ Model (every number comes from the scenario, see scenarios/README.md):
   target's own ``rho`` if it has one, else the scenario's.  Without an
   ``amplitude`` object the amplitudes are still drawn (so the other numbers
   of a seed do not change) but written empty.
+- With ``"sensor": {"kind": "radar", ...}`` the sensor is a radar instead
+  (mtt_sim/radar.py: range, bearing, optional range rate, clutter uniform in
+  range x bearing over its coverage, the polar detections file; or, with
+  ``"output": "xy"``, the user's conversion of it to x, y).
 - Detections of one scan are written in a random order (targets and clutter
   shuffled together) so that no tracker tie rule sees targets first.
 
@@ -57,7 +62,7 @@ import sys
 
 import numpy as np
 
-from . import csvio
+from . import csvio, radar
 from . import scenario as scnmod
 
 __all__ = ["generate", "write_run", "cv_q", "main"]
@@ -133,18 +138,31 @@ def _recorded_truth(scn, times):
         pres, x, y, vx, vy = tracks[tid]
         inside = pres & (x >= a["x"][0]) & (x <= a["x"][1]) & (y >= a["y"][0]) & (y <= a["y"][1])
         for k in np.flatnonzero(inside):
-            present[k].append((tid, float(x[k]), float(y[k]), pd, None))
+            present[k].append((tid, float(x[k]), float(y[k]), pd, None, float(vx[k]), float(vy[k])))
     for k, pres in enumerate(present):  # rows in scan order, ids ascending within a scan
-        for tid, x, y, _, _ in pres:
-            rows.append((k, times[k], tid, x, y, float(tracks[tid][3][k]), float(tracks[tid][4][k])))
+        for tid, x, y, _, _, vx, vy in pres:
+            rows.append((k, times[k], tid, x, y, vx, vy))
     return rows, present
 
 
 def _truth(scn, rng, times):
-    """Return (truth table, per-scan list of (id, x, y, pd) present)."""
+    """Return (truth table, per-scan list of (id, x, y, pd, rho, vx, vy) present)."""
+    rows, present = _truth_rows(scn, rng, times)
+    if radar.is_radar(scn):  # the field is the area and the radar's coverage
+        r = radar.sensor(scn)
+        for k, pres in enumerate(present):
+            z = np.zeros(len(pres))
+            rng, brg, _ = radar.polar_of(r, [p[1] for p in pres], [p[2] for p in pres], z, z)
+            present[k] = [p for p, inside in zip(pres, radar.in_coverage(r, rng, brg)) if inside]
+        keep = {(k, p[0]) for k, pres in enumerate(present) for p in pres}
+        rows = [row for row in rows if (row[0], row[2]) in keep]
+    return _truth_table(rows), present
+
+
+def _truth_rows(scn, rng, times):
+    """The truth's rows (scan, time, id, x, y, vx, vy) inside the area, and the present lists."""
     if "truth" in scn:
-        rows, present = _recorded_truth(scn, times)
-        return _truth_table(rows), present
+        return _recorded_truth(scn, times)
     nscan = len(times)
     dt = float(scn["scans"]["dt"])
     psd = float(scn.get("truth_process_psd", 0.0))
@@ -208,9 +226,9 @@ def _truth(scn, rng, times):
             s = state[tid]
             if a["x"][0] <= s[0] <= a["x"][1] and a["y"][0] <= s[1] <= a["y"][1]:
                 rows.append((k, times[k], tid, s[0], s[1], s[2], s[3]))
-                pres.append((tid, s[0], s[1], byid[tid]["pd"], byid[tid].get("rho")))
+                pres.append((tid, s[0], s[1], byid[tid]["pd"], byid[tid].get("rho"), s[2], s[3]))
         present.append(pres)
-    return _truth_table(rows), present
+    return rows, present
 
 
 def _truth_table(rows):
@@ -271,6 +289,57 @@ def generate(scn: dict, seed: int, association: str | None = None) -> dict:
     rng_truth, rng_det, rng_clut, rng_order = _streams(seed)
     times = scnmod.scan_times(scn)
     truth, present = _truth(scn, rng_truth, times)
+    if radar.is_radar(scn):
+        detections = _radar_detections(scn, present, times, rng_det, rng_clut, rng_order)
+    else:
+        detections = _xy_detections(scn, present, times, rng_det, rng_clut, rng_order)
+    return {
+        "name": scn["name"],
+        "seed": int(seed),
+        "times": np.array(times, float),
+        "truth": truth,
+        "det": detections,
+        "settings": scnmod.tracker_settings(scn, association),
+        "seeded_targets": scnmod.seeded_targets(scn),
+    }
+
+
+def _tables(cols):
+    detections = {k: (np.concatenate(v) if v else np.zeros(0)) for k, v in cols.items()}
+    detections["scan"] = detections["scan"].astype(int)
+    detections["origin"] = detections["origin"].astype(int)
+    return detections
+
+
+def _radar_detections(scn, present, times, rng_det, rng_clut, rng_order):
+    """The radar's detections table (range, bearing, range_rate with sigma_range_rate; x, y with output xy)."""
+    r = radar.sensor(scn)
+    amp_cfg = scn.get("amplitude")
+    rho = float(amp_cfg["rho"]) if amp_cfg else 0.0
+    cl = scn.get("clutter", {"model": "none"})
+    measure = radar.clutter_measure(r)
+    cols = {"scan": [], "time": [], "range": [], "bearing": [], "range_rate": [], "amp": [], "origin": []}
+    for k, pres in enumerate(present):
+        tr, tb, trr, tamp, org = radar.measure(r, pres, rng_det, rho)
+        m = _clutter_count(cl, measure, rng_clut)
+        cr, cb, crr, camp = radar.clutter(r, m, rng_clut)
+        n = len(tr) + m
+        perm = rng_order.permutation(n)
+        cols["scan"].append(np.full(n, k, int))
+        cols["time"].append(np.full(n, times[k]))
+        for key, a, b in (("range", tr, cr), ("bearing", tb, cb), ("range_rate", trr, crr), ("amp", tamp, camp)):
+            cols[key].append(np.concatenate([a, b])[perm])
+        if not amp_cfg:
+            cols["amp"][-1] = np.full(n, np.nan)
+        cols["origin"].append(np.concatenate([org, -np.ones(m, int)])[perm])
+    det = _tables(cols)
+    if r["srr"] is None:
+        del det["range_rate"]
+    return radar.converted(det, r["xs"], r["ys"]) if r["output"] == "xy" else det
+
+
+def _xy_detections(scn, present, times, rng_det, rng_clut, rng_order):
+    """The x, y sensor's detections table."""
     sx, sy = (float(v) for v in scn["meas_sigma"])
     amp_cfg = scn.get("amplitude")
     rho = float(amp_cfg["rho"]) if amp_cfg else 0.0
@@ -309,18 +378,7 @@ def generate(scn: dict, seed: int, association: str | None = None) -> dict:
         cols["y"].append(ally[perm])
         cols["amp"].append(alla[perm] if amp_cfg else np.full(len(allx), np.nan))
         cols["origin"].append(allo[perm])
-    detections = {k: (np.concatenate(v) if v else np.zeros(0)) for k, v in cols.items()}
-    detections["scan"] = detections["scan"].astype(int)
-    detections["origin"] = detections["origin"].astype(int)
-    return {
-        "name": scn["name"],
-        "seed": int(seed),
-        "times": np.array(times, float),
-        "truth": truth,
-        "det": detections,
-        "settings": scnmod.tracker_settings(scn, association),
-        "seeded_targets": scnmod.seeded_targets(scn),
-    }
+    return _tables(cols)
 
 
 def write_run(run: dict, out_dir: str, stem: str | None = None) -> dict:
@@ -357,7 +415,7 @@ def main(argv=None):
     except (scnmod.ScenarioError, OSError) as e:
         print(f"gen.py: {e}", file=sys.stderr)
         return 2
-    ndet = len(run["det"]["x"])
+    ndet = len(run["det"]["scan"])
     ntgt = int((run["det"]["origin"] >= 0).sum())
     print(f"{paths['det']}: {len(run['times'])} scans, {ndet} detections ({ntgt} from targets, "
           f"{int((run['det']['origin'] == -1).sum())} clutter, {int((run['det']['origin'] == -2).sum())} merged)")

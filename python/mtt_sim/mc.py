@@ -53,7 +53,7 @@ import time
 
 import numpy as np
 
-from . import csvio, gen, metrics, report
+from . import csvio, gen, metrics, radar, report
 from . import scenario as scnmod
 
 __all__ = ["find_mtt_track", "find_tracker", "text_values", "in_process_available", "track_in_process", "IN_PROCESS",
@@ -129,6 +129,8 @@ def track_in_process(run: dict, printed=("x", "y")) -> tuple[dict, float]:
     from mtt.tracker import TABLE_COLUMNS
 
     det = run["det"]
+    if "range" in det:
+        raise TrackerError("the mtt package does not take polar detections: --tracker mtt-track")
     times = text_values(run["times"], 10)
     order = np.argsort(np.asarray(det["scan"], int), kind="stable")
     scans = np.asarray(det["scan"], int)[order]
@@ -546,7 +548,11 @@ def build_summary(scn: dict, scenario_file: str, overrides, modes, runs, seed0, 
         "jobs": mc["jobs"], "wall_s": mc["wall_s"],
         "scan_times": scnmod.scan_times(scn),
         "area": scn["area"],
-        "meas_sigma": scn["meas_sigma"],
+        # a radar's: its range sigma on both axes (the plots' gate ellipses) and, for its polar
+        # file, its position (the plots show the detections converted)
+        "meas_sigma": scn.get("meas_sigma") or [radar.sensor(scn)["sr"]] * 2,
+        **({"sensor_xy": [radar.sensor(scn)["xs"], radar.sensor(scn)["ys"]]}
+           if radar.is_radar(scn) and radar.sensor(scn)["output"] == "polar" else {}),
         "metrics": {"match_distance": scn.get("metrics", {}).get("match_distance"),
                     "gospa_c": scn.get("metrics", {}).get("gospa_c"),
                     "gospa_p": 1, "gospa_alpha": 2},

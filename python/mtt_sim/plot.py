@@ -251,7 +251,12 @@ def plot_all(summary: dict, base_dir: str, out_dir: str | None = None) -> list[s
     truth_p = os.path.join(run0, f"{name}.truth.csv")
     if not (os.path.isfile(det_p) and os.path.isfile(truth_p)):
         return paths
-    det, _ = csvio.read_det(det_p)
+    if "sensor_xy" in summary:  # a radar's polar detections, shown where the user's conversion puts them
+        from . import radar  # noqa: PLC0415
+
+        det = radar.converted(csvio.read_polar_det(det_p)[0], *summary["sensor_xy"])
+    else:
+        det, _ = csvio.read_det(det_p)
     truth = csvio.read_truth(truth_p)
     rep = summary.get("report", {})
     for m in summary["modes"]:

@@ -33,6 +33,7 @@ __all__ = [
     "manoeuvre_windows",
     "scan_times",
     "area_size",
+    "clutter_measure",
     "seeded_targets",
     "tracker_settings",
     "tracker_value",
@@ -52,6 +53,9 @@ TRACKER_KEYS = {
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
     "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_decide", "split_provisional_exist", "split_provisional_scans", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
 }
+# issue 26's polar settings of a radar scene (docs/FORMATS.md once mtt-track reads them; then
+# they move into TRACKER_KEYS above, which python/tests/test_gen.py holds equal to that table)
+POLAR_TRACKER_KEYS = {"measurement", "sensor_xy", "range_rate_sigma"}
 
 ASSOC_MODES = (
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
@@ -63,7 +67,7 @@ ASSOC_MODES = (
 TRACKER_DEFAULTS = {"meas_sigma": [1.0, 1.0], "pg": 0.999, "association": "lm-ihpda"}
 
 _TOP_KEYS = {
-    "name", "description", "source", "units", "area", "scans", "pd", "meas_sigma",
+    "name", "description", "source", "units", "area", "scans", "sensor", "pd", "meas_sigma",
     "clutter", "amplitude", "truth_process_psd", "resolution", "targets", "groups",
     "random_targets", "splits", "truth", "tracker", "tracker_notes", "metrics", "report",
 }
@@ -308,7 +312,12 @@ def validate(scn: dict, source: str = "<string>") -> None:
     _num(scn["scans"], "dt", source, "scans", lo=0, lo_open=True)
     _num(scn["scans"], "t0", source, "scans", required=False)
     _num(scn, "pd", source, "", lo=0, hi=1)
-    _pair(scn, "meas_sigma", source, "", positive=True)
+    if "sensor" in scn:
+        from . import radar  # noqa: PLC0415
+
+        radar.validate(scn, source, _num, _pair, _check_keys, _err)
+    else:
+        _pair(scn, "meas_sigma", source, "", positive=True)
     _num(scn, "truth_process_psd", source, "", lo=0, required=False)
     _num(scn, "resolution", source, "", lo=0, required=False)
 
@@ -317,7 +326,8 @@ def validate(scn: dict, source: str = "<string>") -> None:
     model = cl.get("model")
     if model == "poisson":
         if ("density" in cl) == ("mean" in cl):
-            _err(source, "clutter", "poisson needs exactly one of 'density' (per unit area) or 'mean' (per scan)")
+            _err(source, "clutter", "poisson needs exactly one of 'density' (per unit area; a radar's: per unit "
+                                    "of range x bearing) or 'mean' (per scan)")
         _num(cl, "density", source, "clutter", lo=0, required=False)
         _num(cl, "mean", source, "clutter", lo=0, required=False)
     elif model == "binomial":
@@ -394,7 +404,7 @@ def validate(scn: dict, source: str = "<string>") -> None:
     if not isinstance(trk, dict):
         _err(source, "tracker", "must be an object (a docs/FORMATS.md settings object)")
     for k in trk:
-        if k not in TRACKER_KEYS:
+        if k not in TRACKER_KEYS and k not in POLAR_TRACKER_KEYS:
             _err(source, f"tracker.{k}", "not a docs/FORMATS.md settings key (mtt-track would reject it)")
     if "association" in trk and trk["association"] not in ASSOC_MODES:
         _err(source, "tracker.association", f"must be one of {', '.join(ASSOC_MODES)}")
@@ -440,6 +450,16 @@ def area_size(scn: dict) -> float:
     """Area of the surveillance region in the scenario's length unit squared."""
     a = scn["area"]
     return (a["x"][1] - a["x"][0]) * (a["y"][1] - a["y"][0])
+
+
+def clutter_measure(scn: dict) -> float:
+    """The measure over which the clutter is uniform, a clutter density's unit: the area, or
+    a radar's range span x bearing span (length x radian)."""
+    if "sensor" in scn:
+        from . import radar  # noqa: PLC0415
+
+        return radar.clutter_measure(radar.sensor(scn))
+    return area_size(scn)
 
 
 def expand_targets(scn: dict):

@@ -71,7 +71,7 @@ def mean_clutter(scn: dict) -> float:
     """Mean number of clutter detections per scan of the scenario's clutter model."""
     cl = scn.get("clutter", {})
     if cl.get("model") == "poisson":
-        return float(cl["mean"]) if "mean" in cl else float(cl["density"]) * scenario.area_size(scn)
+        return float(cl["mean"]) if "mean" in cl else float(cl["density"]) * scenario.clutter_measure(scn)
     if cl.get("model") == "binomial":
         return int(cl["n"]) * float(cl["p"])
     return 0.0
@@ -96,9 +96,9 @@ class JpdaTracker:
                  associator: str = "jpda"):
         trk = scn["tracker"]
         self.cfg = {k: float(trk.get(k, v)) for k, v in DEFAULTS.items()}
-        self.cfg["meas_sigma"] = [float(v) for v in trk.get("meas_sigma", scn["meas_sigma"])]
+        self.cfg["meas_sigma"] = [float(v) for v in (trk["meas_sigma"] if "meas_sigma" in trk else scn["meas_sigma"])]
         if self.cfg["clutter_density"] <= 0.0:  # mtt estimates it: give Stone Soup the true mean
-            self.cfg["clutter_density"] = mean_clutter(scn) / scenario.area_size(scn)
+            self.cfg["clutter_density"] = mean_clutter(scn) / scenario.clutter_measure(scn)
         if self.cfg["clutter_density"] <= 0.0:
             raise scenario.ScenarioError("Stone Soup's PDAHypothesiser needs a clutter density > 0 "
                                          "(tracker.clutter_density, or clutter in the scenario)")
@@ -134,23 +134,19 @@ class JpdaTracker:
         from stonesoup.hypothesiser.probability import PDAHypothesiser
         from stonesoup.initiator.simple import MultiMeasurementInitiator
         from stonesoup.measures import Mahalanobis
-        from stonesoup.models.measurement.linear import LinearGaussian
         from stonesoup.models.transition.linear import CombinedLinearGaussianTransitionModel, ConstantVelocity
         from stonesoup.predictor.kalman import KalmanPredictor
         from stonesoup.tracker.simple import MultiTargetMixtureTracker
         from stonesoup.types.state import GaussianState
-        from stonesoup.updater.kalman import KalmanUpdater
 
         c = self.cfg
-        sx, sy = c["meas_sigma"]
-        self.meas_model = LinearGaussian(4, (0, 2), np.diag([sx * sx, sy * sy]))
+        self.meas_model, updater = self._measurement()
         predictor = KalmanPredictor(CombinedLinearGaussianTransitionModel(
             [ConstantVelocity(c["process_psd"]), ConstantVelocity(c["process_psd"])]))
-        updater = KalmanUpdater(self.meas_model)
         jpda = (JPDA if self.associator == "jpda" else JPDAwithEHM)(PDAHypothesiser(
             predictor, updater, clutter_spatial_density=c["clutter_density"], prob_detect=c["pd"], prob_gate=c["pg"]))
         deleters = [UpdateTimeStepsDeleter(int(arg)) if kind == "steps"
-                    else CovarianceBasedDeleter(arg * (sx * sx + sy * sy), mapping=[0, 2])
+                    else CovarianceBasedDeleter(arg * self._position_variance(), mapping=[0, 2])
                     for kind, arg in self.deleter]
         deleter = deleters[0] if len(deleters) == 1 else CompositeDeleter(deleters, intersect=False)
         v2 = c["vel_std"] ** 2
@@ -162,6 +158,24 @@ class JpdaTracker:
             updater=updater, min_points=self.min_points)
         return MultiTargetMixtureTracker(initiator=initiator, deleter=deleter, detector=None,
                                          data_associator=jpda, updater=updater)
+
+    def _measurement(self):
+        """(measurement model, updater): LinearGaussian on x, y with R = diag(meas_sigma^2), KalmanUpdater."""
+        from stonesoup.models.measurement.linear import LinearGaussian
+        from stonesoup.updater.kalman import KalmanUpdater
+
+        sx, sy = self.cfg["meas_sigma"]
+        model = LinearGaussian(4, (0, 2), np.diag([sx * sx, sy * sy]))
+        return model, KalmanUpdater(model)
+
+    def _position_variance(self) -> float:
+        """sigma_x^2 + sigma_y^2 of one detection (the covariance deleter's unit)."""
+        sx, sy = self.cfg["meas_sigma"]
+        return sx * sx + sy * sy
+
+    def _vector(self, z):
+        """A detection's Stone Soup state vector from its row of :meth:`detections`."""
+        return z.reshape(2, 1)
 
     def seeded_tracks(self, dt: float, t0: datetime.datetime) -> list:
         """The scenario's initial_tracks as Stone Soup tracks ([x, vx, y, vy]), §12.1's covariance or "P"."""
@@ -216,7 +230,7 @@ class JpdaTracker:
         try:
             for k, t in enumerate(ts):
                 # at scan 0 the seeded tracks' prediction is over 0 s (F = I, Q = 0): mtt's first frame (§15)
-                dets = {Detection(z.reshape(2, 1), timestamp=t, measurement_model=self.meas_model)
+                dets = {Detection(self._vector(z), timestamp=t, measurement_model=self.meas_model)
                         for z in per_scan[k]}
                 _, live = tracker.update_tracker(t, dets)
                 self._record(k, live, ids, rows)
@@ -231,6 +245,59 @@ class JpdaTracker:
         for i, name in enumerate(("x", "y", "vx", "vy", "pxx", "pxy", "pyy")):
             tracks[name] = a[:, 2 + i]
         return tracks, elapsed
+
+
+class EkfJpdaTracker(JpdaTracker):
+    """JpdaTracker on a radar's polar detections: Stone Soup's CartesianToBearingRange with an EKF.
+
+    The measurement model is CartesianToBearingRange(4, (0, 2)) at the
+    tracker settings' ``sensor_xy`` (translation_offset), noise covariance
+    diag(sigma_b^2, sigma_r^2) in Stone Soup's [bearing, range] order from
+    ``meas_sigma`` = [sigma_r, sigma_b]; ExtendedKalmanUpdater; the
+    PDAHypothesiser's clutter density is the settings' polar
+    ``clutter_density`` (per range x bearing: the measurement space's own
+    unit). The initiator is the same, its first covariance the detection's
+    converted through the model's inverse Jacobian (Stone Soup's
+    SimpleMeasurementInitiator for a reversible model). No range rate.
+    """
+
+    def __init__(self, scn: dict, *args, **kwargs):
+        super().__init__(scn, *args, **kwargs)
+        trk = scn["tracker"]
+        if trk.get("measurement") != "polar" or "sensor_xy" not in trk:
+            raise scenario.ScenarioError("the EKF JPDA needs polar tracker settings (measurement polar, sensor_xy, "
+                                         "meas_sigma [sigma_range, sigma_bearing])")
+        if self.initial:
+            raise scenario.ScenarioError("the EKF JPDA takes no initial_tracks")
+        self.cfg["sensor_xy"] = [float(v) for v in trk["sensor_xy"]]
+
+    def _measurement(self):
+        from stonesoup.models.measurement.nonlinear import CartesianToBearingRange
+        from stonesoup.updater.kalman import ExtendedKalmanUpdater
+
+        sr, sb = self.cfg["meas_sigma"]
+        xs, ys = self.cfg["sensor_xy"]
+        model = CartesianToBearingRange(4, (0, 2), np.diag([sb * sb, sr * sr]),
+                                        translation_offset=np.array([[xs], [ys]]))
+        return model, ExtendedKalmanUpdater(model)
+
+    def _position_variance(self) -> float:
+        return 2.0 * self.cfg["meas_sigma"][0] ** 2
+
+    def _vector(self, z):
+        from stonesoup.types.angle import Bearing
+        from stonesoup.types.array import StateVector
+
+        return StateVector([Bearing(z[0]), z[1]])
+
+    def detections(self, run: dict) -> list:
+        """Per scan, the (n, 2) [bearing, range] as mtt-track reads them from the polar file (%.10g), in file order."""
+        det = run["det"]
+        if "range" not in det:
+            raise mc.TrackerError("the EKF JPDA needs a radar's polar detections")
+        scans = np.asarray(det["scan"], int)
+        z = np.column_stack([mc.text_values(det["bearing"], 10), mc.text_values(det["range"], 10)])
+        return [z[scans == k] for k in range(len(run["times"]))]
 
 
 def _fmt_s(ms_per_frame, nscan) -> str:

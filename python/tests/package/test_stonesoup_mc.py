@@ -103,3 +103,39 @@ def test_bad_arguments_and_no_stonesoup(ssmc, tmp_path):
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert p.returncode == 2 and "Stone Soup is not installed" in p.stderr, p.stderr
     assert not os.path.exists(tmp_path / "o")
+
+
+def test_ekf_jpda_tracks_a_radar_target(ssmc, tmp_path):
+    """EkfJpdaTracker (CartesianToBearingRange, EKF) on a radar's polar detections: one target at
+    8 km, sigma_range 20 m, sigma_bearing 2 mrad (16 m across), PD 1, no clutter."""
+    import json
+
+    from mtt_sim import csvio, gen, mc, scenario
+
+    scn = scenario.loads(json.dumps({
+        "name": "radar_ekf", "area": {"x": [-20000, 20000], "y": [-20000, 20000]},
+        "scans": {"count": 30, "dt": 2.0}, "pd": 1.0, "clutter": {"model": "none"},
+        "sensor": {"kind": "radar", "position": [1000.0, -500.0], "sigma_range": 20.0, "sigma_bearing": 0.002,
+                   "range_max": 15000},
+        "targets": [{"id": 0, "x": 7000, "y": 5000, "vx": -40, "vy": 30}],
+        "tracker": {"measurement": "polar", "sensor_xy": [1000.0, -500.0], "meas_sigma": [20.0, 0.002],
+                    "pd": 1.0, "clutter_density": 1e-6, "vmax": 100, "process_psd": 1.0},
+        "metrics": {"match_distance": 200, "gospa_c": 400}}), "radar_ekf.json")
+    trk = ssmc.EkfJpdaTracker(scn)
+    run = gen.generate(scn, 2)
+    det, _ = csvio.read_polar_det(gen.write_run(run, str(tmp_path), "r")["det"])
+    mine = trk.detections(run)
+    for k, z in enumerate(mine):  # [bearing, range], the file's numbers
+        sel = det["scan"] == k
+        assert np.array_equal(z, np.column_stack([det["bearing"][sel], det["range"][sel]]))
+    res = mc.one_run(scn, ssmc.MODE, 0, 2, trk)
+    assert res["ok"], res.get("error")
+    sc = res["score"]
+    # 5 detections start the track (scan 4), then one track on the target: its position error is
+    # below the larger per-axis sigma (20 m) on average and never above 4 times it
+    assert list(sc["n_confirmed"][4:]) == [1] * 26
+    g = sc["gospa"][4:]
+    assert g.mean() < 20.0 and g.max() < 80.0, g
+    assert sc["mot"]["idsw"] == 0 and sc["mot"]["fp"] == 0
+    with pytest.raises(scenario.ScenarioError):
+        ssmc.EkfJpdaTracker(scenario.load(os.path.join(REPO, "scenarios", "split_fast.json")))
