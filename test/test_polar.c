@@ -498,6 +498,60 @@ static void test_range_rate_lowers_the_velocity_error(void)
     TEST_ASSERT_TRUE(with_rr < 0.5 * without); /* 0.21 against 0.52 m/s in float */
 }
 
+/* The IMM (motion imm) takes polar detections
+ * with range rates: the target of the range-rate scene is tracked with one
+ * identity by an IMM track in lm-ihpda, ihpda, lm-ipda and ipda. */
+static void test_imm_takes_polar_detections(void)
+{
+#if MTT_WITH_IMM
+    static const mtt_assoc modes[] = {MTT_ASSOC_LM_IHPDA, MTT_ASSOC_IHPDA, MTT_ASSOC_LM_IPDA, MTT_ASSOC_IPDA};
+    size_t m;
+    make_scene();
+    for (m = 0; m < sizeof modes / sizeof modes[0]; ++m) {
+        mtt_params p;
+        int k;
+        uint32_t id = 0xFFFFFFFFu, ids = 0;
+        uint8_t models = 0;
+        polar_params(&p);
+        p.association = modes[m];
+        p.process_psd = MTT_R(0.0);
+        p.max_accel = MTT_R(5.0); /* the IMM from max_accel (ALGORITHMS.md 2.2) */
+        p.motion = MTT_MOTION_IMM;
+        p.range_rate_sigma = MTT_R(0.5);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+        rng_state = 4242u;
+        for (k = 0; k < SCANS; ++k) {
+            mtt_polar in[8];
+            size_t i, n = (size_t)scene_n[k], cnt;
+            const double dx = truth[k][0] + 1000.0, dy = truth[k][1] - 500.0, r = sqrt(dx * dx + dy * dy);
+            for (i = 0; i < n; ++i) {
+                const int target = i == 0 && fabs((double)scene[k][i].range - r) < 60.0;
+                in[i] = scene[k][i];
+                in[i].range_rate = (mtt_real)(target ? (dx * 120.0 - dy * 20.0) / r + 0.5 * gauss01()
+                                                     : -150.0 + 300.0 * unif());
+                in[i].has_range_rate = 1;
+            }
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, n));
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
+            for (i = 0; i < cnt; ++i) {
+                mtt_track_view v;
+                TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &v));
+                if (v.confirmed && fabs((double)v.x[0] - truth[k][0]) < 100.0 &&
+                    fabs((double)v.x[1] - truth[k][1]) < 100.0) {
+                    models = v.n_models;
+                    ids += v.id != id;
+                    id = v.id;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT32(1u, ids);
+        TEST_ASSERT_TRUE(models >= 2u); /* an IMM track */
+    }
+#else
+    TEST_IGNORE_MESSAGE("no IMM in this build");
+#endif
+}
+
 static void test_range_rate_needs_its_sigma(void)
 {
     mtt_params p;
@@ -554,6 +608,7 @@ int main(void)
     RUN_TEST(test_range_rate_gates_and_weighs);
     RUN_TEST(test_birth_takes_the_radial_velocity);
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
+    RUN_TEST(test_imm_takes_polar_detections);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else
     RUN_TEST(test_build_without_meas_cov_refuses_polar);

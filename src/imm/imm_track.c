@@ -221,6 +221,11 @@ mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
             if (!(d2 <= trk->gamma)) {
                 continue;
             }
+#if MTT_WITH_MEAS_COV
+            if (ms->has_rdot) {
+                c[m].p *= mtt_polar_rdot_lik(trk, tf, ms); /* its range rate, as the pair's p (§3.2) */
+            }
+#endif
             c[m].lam = pp->lam;
             c[m].amp = ms->amp;
             c[m].idx = pp->meas;
