@@ -447,9 +447,30 @@ static void test_birth_takes_the_radial_velocity(void)
     TEST_ASSERT_TRUE((double)v.P[2][2] < 0.02);
 }
 
-/* The scene of test_tracks_a_target_across_ranges with the target's range
- * rate (sigma 0.5) on its detections and an arbitrary one on clutter: the
- * radial component of the track's velocity error is smaller than without. */
+/* Scan k of the scene of test_tracks_a_target_across_ranges into in, with
+ * (with_rr) the target's range rate (sigma 0.5) on its detection and an
+ * arbitrary one on clutter; e the unit vector from the sensor to the
+ * target.  Returns the count. */
+static size_t rr_frame(int k, int with_rr, mtt_polar in[8], double e[2])
+{
+    size_t i, n = (size_t)scene_n[k];
+    const double dx = truth[k][0] + 1000.0, dy = truth[k][1] - 500.0, r = sqrt(dx * dx + dy * dy);
+    e[0] = dx / r;
+    e[1] = dy / r;
+    for (i = 0; i < n; ++i) {
+        in[i] = scene[k][i];
+        if (with_rr) {
+            const int target = i == 0 && fabs((double)in[i].range - r) < 60.0;
+            in[i].range_rate = (mtt_real)(target ? (dx * 120.0 - dy * 20.0) / r + 0.5 * gauss01()
+                                                 : -150.0 + 300.0 * unif());
+            in[i].has_range_rate = 1;
+        }
+    }
+    return n;
+}
+
+/* That scene: the radial component of the track's velocity error is
+ * smaller with the range rates than without. */
 static double velocity_rms(int with_rr)
 {
     mtt_params p;
@@ -461,17 +482,8 @@ static double velocity_rms(int with_rr)
     rng_state = 4242u;
     for (k = 0; k < SCANS; ++k) {
         mtt_polar in[8];
-        size_t i, n = (size_t)scene_n[k], cnt;
-        const double dx = truth[k][0] + 1000.0, dy = truth[k][1] - 500.0, r = sqrt(dx * dx + dy * dy);
-        const double rr = (dx * 120.0 - dy * 20.0) / r;
-        for (i = 0; i < n; ++i) {
-            in[i] = scene[k][i];
-            if (with_rr) {
-                const int target = i == 0 && fabs((double)in[i].range - r) < 60.0;
-                in[i].range_rate = (mtt_real)(target ? rr + 0.5 * gauss01() : -150.0 + 300.0 * unif());
-                in[i].has_range_rate = 1;
-            }
-        }
+        double e[2];
+        size_t i, n = rr_frame(k, with_rr, in, e), cnt;
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, n));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
         for (i = 0; i < cnt && k >= 10; ++i) {
@@ -479,7 +491,7 @@ static double velocity_rms(int with_rr)
             TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &v));
             if (v.confirmed && fabs((double)v.x[0] - truth[k][0]) < 300.0) {
                 /* the radial component of the velocity error */
-                se += pow(((double)v.x[2] - 120.0) * dx / r + ((double)v.x[3] + 20.0) * dy / r, 2);
+                se += pow(((double)v.x[2] - 120.0) * e[0] + ((double)v.x[3] + 20.0) * e[1], 2);
                 ++counted;
             }
         }
@@ -522,15 +534,8 @@ static void test_imm_takes_polar_detections(void)
         rng_state = 4242u;
         for (k = 0; k < SCANS; ++k) {
             mtt_polar in[8];
-            size_t i, n = (size_t)scene_n[k], cnt;
-            const double dx = truth[k][0] + 1000.0, dy = truth[k][1] - 500.0, r = sqrt(dx * dx + dy * dy);
-            for (i = 0; i < n; ++i) {
-                const int target = i == 0 && fabs((double)scene[k][i].range - r) < 60.0;
-                in[i] = scene[k][i];
-                in[i].range_rate = (mtt_real)(target ? (dx * 120.0 - dy * 20.0) / r + 0.5 * gauss01()
-                                                     : -150.0 + 300.0 * unif());
-                in[i].has_range_rate = 1;
-            }
+            double e[2];
+            size_t i, n = rr_frame(k, 1, in, e), cnt;
             TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, n));
             TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
             for (i = 0; i < cnt; ++i) {
