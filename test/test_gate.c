@@ -227,7 +227,7 @@ static void test_gate_frame_unsorted_input(void)
     tv_init(&trk, &p);
     (void)tv_add_track_s(&trk, MTT_R(0.0), MTT_R(0.0), MTT_R(4.0), MTT_R(1.0), MTT_R(3.0), MTT_R(0.8));
     (void)tv_add_track_s(&trk, MTT_R(5.0), MTT_R(1.0), MTT_R(3.0), MTT_R(-0.5), MTT_R(5.0), MTT_R(0.5));
-    mtt_measure_select(&trk, in, NULL, 3u);
+    mtt_measure_select(&trk, in, NULL, NULL, 3u);
     TEST_ASSERT_EQUAL_UINT32(2u, TV_MEAS_SRC(&trk, 0)); /* z1 */
     TEST_ASSERT_EQUAL_UINT32(1u, TV_MEAS_SRC(&trk, 1)); /* z2 */
     TEST_ASSERT_EQUAL_UINT32(0u, TV_MEAS_SRC(&trk, 2)); /* z3 */

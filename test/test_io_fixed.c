@@ -193,7 +193,7 @@ static void test_detections_out_of_range_counted(void)
     TEST_ASSERT_EQUAL_INT32(0, d.scans[0].rtime);
     TEST_ASSERT_EQUAL_INT32(65536, d.scans[1].rtime);
     TEST_ASSERT_EQUAL_INT32(163840, d.scans[2].rtime);
-    mtt_measure_select(&trk, d.meas, NULL, d.scans[0].count);
+    mtt_measure_select(&trk, d.meas, NULL, NULL, d.scans[0].count);
     TEST_ASSERT_EQUAL_UINT(1u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT(4u, d.out_of_range);
     TEST_ASSERT_EQUAL_UINT32(4u, TV_STATS(&trk).last.meas_out_of_range);
@@ -201,7 +201,7 @@ static void test_detections_out_of_range_counted(void)
 #else
     TEST_ASSERT_TRUE(d.meas[2].x == MTT_R(1e6));
     TEST_ASSERT_TRUE(d.scans[2].rtime == MTT_R(2.5));
-    mtt_measure_select(&trk, d.meas, NULL, d.scans[0].count);
+    mtt_measure_select(&trk, d.meas, NULL, NULL, d.scans[0].count);
     TEST_ASSERT_EQUAL_UINT(5u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT(0u, d.out_of_range);
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_bad);

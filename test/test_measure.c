@@ -29,7 +29,7 @@ static void test_cap_keeps_strongest_in_canonical_order(void)
     uint32_t i;
     TEST_ASSERT_TRUE(n % 7u != 0u);
     sim_amplitude_permutation(many, n);
-    mtt_measure_select(&trk, many, NULL, n);
+    mtt_measure_select(&trk, many, NULL, NULL, n);
     TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(2u * MTT_MAX_MEAS, TV_STATS(&trk).last.meas_dropped);
     for (i = 0; i < MTT_MAX_MEAS; ++i) {
@@ -51,7 +51,7 @@ static void test_cap_without_amplitude_keeps_first(void)
     for (i = 0; i < n; ++i) {
         many[i] = sim_meas((mtt_real)i, MTT_R(0.0), MTT_R(0.0), 0);
     }
-    mtt_measure_select(&trk, many, NULL, n);
+    mtt_measure_select(&trk, many, NULL, NULL, n);
     TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
     for (i = 0; i < MTT_MAX_MEAS; ++i) {
         TEST_ASSERT_EQUAL_UINT32(i, tv_meas_src(&trk, (uint16_t)i));
@@ -73,7 +73,7 @@ static void test_exactly_max_valid_keeps_input_order(void)
     }
     many[3].x = zero / zero; /* NaN */
     many[n / 2u].amplitude = MTT_R(-1.0);
-    mtt_measure_select(&trk, many, NULL, n);
+    mtt_measure_select(&trk, many, NULL, NULL, n);
     TEST_ASSERT_EQUAL_UINT32(2u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT32(0u, TV_STATS(&trk).last.meas_dropped);
     TEST_ASSERT_EQUAL_UINT(MTT_MAX_MEAS, tv_meas_count(&trk));
@@ -95,7 +95,7 @@ static void test_bad_detections_skipped(void)
 {
     mtt_meas m[7];
     sim_bad_mix(m);
-    mtt_measure_select(&trk, m, NULL, 7);
+    mtt_measure_select(&trk, m, NULL, NULL, 7);
     TEST_ASSERT_EQUAL_UINT32(5u, TV_STATS(&trk).last.meas_bad);
     TEST_ASSERT_EQUAL_UINT(2u, tv_meas_count(&trk));
     TEST_ASSERT_EQUAL_UINT32(5u, tv_meas_src(&trk, 0));

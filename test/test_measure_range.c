@@ -44,7 +44,7 @@ static void test_unrepresentable_skipped_and_counted(void)
     in[6] = sim_meas(sat, MTT_POS(4.0), MTT_ZERO, 0);
     in[7] = sim_meas(MTT_POS(-5.0), MTT_POS(6.0), MTT_ZERO, 1); /* kept: amplitude 0 */
     in[8] = sim_meas(MTT_POS(7.0), MTT_POS(8.0), -MTT_AMP(1.0), 1); /* malformed */
-    mtt_measure_select(&trk, in, NULL, 9u);
+    mtt_measure_select(&trk, in, NULL, NULL, 9u);
     TEST_ASSERT_EQUAL_UINT(3u, tv_meas_count(&trk));
 #ifdef MTT_REAL_FIXED
     TEST_ASSERT_EQUAL_UINT32(1u, TV_STATS(&trk).last.meas_bad);

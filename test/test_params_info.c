@@ -32,7 +32,8 @@ static size_t n_values(const mtt_param_info *info)
 static void test_table_lists_the_settings_keys(void)
 {
     static const char *const keys[] = {
-        "association", "lm_ihpda_variant", "contest_beta", "process_psd", "max_accel", "meas_sigma", "pd",
+        "association", "lm_ihpda_variant", "contest_beta", "process_psd", "max_accel", "meas_sigma", "measurement",
+        "sensor_xy", "range_rate_sigma", "pd",
         "pg", "clutter_density", "snr_rho", "amplitude_eta",
 #if MTT_WITH_CONTEST
         "adapt_s_min", "adapt_index", "adapt_memory", "adapt_gain", "adapt_reset_nis", "adapt_s_max",

@@ -118,6 +118,13 @@ typedef enum mtt_model_kind {
                              and a turn-rate psd (imm_turn_psd) in rad²/time³ on ω */
 } mtt_model_kind;
 
+/** Form of the detections (docs/FORMATS.md `measurement`, ALGORITHMS.md §3.2). */
+typedef enum mtt_measurement {
+    MTT_MEASUREMENT_CARTESIAN = 0, /**< x, y (mtt_tracker_step, mtt_tracker_step_cov) */
+    MTT_MEASUREMENT_POLAR = 1      /**< range, bearing from sensor_xy (mtt_tracker_step_polar); needs
+                                        MTT_WITH_MEAS_COV and split false, else MTT_ERR_UNSUPPORTED */
+} mtt_measurement;
+
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
 typedef enum mtt_init_gate {
     MTT_INIT_GATE_VMAX = 0,     /**< |z_k - z_{k-1}| <= vmax * dT */
@@ -159,10 +166,15 @@ typedef struct mtt_params {
     mtt_real contest_beta;      /**< contest threshold on the LM-IPDA beta (ALGORITHMS.md §10.4) */
     mtt_real process_psd;       /**< Sw of the CV model; 0: derived from max_accel (ALGORITHMS.md §2.2) */
     mtt_real max_accel;         /**< largest target acceleration, length/time^2; 0: not given */
-    mtt_real meas_sigma[2];     /**< sx, sy (sigma^2 stays a normal float) */
+    mtt_real meas_sigma[2];     /**< sx, sy (sigma^2 stays a normal float); polar: sigma_range
+                                     (length), sigma_bearing (radians) */
+    mtt_measurement measurement;/**< cartesian or polar detections (ALGORITHMS.md §3.2) */
+    mtt_real sensor_xy[2];      /**< polar: the sensor's position */
+    mtt_real range_rate_sigma;  /**< polar: sigma of a detection's range rate, length/time; 0: none given */
     mtt_real pd;                /**< detection probability; PD PG < 1 holds as pg < 1 */
     mtt_real pg;                /**< gate probability */
-    mtt_real clutter_density;   /**< per unit area; 0 estimates it per track (ALGORITHMS.md §5.2) */
+    mtt_real clutter_density;   /**< per unit area (polar: per unit range x bearing, length rad);
+                                     0 estimates it per track (ALGORITHMS.md §5.2, §3.2) */
     mtt_real snr_rho;           /**< amplitude model rho; 0 ignores amplitude */
     mtt_real amplitude_eta;     /**< background share eta of the amplitude ratio (ALGORITHMS.md §7.6) */
 #if MTT_WITH_CONTEST
@@ -290,6 +302,19 @@ typedef struct mtt_meas {
 typedef struct mtt_meas_cov {
     mtt_real r_xx, r_xy, r_yy;
 } mtt_meas_cov;
+
+/** One polar detection (mtt_tracker_step_polar, ALGORITHMS.md §3.2): range
+ *  in the user's length unit from params.sensor_xy, bearing in radians,
+ *  atan2(y - y_s, x - x_s).  Range must be finite and > 0, bearing finite,
+ *  or the detection is skipped and counted in meas_bad. */
+typedef struct mtt_polar {
+    mtt_real range, bearing;
+    mtt_real amplitude;   /**< >= 0, used when has_amplitude is nonzero */
+    int has_amplitude;    /**< 0: intensity unknown for this detection */
+    mtt_real range_rate;  /**< length/time, finite, used when has_range_rate is nonzero: gated and
+                               updated with as the radial velocity (ALGORITHMS.md §3.2) */
+    int has_range_rate;   /**< 0: no range rate for this detection */
+} mtt_polar;
 
 /** mtt_track_view.parent of a track that did not split off another. */
 #define MTT_NO_PARENT ((uint32_t)0xFFFFFFFFu)
@@ -536,9 +561,39 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
  *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
  *          written, when a cov[i] is nonzero and the build has no
  *          MTT_WITH_MEAS_COV (the firmware configurations, the fixed-point
- *          build) or the tracker runs split = true. */
+ *          build) or the tracker runs split = true; MTT_ERR_UNSUPPORTED
+ *          (this and mtt_tracker_step) when its measurement is polar. */
 MTT_MUST_CHECK mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas,
                                                const mtt_meas_cov *cov, size_t n);
+
+/** mtt_tracker_step with polar detections (ALGORITHMS.md §3.2): each is
+ *  converted to Cartesian with the unbiased converted measurement of Mo et
+ *  al. (1998) from meas_sigma = [sigma_range, sigma_bearing] and given its
+ *  own covariance, and the clutter density at it is clutter_density / range
+ *  (per unit range x bearing to per unit area).  Then as
+ *  mtt_tracker_step_cov; the canonical order is that of the converted
+ *  detections.  A detection with a range rate (has_range_rate) is also
+ *  gated on it and updated with it, an extended Kalman update of the radial
+ *  velocity with variance range_rate_sigma^2, and a birth from it takes its
+ *  radial velocity from it.  det may be NULL when n = 0.  A range, bearing
+ *  or range rate that is not finite, or a range <= 0: skipped, meas_bad.
+ *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
+ *          written, when the tracker's measurement is not polar (and the
+ *          build without MTT_WITH_MEAS_COV, whose params_check refuses
+ *          polar); MTT_ERR_PARAM, before anything is written, when a
+ *          detection has a range rate and range_rate_sigma is 0. */
+MTT_MUST_CHECK mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_polar *det,
+                                                 size_t n);
+
+/** The Cartesian detection and covariance that mtt_tracker_step_polar makes
+ *  of det (ALGORITHMS.md §3.2): sigma = [sigma_range, sigma_bearing] (the
+ *  polar meas_sigma), sensor = sensor_xy.
+ *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if det's range is not finite
+ *          and > 0, its bearing not finite, a sigma not finite and > 0, or
+ *          the result not finite; MTT_ERR_UNSUPPORTED without
+ *          MTT_WITH_MEAS_COV.  On error m and cov are unchanged. */
+MTT_MUST_CHECK mtt_status mtt_polar_to_cartesian(const mtt_real sigma[2], const mtt_real sensor[2],
+                                                 const mtt_polar *det, mtt_meas *m, mtt_meas_cov *cov);
 
 /** Add a known (seeded) track: confirmed, existence 1 (docs/FORMATS.md initial_tracks).
  *  @param x state [x, y, vx, vy]; @param P 4x4 covariance, row-major (16

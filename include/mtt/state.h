@@ -176,6 +176,9 @@ typedef struct mtt_mstore {
     mtt_real x, y, amp;
 #if MTT_WITH_MEAS_COV
     mtt_real R[3];       /* its own covariance when has_R (ALGORITHMS.md §3.1) */
+    mtt_real rng;        /* polar: its measured range (the clutter Jacobian 1/r, §3.2); else 0 */
+    mtt_real rr[2];      /* polar with has_rdot: its range rate and that's variance (§3.2) */
+    uint8_t has_rdot;
     uint8_t has_R;
 #endif
     uint32_t src;        /* input index */
@@ -209,6 +212,7 @@ typedef struct mtt_row_scratch {
     /* a row with detections of their own R (ALGORITHMS.md §3.1): each
      * one's R, and its single-detection state correction K_j nu_j */
     const mtt_real *rj[MTT_MAX_GATED];
+    const mtt_real *rr[MTT_MAX_GATED]; /* each one's range rate and variance, or NULL (§3.2) */
     mtt_real dj[MTT_MAX_GATED][MTT_MAX_STATE];
 #endif
 } mtt_row_scratch;

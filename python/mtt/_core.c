@@ -293,7 +293,9 @@ static PyObject *tracker_add_track(CoreTracker *self, PyObject *args)
  * rows of 3 float64 (x, y, amplitude; NaN amplitude = unknown), already
  * validated by tracker.py (finite coordinates within mtt_real, amplitude >= 0
  * or NaN); cov: n rows of 3 float64 (r_xx, r_xy, r_yy; all 0: meas_sigma's),
- * or None. */
+ * or None; polar (nonzero): rows of 4 float64, range, bearing, amplitude,
+ * range rate (NaN: none), stepped with mtt_tracker_step_polar (ALGORITHMS.md
+ * §3.2), cov None. */
 static PyObject *tracker_step(CoreTracker *self, PyObject *args)
 {
     double time;
@@ -302,12 +304,14 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
     mtt_real rtime;
     mtt_meas *meas = NULL;
     mtt_meas_cov *cov = NULL;
+    mtt_polar *pol = NULL;
     size_t n, i;
     mtt_status st;
     const double *v;
-    int has_cov;
+    int has_cov, polar = 0;
+    size_t w;
 
-    if (!PyArg_ParseTuple(args, "dy*|O", &time, &buf, &cobj))
+    if (!PyArg_ParseTuple(args, "dy*|Oi", &time, &buf, &cobj, &polar))
         return NULL;
     has_cov = cobj != Py_None;
     if (has_cov && PyObject_GetBuffer(cobj, &cbuf, PyBUF_SIMPLE) != 0) {
@@ -320,11 +324,13 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
             PyBuffer_Release(&cbuf);
         return NULL;
     }
-    if (buf.len % (Py_ssize_t)(3 * sizeof(double)) != 0 || (has_cov && cbuf.len != buf.len)) {
+    w = polar ? 4u : 3u;
+    if (buf.len % (Py_ssize_t)(w * sizeof(double)) != 0 || (has_cov && (polar || cbuf.len != buf.len))) {
         PyBuffer_Release(&buf);
         if (has_cov)
             PyBuffer_Release(&cbuf);
-        PyErr_SetString(PyExc_ValueError, "step: the buffers must hold rows of 3 float64, as many of each");
+        PyErr_SetString(PyExc_ValueError, "step: the buffers must hold rows of 3 float64 (polar: 4, no cov), "
+                                          "as many of each");
         return NULL;
     }
     if (!to_real(time, &rtime)) {
@@ -333,12 +339,14 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
             PyBuffer_Release(&cbuf);
         return PyLong_FromLong((long)MTT_ERR_TIME);
     }
-    n = (size_t)buf.len / (3 * sizeof(double));
+    n = (size_t)buf.len / (w * sizeof(double));
     v = (const double *)buf.buf;
     if (n != 0) {
         meas = PyMem_Malloc(n * sizeof *meas);
         cov = has_cov ? PyMem_Malloc(n * sizeof *cov) : NULL;
-        if (meas == NULL || (has_cov && cov == NULL)) {
+        pol = polar ? PyMem_Malloc(n * sizeof *pol) : NULL;
+        if (meas == NULL || (has_cov && cov == NULL) || (polar && pol == NULL)) {
+            PyMem_Free(pol);
             PyMem_Free(meas);
             PyMem_Free(cov);
             PyBuffer_Release(&buf);
@@ -347,11 +355,19 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
             return PyErr_NoMemory();
         }
         for (i = 0; i < n; ++i) {
-            const double *r = v + 3 * i;
+            const double *r = v + w * i;
             meas[i].x = (mtt_real)r[0];
             meas[i].y = (mtt_real)r[1];
             meas[i].has_amplitude = !isnan(r[2]);
             meas[i].amplitude = meas[i].has_amplitude ? (mtt_real)r[2] : MTT_R(0.0);
+            if (pol != NULL) {
+                pol[i].range = meas[i].x;
+                pol[i].bearing = meas[i].y;
+                pol[i].amplitude = meas[i].amplitude;
+                pol[i].has_amplitude = meas[i].has_amplitude;
+                pol[i].has_range_rate = !isnan(r[3]);
+                pol[i].range_rate = pol[i].has_range_rate ? (mtt_real)r[3] : MTT_R(0.0);
+            }
             if (cov != NULL) {
                 const double *c = (const double *)cbuf.buf + 3 * i;
                 cov[i].r_xx = (mtt_real)c[0];
@@ -362,7 +378,8 @@ static PyObject *tracker_step(CoreTracker *self, PyObject *args)
     }
     /* The GIL stays held: two threads stepping one tracker would race (the
      * library is not thread-safe per tracker), and a step is short. */
-    st = mtt_tracker_step_cov(self->trk, rtime, meas, cov, n);
+    st = polar ? mtt_tracker_step_polar(self->trk, rtime, pol, n) : mtt_tracker_step_cov(self->trk, rtime, meas, cov, n);
+    PyMem_Free(pol);
     PyMem_Free(meas);
     PyMem_Free(cov);
     PyBuffer_Release(&buf);
@@ -487,7 +504,8 @@ static PyMethodDef tracker_methods[] = {
     {"add_track", (PyCFunction)tracker_add_track, METH_VARARGS,
      "add_track(x, P) -> (status, id) of mtt_tracker_add_track"},
     {"step", (PyCFunction)tracker_step, METH_VARARGS,
-     "step(time, float64 rows x, y, amplitude) -> status of mtt_tracker_step"},
+     "step(time, float64 rows x, y, amplitude[, cov rows[, polar]]) -> status of mtt_tracker_step_cov "
+     "(polar: rows range, bearing, amplitude, mtt_tracker_step_polar)"},
     {"table", (PyCFunction)tracker_table, METH_NOARGS,
      "table() -> bytes, TABLE_COLUMNS float64 per live track (see TABLE_NAMES)"},
     {"stats", (PyCFunction)tracker_stats, METH_NOARGS, "stats() -> (last, total, max_cluster_tracks)"},

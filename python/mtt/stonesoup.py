@@ -10,7 +10,12 @@
 2-D position ``[x, y]`` (``metadata["amplitude"]``, if present, is the
 detection's amplitude; a detection whose ``measurement_model`` has a 2 x 2
 ``covar()`` is tracked with that covariance, ALGORITHMS.md section 3.1,
-the others with the settings' ``meas_sigma``) and gives Stone Soup ``Track``s of ``GaussianState``s
+the others with the settings' ``meas_sigma``; under the settings' ``measurement``
+"polar", detections of a ``CartesianToBearingRange`` model, state_vector
+``[bearing, range]``, or ``CartesianToBearingRangeRate``, ``[bearing, range,
+range rate]``, whose noise is the settings' ``meas_sigma`` (and
+``range_rate_sigma``) and whose ``translation_offset`` is ``sensor_xy``,
+section 3.2) and gives Stone Soup ``Track``s of ``GaussianState``s
 in Stone Soup's constant-velocity order ``[x, vx, y, vy]`` (the covariance
 permuted the same way).  ``track.id`` is the mtt track id as a string, and
 ``track.metadata`` holds ``existence``, ``confirmed`` and ``age`` of the
@@ -97,8 +102,10 @@ class MttTracker(_SSTracker):
         detection that is not a 2-D position."""
         seconds = self._seconds(timestamp)
         detections = list(detections)
-        z = self._matrix(detections)
-        cov = self._covariances(detections)
+        if self.mtt.polar:
+            z, cov = self._polar(detections), None
+        else:
+            z, cov = self._matrix(detections), self._covariances(detections)
         live = self.mtt.step(seconds, z, cov)
         if self._t0 is None:
             self._t0 = timestamp
@@ -130,6 +137,47 @@ class MttTracker(_SSTracker):
             return float(timestamp) - float(t0)
         except (TypeError, ValueError):
             raise ValueError(f"timestamp must be a datetime or a number, got {timestamp!r}") from None
+
+    def _polar(self, detections) -> np.ndarray:
+        """Detections of a CartesianToBearingRange model (state_vector [bearing, range]) or
+        CartesianToBearingRangeRate ([bearing, range, range rate]) as (n, 4) rows range,
+        bearing, amplitude, range rate (NaN: none) for measurement polar (ALGORITHMS.md
+        section 3.2); the model's noise and sensor position must be the settings'."""
+        sig = np.asarray(self.mtt.param("meas_sigma"), dtype=float)
+        sensor = np.asarray(self.mtt.param("sensor_xy"), dtype=float)
+        srr = float(self.mtt.param("range_rate_sigma")[0])
+        rows = []
+        for d in detections:
+            model = getattr(d, "measurement_model", None)
+            name = type(model).__name__
+            if name not in ("CartesianToBearingRange", "CartesianToBearingRangeRate"):
+                raise ValueError(f"with measurement polar each detection's measurement_model must be "
+                                 f"CartesianToBearingRange or CartesianToBearingRangeRate, got {name}")
+            rate = name == "CartesianToBearingRangeRate"
+            c = np.asarray(model.covar(), dtype=float)
+            want = np.diag([sig[1] ** 2, sig[0] ** 2] + ([srr ** 2] if rate else []))
+            what = "meas_sigma [sigma_range, sigma_bearing]" + (" and range_rate_sigma" if rate else "")
+            if c.shape != want.shape or not np.allclose(c, want, rtol=1e-6, atol=0.0):
+                raise ValueError(f"the measurement model's noise covariance {c.tolist()!r} (bearing, range"
+                                 f"{', range rate' if rate else ''}) is not the settings' {what}: "
+                                 f"diag({', '.join(repr(float(v)) for v in np.diag(want))})")
+            off = np.asarray(model.translation_offset, dtype=float).ravel()[:2]
+            if not np.allclose(off, sensor, rtol=1e-9, atol=1e-9):
+                raise ValueError(f"the measurement model's translation_offset {off.tolist()!r} is not "
+                                 f"the settings' sensor_xy {sensor.tolist()!r}")
+            rot = np.asarray(getattr(model, "rotation_offset", np.zeros(3)), dtype=float).ravel()
+            vel = np.asarray(getattr(model, "velocity", np.zeros(3)), dtype=float).ravel()
+            if np.any(rot != 0.0) or np.any(vel != 0.0):
+                raise ValueError("a measurement model with a rotation_offset or a sensor velocity is not "
+                                 "supported: bearings are atan2(y - y_s, x - x_s) from a still sensor")
+            sv = np.asarray(d.state_vector, dtype=float).ravel()
+            if sv.shape != ((3,) if rate else (2,)):
+                raise ValueError(f"a detection's state_vector must be [bearing, range"
+                                 f"{', range_rate' if rate else ''}], got shape {sv.shape}")
+            md = getattr(d, "metadata", None) or {}
+            a = md.get("amplitude", None)
+            rows.append((sv[1], sv[0], np.nan if a is None else float(a), sv[2] if rate else np.nan))
+        return np.array(rows, dtype=float).reshape(-1, 4)
 
     @staticmethod
     def _covariances(detections):

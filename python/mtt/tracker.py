@@ -76,33 +76,47 @@ class Track:
                 f"age={self.age})")
 
 
-def _detections(detections) -> np.ndarray:
-    """(n, 2) or (n, 3) array-like into validated (n, 3) float64 rows, NaN = no amplitude."""
+def _detections(detections, polar: bool = False) -> np.ndarray:
+    """(n, 2) or (n, 3) array-like into validated (n, 3) float64 rows, NaN = no amplitude;
+    polar: (n, 2) to (n, 4) [range, bearing, amplitude, range rate] into (n, 4) rows, NaN
+    amplitude or range rate = none."""
+    width = 4 if polar else 3
     if detections is None:
-        return np.zeros((0, 3))
+        return np.zeros((0, width))
     try:
         z = np.asarray(detections, dtype=float)
     except (TypeError, ValueError) as e:
         raise ValueError(f"detections must be numbers: {e}") from None
     if z.size == 0 and z.ndim <= 2:
-        return np.zeros((0, 3))
-    if z.ndim != 2 or z.shape[1] not in (2, 3):
-        raise ValueError(f"detections must have shape (n, 2) [x, y] or (n, 3) [x, y, amplitude], "
-                         f"got {z.shape}")
-    if z.shape[1] == 2:
-        z = np.column_stack([z, np.full(len(z), np.nan)])
+        return np.zeros((0, width))
+    names = ("range", "bearing") if polar else ("x", "y")
+    if z.ndim != 2 or not 2 <= z.shape[1] <= width:
+        more = " or (n, 4) [range, bearing, amplitude, range_rate]" if polar else ""
+        raise ValueError(f"detections must have shape (n, 2) [{names[0]}, {names[1]}] or (n, 3) "
+                         f"[{names[0]}, {names[1]}, amplitude]{more}, got {z.shape}")
+    if z.shape[1] < width:
+        z = np.column_stack([z, np.full((len(z), width - z.shape[1]), np.nan)])
     xy = z[:, :2]
     bad = ~np.isfinite(xy) | (np.abs(xy) > _core.REAL_MAX)
     if bad.any():
         i, j = np.argwhere(bad)[0]
-        raise ValueError(f"detection {i}: {'xy'[j]} = {z[i, j]!r} is not a finite number that "
+        raise ValueError(f"detection {i}: {names[j]} = {z[i, j]!r} is not a finite number that "
                          f"mtt_real ({_core.REAL}) holds")
+    if polar and not (xy[:, 0] > 0).all():
+        i = int(np.argwhere(~(xy[:, 0] > 0))[0][0])
+        raise ValueError(f"detection {i}: range = {float(z[i, 0])!r} must be > 0")
     a = z[:, 2]
     bad = ~np.isnan(a) & ~((a >= 0) & (a <= _core.REAL_MAX))
     if bad.any():
         i = int(np.argwhere(bad)[0][0])
         raise ValueError(f"detection {i}: amplitude = {a[i]!r} must be >= 0 and finite "
                          f"(NaN: unknown)")
+    if polar:
+        rr = z[:, 3]
+        bad = ~np.isnan(rr) & ~(np.abs(rr) <= _core.REAL_MAX)
+        if bad.any():
+            i = int(np.argwhere(bad)[0][0])
+            raise ValueError(f"detection {i}: range_rate = {float(rr[i])!r} must be finite (NaN: none)")
     return np.ascontiguousarray(z)
 
 
@@ -191,6 +205,11 @@ class Tracker:
 
     # ------------------------------------------------------------ queries
 
+    @property
+    def polar(self) -> bool:
+        """True under ``measurement`` "polar": ``step`` takes range, bearing (ALGORITHMS.md section 3.2)."""
+        return int(self.param("measurement")[0]) == 1
+
     def param(self, key: str):
         """The value of a settings key as the tracker holds it (tuple of floats;
         an enum as its index, a boolean as 0 / 1; imm_models as r, then a
@@ -247,6 +266,12 @@ class Tracker:
         ``track_table()`` give the result).  ``cov``: each detection's own
         covariance, (n, 3) [r_xx, r_xy, r_yy] or (n, 2, 2); a row of zeros
         (or ``cov`` None) is meas_sigma's (ALGORITHMS.md section 3.1).
+        Under ``measurement`` "polar" the detections are (n, 2) [range,
+        bearing], (n, 3) [range, bearing, amplitude] or (n, 4) [range,
+        bearing, amplitude, range_rate] from ``sensor_xy`` (bearing in
+        radians, atan2(y - y_s, x - x_s); range > 0; NaN range rate: none;
+        a range rate needs ``range_rate_sigma``), each converted with its own
+        covariance (ALGORITHMS.md section 3.2), and ``cov`` must be None.
 
         Raises ValueError for a time that is not finite, not representable or
         not later than the last one, for detections of the wrong shape or
@@ -261,9 +286,15 @@ class Tracker:
             raise ValueError(f"time must be a number, got {time!r}") from None
         if not math.isfinite(t) or abs(t) > _core.REAL_MAX:
             raise ValueError(f"time {t!r} is not a finite number that mtt_real ({_core.REAL}) holds")
-        z = _detections(detections)
+        polar = self.polar
+        z = _detections(detections, polar)
+        if polar and cov is not None:
+            raise ValueError("cov: under measurement polar each detection's covariance comes from "
+                             "meas_sigma [sigma_range, sigma_bearing] (ALGORITHMS.md section 3.2)")
         c = None if cov is None else _covariances(cov, len(z)).tobytes()
-        st = self._core.step(t, z.tobytes(), c)
+        st = self._core.step(t, z.tobytes(), c, 1 if polar else 0)
+        if polar and st == _core.ERR_PARAM:
+            raise ValueError("a detection has a range rate but the settings' range_rate_sigma is 0")
         if st == _core.ERR_UNSUPPORTED and c is not None:
             raise ValueError("a covariance per detection is not available here: the library was built "
                              "without MTT_WITH_MEAS_COV, or the settings have split = true")

@@ -52,10 +52,8 @@ TRACKER_KEYS = {
     "intensity_gate", "jpda_bias", "subopt_jpda_constant_b", "jpda_star_threshold", "nnjpda_threshold",
     "adaptive_jpda_distance", "adaptive_jpda_shrink", "motion", "imm_models", "imm_transition",
     "imm_initial", "split", "split_p25", "split_p52", "split_p62", "split_dv", "split_confirm", "split_decide", "split_provisional_exist", "split_provisional_scans", "split_across", "split_known_speed", "split_decouple_r", "initial_tracks",
+    "measurement", "sensor_xy", "range_rate_sigma",
 }
-# issue 26's polar settings of a radar scene (docs/FORMATS.md once mtt-track reads them; then
-# they move into TRACKER_KEYS above, which python/tests/test_gen.py holds equal to that table)
-POLAR_TRACKER_KEYS = {"measurement", "sensor_xy", "range_rate_sigma"}
 
 ASSOC_MODES = (
     "lm-ihpda", "ihpda", "lm-ipda", "ipda", "ihpda-2d", "jipda", "jpda",
@@ -404,7 +402,7 @@ def validate(scn: dict, source: str = "<string>") -> None:
     if not isinstance(trk, dict):
         _err(source, "tracker", "must be an object (a docs/FORMATS.md settings object)")
     for k in trk:
-        if k not in TRACKER_KEYS and k not in POLAR_TRACKER_KEYS:
+        if k not in TRACKER_KEYS:
             _err(source, f"tracker.{k}", "not a docs/FORMATS.md settings key (mtt-track would reject it)")
     if "association" in trk and trk["association"] not in ASSOC_MODES:
         _err(source, "tracker.association", f"must be one of {', '.join(ASSOC_MODES)}")

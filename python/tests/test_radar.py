@@ -264,7 +264,7 @@ class TestShippedRadarScenario(unittest.TestCase):
                 self.assertEqual(t["pd"], scn["pd"])
                 self.assertAlmostEqual(t["clutter_density"] * radar.clutter_measure(r) / scn["clutter"]["mean"], 1.0,
                                        delta=1e-9)
-                self.assertTrue(set(t) <= scenario.TRACKER_KEYS | scenario.POLAR_TRACKER_KEYS)
+                self.assertTrue(set(t) <= scenario.TRACKER_KEYS)
         with open(os.path.join(REPO, "scenarios", "recorded", "radar_quickstart.json")) as f:
             scn = scenario._strip_comments(json.load(f))
         self.assertEqual((scn["scans"]["dt"], scn["sensor"]["sigma_range"], scn["clutter"]["mean"]), (10.0, 50.0, 200))

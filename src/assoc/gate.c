@@ -350,8 +350,12 @@ void mtt_gate_frame(mtt_tracker *trk)
         if (trk->n_own_r > 0u) {
             /* detections with a wider R of their own: the window reaches
              * sqrt(gamma (S_xx - R_xx + r_xx)) <= w + sqrt(gamma (r_xx - R_xx)) (§3.1) */
-            wx += (trk->own_rmax[0] > trk->R[0]) ? mtt_sqrt(gamma * (trk->own_rmax[0] - trk->R[0])) : MTT_R(0.0);
-            wy += (trk->own_rmax[1] > trk->R[2]) ? mtt_sqrt(gamma * (trk->own_rmax[1] - trk->R[2])) : MTT_R(0.0);
+            /* polar (§3.2): S holds the track's own R_t, not trk->R, so
+             * the bound sqrt(gamma r_xx) without the subtraction */
+            const int pol = trk->par.measurement == MTT_MEASUREMENT_POLAR;
+            const mtt_real r0 = pol ? MTT_R(0.0) : trk->R[0], r2 = pol ? MTT_R(0.0) : trk->R[2];
+            wx += (trk->own_rmax[0] > r0) ? mtt_sqrt(gamma * (trk->own_rmax[0] - r0)) : MTT_R(0.0);
+            wy += (trk->own_rmax[1] > r2) ? mtt_sqrt(gamma * (trk->own_rmax[1] - r2)) : MTT_R(0.0);
         }
 #endif
         for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
@@ -371,6 +375,11 @@ void mtt_gate_frame(mtt_tracker *trk)
             if (!(d2 <= gamma)) {
                 continue;
             }
+#if MTT_WITH_MEAS_COV
+            if (meas[j].has_rdot && !(mtt_polar_rdot_lik(trk, tf, &meas[j]) > MTT_R(0.0))) {
+                continue; /* its range rate is outside the gate (ALGORITHMS.md §3.2) */
+            }
+#endif
             if (nc < MTT_MAX_GATED) {
                 cm[nc] = j;
                 cd[nc] = d2;
@@ -410,6 +419,11 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
 #else
             np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
+#endif
+#if MTT_WITH_MEAS_COV
+            if (meas[cm[a]].has_rdot) {
+                np.p *= mtt_polar_rdot_lik(trk, tf, &meas[cm[a]]); /* its range rate (§3.2) */
+            }
 #endif
             np.w = MTT_ZERO;
             np.lam = MTT_ZERO;

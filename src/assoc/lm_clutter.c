@@ -12,6 +12,10 @@
  * ALGORITHMS.md §7.6 (lm-ihpda, lm_ihpda_variant contest): first every
  * pair's p_j becomes p_j g_j, the amplitude likelihood ratio of its
  * measurement, so the LM densities, the rows and the existence see it.
+ * Polar detections with a known density (§3.2): lambda is per unit range x
+ * bearing, lambda_j = lambda / r_j at detection j (the Jacobian of x, y to
+ * r, b), the track's lambda that at its predicted range, and Pt weighs
+ * p_l / lambda_l.
  * Written in the quantity macros of mtt/real.h (docs/FIXED_POINT.md §3, §4):
  * in the fixed-point build p_j, w_j and lambda~ are Q16 ratios to the
  * clutter density, Pt a Q30 probability. */
@@ -26,6 +30,43 @@ mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex
     return MTT_DIV_CG(MTT_SUB(MTT_CNT(m), MTT_MUL_PC(MTT_MUL_PP(pd, pg), ex_pred)), vg);
 }
 
+#if MTT_WITH_MEAS_COV
+/* Polar detections, known density lam per unit range x bearing (§3.2):
+ * pair.lam = lam / r_j, tf->lambda = lam / r^ at the predicted range, and
+ * with lm the w_j of pass 1 from Pt = PD PG P^ (p_j r_j) / sum (p_l r_l),
+ * the p_l / lambda_l normalised as §8.1 writes it. */
+static void polar_lambda(mtt_tracker *trk, mtt_track_frame *tf, mtt_real lam, int amp, int lm)
+{
+    const mtt_real pdpg = trk->par.pd * trk->par.pg, pt_max = MTT_R(1.0) - MTT_R(1e-6);
+    const mtt_real rt = mtt_polar_range(trk, tf->xp);
+    mtt_real sum = MTT_R(0.0);
+    uint16_t k;
+    tf->lambda = (rt > MTT_R(0.0)) ? lam / rt : MTT_REAL_MAX;
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        mtt_pair *pp = &trk->pairs[k];
+        const mtt_real r = trk->meas[pp->meas].rng;
+#if MTT_WITH_CONTEST
+        if (amp) {
+            mtt_contest_amp_pair(trk, pp); /* p_j g_j (ALGORITHMS.md §7.6) */
+        }
+#else
+        (void)amp;
+#endif
+        pp->lam = lam / r;
+        sum += pp->p * r;
+    }
+    if (!lm) {
+        return;
+    }
+    for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
+        mtt_pair *pp = &trk->pairs[k];
+        mtt_real pt = pdpg * tf->ex_pred * (pp->p * trk->meas[pp->meas].rng) / sum;
+        pt = (pt > pt_max) ? pt_max : pt;
+        pp->w = pp->p * pt / (MTT_R(1.0) - pt);
+    }
+}
+#endif
+
 void mtt_clutter_frame(mtt_tracker *trk, int lm)
 {
     const mtt_prob pdpg = MTT_MUL_PP(trk->par.pd, trk->par.pg);
@@ -37,6 +78,9 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
     mtt_ratio *const wsum = trk->wsum;
 #if MTT_WITH_CONTEST
     const int amp = MTT_CONTEST_ON(trk);
+#endif
+#if MTT_WITH_MEAS_COV
+    const int polar = trk->par.measurement == MTT_MEASUREMENT_POLAR;
 #endif
     uint16_t i, k;
 
@@ -51,6 +95,16 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         if (!(lam > MTT_ZERO)) {
             lam = mtt_clutter_estimate(tf->pair_count, trk->par.pd, trk->par.pg, tf->ex_pred, tf->vg);
         }
+#if MTT_WITH_MEAS_COV
+        if (polar && trk->par.clutter_density > MTT_ZERO) {
+#if MTT_WITH_CONTEST
+            polar_lambda(trk, tf, lam, amp, lm);
+#else
+            polar_lambda(trk, tf, lam, 0, lm);
+#endif
+            continue;
+        }
+#endif
         tf->lambda = lam;
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             mtt_pair *pp = &pairs[k];

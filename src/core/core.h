@@ -49,7 +49,10 @@ int mtt_merge_d2(const mtt_track *a, const mtt_track *b, mtt_d2 *d2);
 void mtt_merge_frame(mtt_tracker *trk);
 
 /* ---- measure.c: validation and selection of the frame's measurements (§15) ---- */
-void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, size_t n);
+/* cov may be NULL; pol (polar detections, §3.2, meas and cov then NULL) NULL but
+ * under polar settings. */
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, const mtt_polar *pol,
+                        size_t n);
 #if MTT_WITH_MEAS_COV
 /* The covariance of a stored detection: its own, or meas_sigma's (§3.1). */
 const mtt_real *mtt_meas_r(const mtt_tracker *trk, const mtt_mstore *ms);

@@ -23,11 +23,14 @@
  * sorted by x. */
 #include "mtt_internal.h"
 
-/* The frame's input: the detections and their covariances (NULL: none). */
+/* The frame's input: the detections and their covariances (NULL: none),
+ * or polar detections (ALGORITHMS.md §3.2), converted where read. */
 typedef struct frame_in {
     const mtt_meas *m;
 #if MTT_WITH_MEAS_COV
     const mtt_meas_cov *cov;
+    const mtt_polar *pol;
+    const mtt_params *par;
 #endif
 } frame_in;
 
@@ -36,51 +39,118 @@ static int has_cov(const mtt_meas_cov *c)
 {
     return c != NULL && (c->r_xx != MTT_ZERO || c->r_xy != MTT_ZERO || c->r_yy != MTT_ZERO);
 }
+
+/* Polar detection i as the Cartesian detection and covariance it is
+ * stored as; 0, or -1 when it does not convert (malformed). */
+static int polar_get(const frame_in *in, uint32_t i, mtt_meas *m, mtt_meas_cov *c)
+{
+    const mtt_polar *d = &in->pol[i];
+    mtt_real R[3];
+    if (mtt_polar_convert(in->par->meas_sigma, in->par->sensor_xy, d->range, d->bearing, &m->x, &m->y, R) != 0) {
+        return -1;
+    }
+    m->amplitude = d->amplitude;
+    m->has_amplitude = d->has_amplitude;
+    c->r_xx = R[0];
+    c->r_xy = R[1];
+    c->r_yy = R[2];
+    return 0;
+}
 #endif
 
-/* The canonical order: by value, the input index only between equal
- * detections (whose outputs are the same either way). */
-static int before(const frame_in *in, uint32_t i, uint32_t j)
+/* The canonical order of two detections by value: -1, 0 (equal), 1. */
+static int cmp_value(const mtt_meas *a, const mtt_meas_cov *ca, const mtt_meas *b, const mtt_meas_cov *cb)
 {
-    const mtt_meas *m = in->m;
-    if (m[i].x != m[j].x) {
-        return m[i].x < m[j].x;
+    if (a->x != b->x) {
+        return (a->x < b->x) ? -1 : 1;
     }
-    if (m[i].y != m[j].y) {
-        return m[i].y < m[j].y;
+    if (a->y != b->y) {
+        return (a->y < b->y) ? -1 : 1;
     }
-    if (m[i].has_amplitude != m[j].has_amplitude) {
-        return m[i].has_amplitude == 0;
+    if (a->has_amplitude != b->has_amplitude) {
+        return (a->has_amplitude == 0) ? -1 : 1;
     }
-    if (m[i].has_amplitude && m[i].amplitude != m[j].amplitude) {
-        return m[i].amplitude < m[j].amplitude;
+    if (a->has_amplitude && a->amplitude != b->amplitude) {
+        return (a->amplitude < b->amplitude) ? -1 : 1;
     }
 #if MTT_WITH_MEAS_COV
-    if (in->cov != NULL) {
-        const mtt_meas_cov *a = &in->cov[i], *b = &in->cov[j];
-        if (a->r_xx != b->r_xx) {
-            return a->r_xx < b->r_xx;
+    if (ca != NULL) {
+        if (ca->r_xx != cb->r_xx) {
+            return (ca->r_xx < cb->r_xx) ? -1 : 1;
         }
-        if (a->r_xy != b->r_xy) {
-            return a->r_xy < b->r_xy;
+        if (ca->r_xy != cb->r_xy) {
+            return (ca->r_xy < cb->r_xy) ? -1 : 1;
         }
-        if (a->r_yy != b->r_yy) {
-            return a->r_yy < b->r_yy;
+        if (ca->r_yy != cb->r_yy) {
+            return (ca->r_yy < cb->r_yy) ? -1 : 1;
         }
     }
+#else
+    (void)ca;
+    (void)cb;
 #endif
-    return i < j;
+    return 0;
+}
+
+/* The canonical order: by value (polar: the converted value, then range
+ * and bearing), the input index only between equal detections (whose
+ * outputs are the same either way). */
+static int before(const frame_in *in, uint32_t i, uint32_t j)
+{
+    int c;
+#if MTT_WITH_MEAS_COV
+    if (in->pol != NULL) {
+        mtt_meas a, b;
+        mtt_meas_cov ca, cb;
+        (void)polar_get(in, i, &a, &ca); /* valid: meas_skip converted them */
+        (void)polar_get(in, j, &b, &cb);
+        c = cmp_value(&a, &ca, &b, &cb);
+        if (c == 0 && in->pol[i].range != in->pol[j].range) {
+            c = (in->pol[i].range < in->pol[j].range) ? -1 : 1;
+        }
+        if (c == 0 && in->pol[i].bearing != in->pol[j].bearing) {
+            c = (in->pol[i].bearing < in->pol[j].bearing) ? -1 : 1;
+        }
+        if (c == 0 && in->pol[i].has_range_rate != in->pol[j].has_range_rate) {
+            c = in->pol[i].has_range_rate ? 1 : -1;
+        }
+        if (c == 0 && in->pol[i].has_range_rate && in->pol[i].range_rate != in->pol[j].range_rate) {
+            c = (in->pol[i].range_rate < in->pol[j].range_rate) ? -1 : 1;
+        }
+        return (c != 0) ? (c < 0) : (i < j);
+    }
+    c = cmp_value(&in->m[i], (in->cov != NULL) ? &in->cov[i] : NULL, &in->m[j],
+                  (in->cov != NULL) ? &in->cov[j] : NULL);
+#else
+    c = cmp_value(&in->m[i], NULL, &in->m[j], NULL);
+#endif
+    return (c != 0) ? (c < 0) : (i < j);
 }
 
 /* Strength order for the MTT_MAX_MEAS cap. */
 static int stronger(const frame_in *in, uint32_t i, uint32_t j)
 {
-    const mtt_meas *m = in->m;
-    if (m[i].has_amplitude != m[j].has_amplitude) {
-        return m[i].has_amplitude != 0;
+    int hi, hj;
+    mtt_real ai, aj;
+#if MTT_WITH_MEAS_COV
+    if (in->pol != NULL) {
+        hi = in->pol[i].has_amplitude;
+        hj = in->pol[j].has_amplitude;
+        ai = in->pol[i].amplitude;
+        aj = in->pol[j].amplitude;
+    } else
+#endif
+    {
+        hi = in->m[i].has_amplitude;
+        hj = in->m[j].has_amplitude;
+        ai = in->m[i].amplitude;
+        aj = in->m[j].amplitude;
     }
-    if (m[i].has_amplitude && m[i].amplitude != m[j].amplitude) {
-        return m[i].amplitude > m[j].amplitude;
+    if (hi != hj) {
+        return hi != 0;
+    }
+    if (hi && ai != aj) {
+        return ai > aj;
     }
     return before(in, i, j);
 }
@@ -161,18 +231,48 @@ static void store_meas(mtt_mstore *s, const mtt_meas *m, const mtt_meas_cov *c, 
 #endif
 }
 
-void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, size_t n)
+/* Detection i of the frame: its skip reason, and (valid) the detection
+ * and covariance it is stored with (polar: converted, §3.2). */
+static int frame_get(const frame_in *in, size_t i, mtt_meas *m, mtt_meas_cov *c)
+{
+#if MTT_WITH_MEAS_COV
+    if (in->pol != NULL) {
+        if (polar_get(in, (uint32_t)i, m, c) != 0 ||
+            (in->pol[i].has_range_rate && !mtt_isfinite(in->pol[i].range_rate))) {
+            return SKIP_BAD; /* range not > 0, a value not finite */
+        }
+        return meas_skip(m, c);
+    }
+#endif
+    *m = in->m[i];
+    c->r_xx = MTT_ZERO;
+    c->r_xy = MTT_ZERO;
+    c->r_yy = MTT_ZERO;
+#if MTT_WITH_MEAS_COV
+    if (in->cov != NULL) {
+        *c = in->cov[i];
+    }
+#endif
+    return meas_skip(m, c);
+}
+
+void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, const mtt_polar *pol,
+                        size_t n)
 {
     uint32_t *const sel = trk->sel; /* in a local: a large field offset (a firmware's .text) */
 #if MTT_WITH_MEAS_COV
-    const frame_in in = {meas, cov};
+    const frame_in in = {meas, cov, pol, &trk->par};
 #else
     const frame_in in = {meas};
+    (void)pol;
+    (void)cov;
 #endif
     size_t i;
     uint32_t kept = 0, valid = 0;
+    mtt_meas mi;
+    mtt_meas_cov ci;
     for (i = 0; i < n; ++i) {
-        const int skip = meas_skip(&meas[i], (cov != NULL) ? &cov[i] : NULL);
+        const int skip = frame_get(&in, i, &mi, &ci);
         if (skip != SKIP_NONE) {
             ++*((skip == SKIP_RANGE) ? MTT_MEAS_RANGE(&trk->stats.last) : &trk->stats.last.meas_bad);
             continue;
@@ -199,8 +299,13 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
     trk->own_rmax[1] = MTT_ZERO;
 #endif
     for (i = 0; i < kept; ++i) {
-        store_meas(&trk->meas[i], &meas[sel[i]], (cov != NULL) ? &cov[sel[i]] : NULL, sel[i]);
+        (void)frame_get(&in, sel[i], &mi, &ci);
+        store_meas(&trk->meas[i], &mi, &ci, sel[i]);
 #if MTT_WITH_MEAS_COV
+        trk->meas[i].rng = (pol != NULL) ? pol[sel[i]].range : MTT_ZERO;
+        trk->meas[i].has_rdot = (uint8_t)(pol != NULL && pol[sel[i]].has_range_rate);
+        trk->meas[i].rr[0] = trk->meas[i].has_rdot ? pol[sel[i]].range_rate : MTT_ZERO;
+        trk->meas[i].rr[1] = trk->meas[i].has_rdot ? trk->par.range_rate_sigma * trk->par.range_rate_sigma : MTT_ZERO;
         if (trk->meas[i].has_R) {
             trk->n_own_r++;
             trk->own_rmax[0] = (trk->meas[i].R[0] > trk->own_rmax[0]) ? trk->meas[i].R[0] : trk->own_rmax[0];
@@ -223,6 +328,7 @@ uint16_t mtt_meas_row_r(mtt_tracker *trk, uint16_t first, uint16_t m)
     for (i = 0; i < m; ++i) {
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
         trk->row.rj[i] = mtt_meas_r(trk, ms);
+        trk->row.rr[i] = ms->has_rdot ? ms->rr : NULL;
         own = (uint16_t)(own + ms->has_R);
     }
     return own;

@@ -138,6 +138,10 @@ mtt_status mtt_params_default_checked(mtt_params *p, size_t params_size, uint32_
     p->max_accel = PDEF(max_accel, 0.0);
     p->meas_sigma[0] = PDEF(meas_sigma, 1.0);
     p->meas_sigma[1] = PDEF(meas_sigma, 1.0);
+    p->measurement = MTT_MEASUREMENT_CARTESIAN;
+    p->sensor_xy[0] = PDEF(sensor_xy, 0.0);
+    p->sensor_xy[1] = PDEF(sensor_xy, 0.0);
+    p->range_rate_sigma = PDEF(range_rate_sigma, 0.0);
     p->pd = PDEF(pd, 0.9);
     p->pg = PDEF(pg, 0.999);
     p->clutter_density = PDEF(clutter_density, 0.0);
@@ -228,6 +232,7 @@ static const range_rule rules[MTT_RULE_COUNT] = {
 const char *const mtt_init_gate_names[2] = {"vmax", "intensity"};
 const char *const mtt_lm_ihpda_variant_names[2] = {"s0", "contest"};
 const char *const mtt_motion_names[3] = {"cv", "imm", "auto"};
+const char *const mtt_measurement_names[2] = {"cartesian", "polar"};
 const char *const mtt_model_names[3] = {"cv", "ca", "ct"};
 
 mtt_real *mtt_params_rule_at(mtt_params *p, size_t rule)
@@ -315,6 +320,13 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
             bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
             st = MTT_ERR_UNSUPPORTED;
         }
+    }
+    if (bad == NULL && p->measurement == MTT_MEASUREMENT_POLAR && (!MTT_WITH_MEAS_COV || p->split)) {
+        /* polar detections carry their own covariance (ALGORITHMS.md
+         * §3.2), which the fixed-point and firmware builds and the split
+         * do not hold */
+        bad = "measurement";
+        st = MTT_ERR_UNSUPPORTED;
     }
 #ifdef MTT_REAL_FIXED
     if (bad == NULL && mtt_manoeuvre_derived(p) && !var_fits(p->max_accel)) {

@@ -58,6 +58,7 @@ extern const char *const mtt_assoc_names[MTT_ASSOC_ROWS];
 extern const char *const mtt_init_gate_names[2];
 extern const char *const mtt_lm_ihpda_variant_names[2];
 extern const char *const mtt_motion_names[3];
+extern const char *const mtt_measurement_names[2];
 extern const char *const mtt_model_names[3];
 
 /* The IMM rows (ALGORITHMS.md §14): only in a build with MTT_WITH_IMM; without
@@ -138,12 +139,18 @@ extern const char *const mtt_model_names[3];
     REAL("max_accel", max_accel, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                                        \
          "largest acceleration a target pulls, length/time² (an airliner about 5 m/s², a fighter 90 m/s²); with process_psd not given it derives the motion: the noise of every model per scan, the IMM's models and transitions, split_dv; explicit keys override it; 0: not given (§2.2)")  \
     REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL, SENSOR,                                    \
-         "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²)")                                       \
+         "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²); with measurement polar [σ_range (length), σ_bearing (radians)] (§3.2)") \
+    ENUM("measurement", measurement, mtt_measurement, 2, mtt_measurement_names, SENSOR,                     \
+         "form of the detections: cartesian (x, y) or polar (range, bearing from sensor_xy), converted with their own covariance (§3.2); polar needs a build with MTT_WITH_MEAS_COV and split false") \
+    REAL("sensor_xy", sensor_xy, 2, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL, SENSOR,                            \
+         "with measurement polar: the sensor's position [x, y]; bearing = atan2(y − y_s, x − x_s) (§3.2)") \
+    REAL("range_rate_sigma", range_rate_sigma, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                         \
+         "with measurement polar: standard deviation of a detection's range rate, length/time; a detection with one is gated on it and updated with it (the radial velocity), and a birth takes its radial speed from it (§3.2); 0: no range rates (a detection with one is refused)") \
     REAL("pd", pd, 1, 0.0, 1.0, PF_OPEN_LO, NULL, SENSOR, "probability of detection PD")                   \
     REAL("pg", pg, 1, 0.0, 1.0, PF_OPEN_LO | PF_OPEN_HI, NULL, TRACK,                                   \
          "gate probability PG; the gate threshold is γ = −2 ln(1 − PG) (§4)")                       \
     REAL("clutter_density", clutter_density, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                             \
-         "clutter density λ per unit area; 0 estimates it per track (§5.2)")                          \
+         "clutter density λ per unit area; with measurement polar per unit range × bearing (length·radian), λ/r at a detection of range r (§3.2); 0 estimates it per track (§5.2)")                          \
     REAL("snr_rho", snr_rho, 1, 0.0, 1e6, 0, NULL, SENSOR,                                             \
          "intensity parameter ρ: target amplitude mean 1 + ρ, clutter mean 1; 0 ignores amplitude (§7.1)")     \
     REAL("amplitude_eta", amplitude_eta, 1, 0.0, 1.0, PF_OPEN_HI, NULL, TUNING,                          \
@@ -201,6 +208,8 @@ extern const char *const mtt_model_names[3];
 #define MTT_FX_FRAC_process_psd MTT_FX_VAR_FRAC
 #define MTT_FX_FRAC_max_accel MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_meas_sigma MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_sensor_xy MTT_FX_POS_FRAC
+#define MTT_FX_FRAC_range_rate_sigma MTT_FX_POS_FRAC
 #define MTT_FX_FRAC_pd MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_pg MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_clutter_density MTT_FX_DENS_FRAC

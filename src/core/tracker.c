@@ -62,7 +62,11 @@ static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cyc
     trk->gamma = gamma;
     trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
     trk->R[1] = MTT_ZERO;
-    trk->R[2] = MTT_VAR_OF(p->meas_sigma[1]);
+    /* polar (ALGORITHMS.md §3.2): every detection has its own R and every
+     * track its R at its predicted position; this one, sigma_range in
+     * both axes, is only the length scale of the contest's tracking index
+     * and adaptive JPDA's overlap distance */
+    trk->R[2] = MTT_VAR_OF(p->meas_sigma[(p->measurement == MTT_MEASUREMENT_POLAR) ? 0 : 1]);
 #if MTT_WITH_CONTEST
     mtt_adapt_init(trk); /* the process-noise scale's set-up (ALGORITHMS.md §2.1) */
 #endif
@@ -148,13 +152,10 @@ mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time, const mtt_meas *mea
     return mtt_tracker_step_cov(trk, time, meas, NULL, n);
 }
 
-mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
-                                size_t n)
+/* The checks of every step: 0 or the status (nothing written). */
+static mtt_status step_check(const mtt_tracker *trk, mtt_real time, const void *det, size_t n)
 {
-    mtt_real dt = MTT_ZERO;
-    const mtt_mode *md;
-    uint32_t mark;
-    if (trk == NULL || (meas == NULL && n > 0u)) {
+    if (trk == NULL || (det == NULL && n > 0u)) {
         return MTT_ERR_NULL;
     }
     if (trk->magic != MTT_MAGIC) {
@@ -163,6 +164,43 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
     /* Fixed point: time counts Q16 frames modulo 2^32 (mtt/real.h). */
     if (!MTT_TIME_OK(time) || (trk->have_time && !MTT_TIME_AFTER(time, trk->time))) {
         return MTT_ERR_TIME;
+    }
+    return MTT_OK;
+}
+
+static void step_frame(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
+                       const mtt_polar *pol, size_t n);
+
+mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_polar *det, size_t n)
+{
+    const mtt_status st = step_check(trk, time, det, n);
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (trk->par.measurement != MTT_MEASUREMENT_POLAR) {
+        return MTT_ERR_UNSUPPORTED; /* polar detections need polar settings (§3.2) */
+    }
+    if (!(trk->par.range_rate_sigma > MTT_ZERO)) {
+        size_t i;
+        for (i = 0; i < n; ++i) {
+            if (det[i].has_range_rate) {
+                return MTT_ERR_PARAM; /* a range rate without its sigma (§3.2) */
+            }
+        }
+    }
+    step_frame(trk, time, NULL, NULL, det, n);
+    return MTT_OK;
+}
+
+mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
+                                size_t n)
+{
+    const mtt_status st = step_check(trk, time, meas, n);
+    if (st != MTT_OK) {
+        return st;
+    }
+    if (trk->par.measurement == MTT_MEASUREMENT_POLAR) {
+        return MTT_ERR_UNSUPPORTED; /* polar settings take mtt_tracker_step_polar (§3.2) */
     }
     if (cov != NULL && (!MTT_WITH_MEAS_COV || (MTT_WITH_SPLIT && trk->par.split))) {
         /* a covariance per detection where the build or the tracker has
@@ -174,6 +212,17 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
             }
         }
     }
+    step_frame(trk, time, meas, cov, NULL, n);
+    return MTT_OK;
+}
+
+/* One frame of checked input: the nine stages. */
+static void step_frame(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
+                       const mtt_polar *pol, size_t n)
+{
+    mtt_real dt = MTT_ZERO;
+    const mtt_mode *md;
+    uint32_t mark;
     if (trk->have_time) {
         dt = MTT_TIME_SUB(time, trk->time);
     }
@@ -184,7 +233,7 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
     trk->stats.last.meas_in = (uint32_t)n;
     mark = cycles_now(trk);
 
-    mtt_measure_select(trk, meas, cov, n);
+    mtt_measure_select(trk, meas, cov, pol, n);
     charge(trk, MTT_STAGE_VALIDATE, &mark);
     mtt_predict_frame(trk, dt);
 #if MTT_WITH_BASELINES
@@ -214,7 +263,6 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
     trk->time = time;
     trk->have_time = 1;
     add_counts(&trk->stats.total, &trk->stats.last);
-    return MTT_OK;
 }
 
 mtt_status mtt_tracker_stats(const mtt_tracker *trk, mtt_stats *stats)

@@ -36,6 +36,25 @@ void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_r
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
 #if MTT_WITH_MEAS_COV
+/* ---- polar.c: polar detections (ALGORITHMS.md §3.2) ---- */
+/* R of a detection at range r, bearing cos c, sin s, sigma = [sr, sb]. */
+void mtt_polar_cov(const mtt_real sigma[2], mtt_real r, mtt_real c, mtt_real s, mtt_real R[3]);
+/* The unbiased converted detection and its R; 0, or -1 when range is not
+ * finite and > 0, bearing not finite or the result not finite. */
+int mtt_polar_convert(const mtt_real sigma[2], const mtt_real sensor[2], mtt_real range, mtt_real bearing,
+                      mtt_real *x, mtt_real *y, mtt_real R[3]);
+/* The range of a predicted position xp from sensor_xy. */
+mtt_real mtt_polar_range(const mtt_tracker *trk, const mtt_real *xp);
+/* The R a track's S is formed with: trk->R, or under polar the converted
+ * covariance at its predicted position xp (written into R). */
+const mtt_real *mtt_polar_track_r(const mtt_tracker *trk, const mtt_real *xp, mtt_real R[3]);
+/* A detection's range rate against the track's prediction (§3.2): 1 when
+ * it has none, 0 when its innovation given the position's is outside
+ * gamma, else N(nu; 0, s) over the clutter's 1 / (2 vmax). */
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms);
+/* The extended Kalman update of x (n states, x y vx vy first) with the
+ * range rate rr[0] of variance rr[1], linearised at x, Joseph form. */
+void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P);
 /* A detection with covariance R against a prediction whose covariance has
  * the rows p0, p1 (ALGORITHMS.md §3.1): d2 = nu' S^-1 nu and p = N(nu; 0,
  * S) / PG, S = Pp_pos + R; -1 when S is not positive definite. */
@@ -43,7 +62,10 @@ int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], 
                    mtt_real ny, mtt_real *d2, mtt_real *p);
 /* The PDA update of an n-state prediction with a covariance Rj[j] per
  * detection (§3.1); d is scratch for m corrections. */
-void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[], uint16_t m,
+/* rr (may be NULL): each detection's range rate and variance or NULL, an
+ * EKF step after its position update (§3.2); sensor: sensor_xy. */
+void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[],
+                         const mtt_real *const rr[], const mtt_real sensor[2], uint16_t m,
                          mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_real d[][MTT_MAX_STATE],
                          mtt_state x, mtt_cov P);
 #endif

@@ -600,7 +600,8 @@ int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], 
  * beta_j P_j + the spread of the d_j, written as the sum of positive
  * semi-definite terms as pda_n writes it.  With every R_j equal it is
  * pda_n's update (the same in exact arithmetic). */
-void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[], uint16_t m,
+void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[],
+                         const mtt_real *const rr[], const mtt_real sensor[2], uint16_t m,
                          mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_real d[][MTT_MAX_STATE],
                          mtt_state x, mtt_cov P)
 {
@@ -631,6 +632,9 @@ void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *
             continue;
         }
         pda_n(n, xp, Pp, K, Si, Rj[j], 1, &nu[j], one, MTT_R(0.0), xj, Pj);
+        if (rr != NULL && rr[j] != NULL) {
+            mtt_polar_rdot_update(n, sensor, rr[j], xj, Pj); /* its range rate (§3.2) */
+        }
         for (i = 0; i < n; ++i) {
             d[j][i] = xj[i] - xp[i];
             c[i] += beta[j] * d[j][i];

@@ -2,7 +2,9 @@
 /* predict.c - prediction of every track, pipeline stage 2 (ALGORITHMS.md
  * §2, §3, §11): the motion model's x^ = F x, P^ = F P F' + Q, the Markov
  * existence prediction, and the innovation covariance S = H P^ H' + R
- * with its inverse and the gain, from which gating and every update work.
+ * with its inverse and the gain, from which gating and every update work
+ * (under polar detections R is the converted covariance at the track's
+ * predicted position, §3.2).
  * A confirmed track of lm-ihpda contest predicts with its own scale of the
  * process noise (§2.1, adapt_q.c).
  * A track whose S is not positive definite is marked invalid (§3): it is
@@ -60,7 +62,16 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
             continue;
         }
 #endif
+#if MTT_WITH_MEAS_COV
+        {
+            mtt_real Rt[3]; /* polar: R at the predicted position (ALGORITHMS.md §3.2) */
+            tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&
+                                  mtt_kalman_innov(tf->Pp, mtt_polar_track_r(trk, tf->xp, Rt), tf->S, tf->Si,
+                                                   &tf->det_s, tf->K) == 0);
+        }
+#else
         tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&
                               mtt_kalman_innov(tf->Pp, trk->R, tf->S, tf->Si, &tf->det_s, tf->K) == 0);
+#endif
     }
 }

@@ -53,7 +53,8 @@ static void pda(mtt_tracker *trk, mtt_track_frame *tf, uint16_t first, uint16_t 
 {
 #if MTT_WITH_MEAS_COV
     if (trk->n_own_r > 0u && mtt_meas_row_r(trk, first, m) > 0u) {
-        mtt_kalman_pda_each(MTT_STATE_N, tf->xp, tf->Pp, trk->row.rj, m, nu, beta, beta0, trk->row.dj, t->x, t->P);
+        mtt_kalman_pda_each(MTT_STATE_N, tf->xp, tf->Pp, trk->row.rj, trk->row.rr, trk->par.sensor_xy, m, nu, beta,
+                            beta0, trk->row.dj, t->x, t->P);
         return;
     }
 #else

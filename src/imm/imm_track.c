@@ -81,8 +81,15 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     tf->vgm = MTT_R(0.0);
     for (j = 0; j < r && ok; ++j) {
         mtt_real det = MTT_R(0.0), Si[3], vg;
+#if MTT_WITH_MEAS_COV
+        mtt_real Rt[3]; /* polar: R at the model's predicted position (ALGORITHMS.md §3.2) */
+        ok = mtt_state_finite(tf->xpm[j]) &&
+             mtt_kalman_innov_n(n[j], tf->Ppm[j], mtt_polar_track_r(trk, tf->xpm[j], Rt), S, Si, &det,
+                                tf->Km[j]) == 0;
+#else
         ok = mtt_state_finite(tf->xpm[j]) &&
              mtt_kalman_innov_n(n[j], tf->Ppm[j], trk->R, S, Si, &det, tf->Km[j]) == 0;
+#endif
         if (ok) {
             memcpy(tf->Sim[j], Si, sizeof Si);
             tf->peakm[j] = mtt_gate_likelihood(MTT_R(0.0), det, p->pg);
@@ -214,6 +221,11 @@ mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
             if (!(d2 <= trk->gamma)) {
                 continue;
             }
+#if MTT_WITH_MEAS_COV
+            if (ms->has_rdot) {
+                c[m].p *= mtt_polar_rdot_lik(trk, tf, ms); /* its range rate, as the pair's p (§3.2) */
+            }
+#endif
             c[m].lam = pp->lam;
             c[m].amp = ms->amp;
             c[m].idx = pp->meas;
@@ -283,7 +295,8 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
         }
 #if MTT_WITH_MEAS_COV
         if (own) {
-            mtt_kalman_pda_each(n, tf->xpm[j], tf->Ppm[j], trk->row.rj, m, nu, bj[j], b0j[j], trk->row.dj,
+            mtt_kalman_pda_each(n, tf->xpm[j], tf->Ppm[j], trk->row.rj, trk->row.rr, trk->par.sensor_xy, m, nu,
+                                bj[j], b0j[j], trk->row.dj,
                                 t->xm[j], t->Pm[j]);
             continue;
         }

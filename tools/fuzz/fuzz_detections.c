@@ -6,7 +6,8 @@
  * reader accepts must be what docs/FORMATS.md promises and what the tracker
  * takes: scans in file order partition the detections, scan numbers never
  * decrease, times and tracker times strictly increase, every coordinate is
- * finite, every amplitude finite and >= 0; and stepping a default tracker
+ * finite, every amplitude finite and >= 0 (polar: range > 0, bearing and
+ * range rate finite); and stepping a default tracker (of the file's form)
  * over the first scans returns MTT_OK every time (as mtt-track does).
  * The read with MTT_IO_SKIP_OUT_OF_RANGE (mtt-track --skip-out-of-range)
  * accepts what the plain read accepts, the same detections, and where the
@@ -25,6 +26,34 @@
 
 static mtt_tracker trk;
 
+/* A default tracker for the file's form: a polar file's has measurement
+ * polar (ALGORITHMS.md §3.2); 0, or -1 where the build has no polar. */
+static int init_for(const mtt_io_detections *d)
+{
+    mtt_params p;
+    if (mtt_params_default(&p) != MTT_OK)
+        abort();
+    if (d->is_polar) {
+        p.measurement = MTT_MEASUREMENT_POLAR;
+        p.meas_sigma[1] = MTT_R(0.01); /* radians */
+        p.range_rate_sigma = MTT_R(1.0);
+        if (!MTT_WITH_MEAS_COV)
+            return mtt_tracker_init(&trk, &p) == MTT_ERR_UNSUPPORTED ? -1 : (abort(), -1);
+    }
+    if (mtt_tracker_init(&trk, &p) != MTT_OK)
+        abort();
+    return 0;
+}
+
+/* Step scan sc of d as mtt-track does. */
+static mtt_status step_scan(const mtt_io_detections *d, const mtt_io_scan *sc)
+{
+    if (d->is_polar)
+        return mtt_tracker_step_polar(&trk, sc->rtime, sc->count != 0 ? &d->polar[sc->first] : NULL, sc->count);
+    return mtt_tracker_step_cov(&trk, sc->rtime, sc->count != 0 ? &d->meas[sc->first] : NULL,
+                                (d->cov != NULL && sc->count != 0) ? &d->cov[sc->first] : NULL, sc->count);
+}
+
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -40,7 +69,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     mtt_io_detections d, ds;
-    mtt_params p;
+    int polar_ok;
     const char *path = fuzz_io_file(data, size);
     size_t k, next = 0;
     int rc = mtt_io_read_detections(path, &d);
@@ -57,15 +86,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (ds.out_of_range != 0)
             FUZZ_FAIL("fuzz_detections", "%zu detections out of range in float", ds.out_of_range);
 #endif
-        if (mtt_params_default(&p) != MTT_OK || mtt_tracker_init(&trk, &p) != MTT_OK)
-            abort();
-        for (k = 0; k < ds.n_scans && k < MAX_STEPPED_SCANS; ++k) {
-            const mtt_io_scan *sc = &ds.scans[k];
-            if (mtt_tracker_step(&trk, sc->rtime, sc->count != 0 ? &ds.meas[sc->first] : NULL,
-                                 sc->count) != MTT_OK)
-                break;
-        }
-        if (k == ds.n_scans && (mtt_tracker_stats(&trk, &st_all) != MTT_OK ||
+        if (init_for(&ds) != 0)
+            k = 0; /* no polar in this build: nothing stepped */
+        else
+            for (k = 0; k < ds.n_scans && k < MAX_STEPPED_SCANS; ++k)
+                if (step_scan(&ds, &ds.scans[k]) != MTT_OK)
+                    break;
+        if (k == ds.n_scans && ds.n_scans != 0 && !ds.is_polar && (mtt_tracker_stats(&trk, &st_all) != MTT_OK ||
                                 st_all.total.meas_out_of_range != (uint32_t)ds.out_of_range))
             FUZZ_FAIL("fuzz_detections", "the tracker counted %u of %zu detections out of range",
                       (unsigned)st_all.total.meas_out_of_range, ds.out_of_range);
@@ -96,7 +123,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         if (!mtt_isfinite(sc->rtime) || sc->time != sc->time)
             FUZZ_FAIL("fuzz_detections", "scan %zu: time not finite", k);
-        for (j = sc->first; j < sc->first + sc->count; ++j) {
+        for (j = sc->first; j < sc->first + sc->count && d.is_polar; ++j) {
+            const mtt_polar *q = &d.polar[j];
+            if (!mtt_isfinite(q->range) || !(q->range > MTT_R(0.0)) || !mtt_isfinite(q->bearing) ||
+                (q->has_range_rate && !mtt_isfinite(q->range_rate)))
+                FUZZ_FAIL("fuzz_detections", "detection %zu: bad range or bearing accepted", j);
+            if (q->has_amplitude && (!mtt_isfinite(q->amplitude) || !(q->amplitude >= MTT_R(0.0))))
+                FUZZ_FAIL("fuzz_detections", "detection %zu: bad amplitude accepted", j);
+        }
+        for (j = sc->first; j < sc->first + sc->count && !d.is_polar; ++j) {
             const mtt_meas *m = &d.meas[j];
             if (!mtt_isfinite(m->x) || !mtt_isfinite(m->y))
                 FUZZ_FAIL("fuzz_detections", "detection %zu: coordinate not finite", j);
@@ -115,13 +150,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (next != d.n_meas)
         FUZZ_FAIL("fuzz_detections", "scans cover %zu of %zu detections", next, d.n_meas);
-    if (mtt_params_default(&p) != MTT_OK || mtt_tracker_init(&trk, &p) != MTT_OK)
-        abort();
-    for (k = 0; k < d.n_scans && k < MAX_STEPPED_SCANS; ++k) {
+    polar_ok = init_for(&d) == 0;
+    for (k = 0; k < d.n_scans && k < MAX_STEPPED_SCANS && polar_ok; ++k) {
         const mtt_io_scan *sc = &d.scans[k];
         const mtt_meas_cov *c = (d.cov != NULL && sc->count != 0) ? &d.cov[sc->first] : NULL;
-        mtt_status st = mtt_tracker_step_cov(&trk, sc->rtime, sc->count != 0 ? &d.meas[sc->first] : NULL, c,
-                                             sc->count);
+        mtt_status st = step_scan(&d, sc);
         if (st == MTT_ERR_UNSUPPORTED && c != NULL && !MTT_WITH_MEAS_COV)
             continue; /* a build without a covariance per detection refuses them */
         if (st != MTT_OK)

@@ -34,6 +34,14 @@ static int in_range(int col, double v, double *lo, double *hi)
 }
 #endif
 static const char *const det_cols[N_COLS_COV] = {"scan", "time", "x", "y", "amplitude", "r_xx", "r_xy", "r_yy"};
+/* The polar form (ALGORITHMS.md §3.2): range and bearing in the columns of x and y. */
+static const char *const polar_cols[N_COLS + 1] = {"scan", "time", "range", "bearing", "amplitude", "range_rate"};
+
+/* The column names of the file being read (one reader at a time per form). */
+static const char *const *col_names(const mtt_io_csv *c)
+{
+    return c->polar_form ? polar_cols : det_cols;
+}
 
 /* Report a field that failed to parse; always MTT_IO_EINPUT. */
 static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *what)
@@ -41,18 +49,18 @@ static int bad_number(const mtt_io_csv *c, int col, mtt_io_num why, const char *
     const char *s = c->fields[col];
     switch (why) {
     case MTT_IO_NUM_EMPTY:
-        mtt_io_error_at(c->path, c->line, det_cols[col], "missing value: expected %s", what);
+        mtt_io_error_at(c->path, c->line, col_names(c)[col], "missing value: expected %s", what);
         break;
     case MTT_IO_NUM_NONFINITE:
-        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is not allowed: expected %s", s,
+        mtt_io_error_at(c->path, c->line, col_names(c)[col], "'%s' is not allowed: expected %s", s,
                         what);
         break;
     case MTT_IO_NUM_RANGE:
-        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is out of range: expected %s", s,
+        mtt_io_error_at(c->path, c->line, col_names(c)[col], "'%s' is out of range: expected %s", s,
                         what);
         break;
     default:
-        mtt_io_error_at(c->path, c->line, det_cols[col], "'%s' is not %s", s, what);
+        mtt_io_error_at(c->path, c->line, col_names(c)[col], "'%s' is not %s", s, what);
         break;
     }
     return MTT_IO_EINPUT;
@@ -83,7 +91,7 @@ static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real
             if ((flags & MTT_IO_SKIP_OUT_OF_RANGE) == 0u) {
                 mtt_io_format_double(lo, a, sizeof a);
                 mtt_io_format_double(hi, b, sizeof b);
-                mtt_io_error_at(c->path, c->line, det_cols[col],
+                mtt_io_error_at(c->path, c->line, col_names(c)[col],
                                 "'%s' is outside this build's range [%s, %s] (mtt_real="
                                 MTT_IO_REAL_NAME ", Q%d; --skip-out-of-range skips and counts "
                                 "such detections)",
@@ -98,7 +106,7 @@ static int field_real(const mtt_io_csv *c, int col, int fmt, double *d, mtt_real
     (void)out_of_range;
 #endif
     if (!mtt_io_to_real(*d, fmt, r) && !MTT_IO_SATURATES) {
-        mtt_io_error_at(c->path, c->line, det_cols[col],
+        mtt_io_error_at(c->path, c->line, col_names(c)[col],
                         "'%s' does not fit the tracker's real type (mtt_real=" MTT_IO_REAL_NAME ")",
                         c->fields[col]);
         return MTT_IO_EINPUT;
@@ -144,6 +152,7 @@ void mtt_io_free_detections(mtt_io_detections *d)
 {
     free(d->meas);
     free(d->cov);
+    free(d->polar);
     free(d->scans);
     memset(d, 0, sizeof *d);
 }
@@ -166,7 +175,7 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
     for (k = 0; k < 3; ++k) {
         mtt_real dummy;
         if (c->fields[COL_RXX + k][0] == '\0') {
-            mtt_io_error_at(c->path, c->line, det_cols[COL_RXX + k],
+            mtt_io_error_at(c->path, c->line, col_names(c)[COL_RXX + k],
                             "missing value: r_xx, r_xy and r_yy are given together or all left empty");
             return MTT_IO_EINPUT;
         }
@@ -175,7 +184,7 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
     }
     if (!(v[0] > 0.0) || !(v[2] > 0.0)) {
         k = v[0] > 0.0 ? COL_RYY : COL_RXX;
-        mtt_io_error_at(c->path, c->line, det_cols[k], "'%s' must be > 0 (a variance)", c->fields[k]);
+        mtt_io_error_at(c->path, c->line, col_names(c)[k], "'%s' must be > 0 (a variance)", c->fields[k]);
         return MTT_IO_EINPUT;
     }
     if (!(v[0] * v[2] > v[1] * v[1])) {
@@ -198,16 +207,20 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     double time, x = 0, y = 0, amp = 0;
     mtt_meas m;
     mtt_meas_cov r;
-    mtt_real rtime;
+    mtt_real rtime, rrate = 0;
+    int has_rrate = 0;
     mtt_io_num e;
     int empty, rc;
     size_t oor = 0;
     char t0[32], t1[32];
-    const char *header = ncols == N_COLS ? "scan,time,x,y,amplitude" : "scan,time,x,y,amplitude,r_xx,r_xy,r_yy";
+    const char *header = c->polar_form ? (ncols == N_COLS ? "scan,time,range,bearing,amplitude"
+                                                          : "scan,time,range,bearing,amplitude,range_rate")
+                         : ncols == N_COLS ? "scan,time,x,y,amplitude" : "scan,time,x,y,amplitude,r_xx,r_xy,r_yy";
+    const char *const *names = col_names(c);
     mtt_io_scan *prev = d->n_scans != 0 ? &d->scans[d->n_scans - 1] : NULL;
 
     if (c->n_fields < (size_t)ncols) {
-        mtt_io_error_at(c->path, c->line, det_cols[c->n_fields],
+        mtt_io_error_at(c->path, c->line, col_names(c)[c->n_fields],
                         "missing: the row has %lu fields, expected %d (%s)",
                         (unsigned long)c->n_fields, ncols, header);
         return MTT_IO_EINPUT;
@@ -235,8 +248,8 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
     empty = c->fields[COL_X][0] == '\0' && c->fields[COL_Y][0] == '\0';
     if (empty) {
         if (c->fields[COL_AMP][0] != '\0') {
-            mtt_io_error_at(c->path, c->line, "amplitude",
-                            "must be empty on an empty-scan row (x and y empty)");
+            mtt_io_error_at(c->path, c->line, "amplitude", "must be empty on an empty-scan row (%s and %s empty)",
+                            names[COL_X], names[COL_Y]);
             return MTT_IO_EINPUT;
         }
     } else {
@@ -244,6 +257,10 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             (rc = field_real(c, COL_Y, MTT_IO_POS, &y, &m.y, flags, oor != 0 ? NULL : &oor)) !=
                 MTT_IO_OK)
             return rc;
+        if (c->polar_form && !(x > 0.0)) {
+            mtt_io_error_at(c->path, c->line, "range", "'%s' must be > 0", c->fields[COL_X]);
+            return MTT_IO_EINPUT;
+        }
         if (c->fields[COL_AMP][0] != '\0') {
             if ((rc = field_real(c, COL_AMP, MTT_IO_AMP, &amp, &m.amplitude, flags,
                                  oor != 0 ? NULL : &oor)) != MTT_IO_OK)
@@ -257,8 +274,19 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
         }
     }
     memset(&r, 0, sizeof r);
-    if (ncols == N_COLS_COV && (rc = cov_fields(c, empty, &r)) != MTT_IO_OK)
+    if (!c->polar_form && ncols == N_COLS_COV && (rc = cov_fields(c, empty, &r)) != MTT_IO_OK)
         return rc;
+    if (c->polar_form && ncols > N_COLS && c->fields[N_COLS][0] != '\0') {
+        /* a range rate (ALGORITHMS.md §3.2) */
+        double v;
+        if (empty) {
+            mtt_io_error_at(c->path, c->line, "range_rate", "must be empty on an empty-scan row (range and bearing empty)");
+            return MTT_IO_EINPUT;
+        }
+        if ((rc = field_real(c, N_COLS, MTT_IO_POS, &v, &rrate, 0u, NULL)) != MTT_IO_OK)
+            return rc;
+        has_rrate = 1;
+    }
 
     if (prev != NULL && scan == prev->scan) {
         if (time != prev->time) {
@@ -270,10 +298,10 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             return MTT_IO_EINPUT;
         }
         if (empty || *scan_has_empty_row) {
-            mtt_io_error_at(c->path, c->line, "x",
-                            "scan %lu has both detections and an empty-scan row (x and y "
+            mtt_io_error_at(c->path, c->line, names[COL_X],
+                            "scan %lu has both detections and an empty-scan row (%s and %s "
                             "empty): an empty scan is a single row",
-                            scan);
+                            scan, names[COL_X], names[COL_Y]);
             return MTT_IO_EINPUT;
         }
     } else {
@@ -330,7 +358,12 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
         *scan_has_empty_row = 1;
         return MTT_IO_OK;
     }
-    if (d->n_meas == d->cap_meas) {
+    if (d->n_meas == d->cap_meas && c->polar_form) {
+        mtt_polar *p = grow(d->polar, &d->cap_meas, sizeof *p);
+        if (p == NULL)
+            goto oom;
+        d->polar = p;
+    } else if (d->n_meas == d->cap_meas) {
         size_t cap = d->cap_meas;
         mtt_meas *p = grow(d->meas, &cap, sizeof *p);
         if (p == NULL)
@@ -344,6 +377,19 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
             d->cov = q;
         }
         d->cap_meas = cap;
+    }
+    if (c->polar_form) {
+        mtt_polar *q = &d->polar[d->n_meas++];
+        q->range = m.x;
+        q->bearing = m.y;
+        q->amplitude = m.amplitude;
+        q->has_amplitude = m.has_amplitude;
+        q->range_rate = rrate;
+        q->has_range_rate = has_rrate;
+        d->has_range_rate |= q->has_range_rate;
+        d->out_of_range += oor;
+        prev->count++;
+        return MTT_IO_OK;
     }
     if (ncols == N_COLS_COV)
         d->cov[d->n_meas] = r;
@@ -372,14 +418,23 @@ int mtt_io_read_detections_opt(const char *path, mtt_io_detections *d, unsigned 
     if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK)
         goto done;
     if (!got) {
-        mtt_io_error_at(path, 0, NULL, "empty file: expected the header 'scan,time,x,y,amplitude'");
+        mtt_io_error_at(path, 0, NULL, "empty file: expected the header 'scan,time,x,y,amplitude' (or "
+                                       "'scan,time,range,bearing,amplitude')");
         rc = MTT_IO_EINPUT;
         goto done;
     }
-    /* the header names the form: with r_xx,r_xy,r_yy every row has them */
-    if (c.n_fields > N_COLS && strcmp(c.fields[N_COLS], "r_xx") == 0)
+    d->header_line = c.line;
+    /* the header names the form: with r_xx,r_xy,r_yy every row has them;
+     * range,bearing in place of x,y: polar (ALGORITHMS.md §3.2) */
+    if (c.n_fields > COL_X && strcmp(c.fields[COL_X], "range") == 0) {
+        c.polar_form = 1;
+        d->is_polar = 1;
+        if (c.n_fields > N_COLS && strcmp(c.fields[N_COLS], "range_rate") == 0)
+            ncols = N_COLS + 1; /* range,bearing,amplitude,range_rate */
+    } else if (c.n_fields > N_COLS && strcmp(c.fields[N_COLS], "r_xx") == 0) {
         ncols = N_COLS_COV;
-    if ((rc = mtt_io_csv_expect_header(&c, det_cols, (size_t)ncols)) != MTT_IO_OK)
+    }
+    if ((rc = mtt_io_csv_expect_header(&c, col_names(&c), (size_t)ncols)) != MTT_IO_OK)
         goto done;
     for (;;) {
         if ((rc = mtt_io_csv_next(&c, &got)) != MTT_IO_OK || !got)

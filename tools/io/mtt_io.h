@@ -152,6 +152,7 @@ typedef struct mtt_io_csv {
     long line;         /**< 1-based number of the current line */
     char **fields;     /**< the current line's fields (into buf) */
     size_t n_fields, cap_fields;
+    int polar_form;    /**< detections.c: the file's header is the polar form (its column names) */
 } mtt_io_csv;
 
 /** Open path for reading.  Reports and returns MTT_IO_EINPUT if it cannot. */
@@ -187,6 +188,11 @@ typedef struct mtt_io_detections {
     mtt_meas *meas;      /**< all detections, file order */
     mtt_meas_cov *cov;   /**< their covariances (header with r_xx,r_xy,r_yy; all 0 where a
                               row leaves them empty), or NULL: the file has none */
+    mtt_polar *polar;    /**< is_polar (header scan,time,range,bearing,amplitude): the
+                              detections, file order; meas and cov are then NULL */
+    int is_polar;
+    int has_range_rate;  /**< is_polar: some detection has a range rate */
+    long header_line;    /**< the line of the header (after comments) */
     size_t n_meas, cap_meas;
     mtt_io_scan *scans;  /**< scans, file order */
     size_t n_scans, cap_scans;

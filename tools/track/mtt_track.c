@@ -275,6 +275,14 @@ static int add_seeds(mtt_tracker *trk, const options *o, const mtt_io_settings *
         mtt_io_error("%s: the first scan interval is out of range", o->detections);
         return EXIT_INPUT;
     }
+    for (i = 0; i < s->n_seeds && s->params.measurement == MTT_MEASUREMENT_POLAR; ++i) {
+        if (!s->seeds[i].has_P) {
+            /* the two-point P is of Cartesian sigmas: polar meas_sigma is range, bearing */
+            mtt_io_seed_key(i, "P", key, sizeof key);
+            mtt_io_error_key(o->config, key, "missing: with measurement polar an initial track needs its P");
+            return EXIT_INPUT;
+        }
+    }
     st = mtt_init_two_point_cov(s->params.meas_sigma[0], s->params.meas_sigma[1], dt, P2);
     if (st != MTT_OK) {
         mtt_io_error("%s: two-point covariance for the initial tracks failed (first scan "
@@ -370,6 +378,24 @@ static int run(const options *o)
         rc = EXIT_FAIL;
         goto done;
     }
+    /* the header names the form, the settings' measurement must agree (ALGORITHMS.md §3.2) */
+    if (det.is_polar != (settings.params.measurement == MTT_MEASUREMENT_POLAR)) {
+        mtt_io_error_at(o->detections, det.header_line, det.is_polar ? "range" : "x",
+                        "the header is the %s form but %s has measurement \"%s\": set \"measurement\": \"%s\" "
+                        "(and sensor_xy, meas_sigma [sigma_range, sigma_bearing]) or give %s detections",
+                        det.is_polar ? "polar (range,bearing)" : "Cartesian (x,y)", o->config,
+                        det.is_polar ? "cartesian" : "polar", det.is_polar ? "polar" : "cartesian",
+                        det.is_polar ? "Cartesian" : "polar");
+        rc = EXIT_INPUT;
+        goto done;
+    }
+    if (det.has_range_rate && !(settings.params.range_rate_sigma > 0)) {
+        mtt_io_error_key(o->config, "range_rate_sigma",
+                         "missing: %s has range rates, which need their standard deviation (length/time)",
+                         o->detections);
+        rc = EXIT_INPUT;
+        goto done;
+    }
     if ((st = mtt_tracker_init(trk, &settings.params)) != MTT_OK) {
         /* mtt_params_check passed in the reader: this is not the input's fault */
         mtt_io_error("%s: mtt_tracker_init failed: %s", o->config, status_text(st));
@@ -401,8 +427,12 @@ static int run(const options *o)
 
     for (k = 0; k < det.n_scans; ++k) {
         const mtt_io_scan *sc = &det.scans[k];
-        st = mtt_tracker_step_cov(trk, sc->rtime, sc->count != 0 ? &det.meas[sc->first] : NULL,
-                                  (det.cov != NULL && sc->count != 0) ? &det.cov[sc->first] : NULL, sc->count);
+        if (det.is_polar)
+            st = mtt_tracker_step_polar(trk, sc->rtime, sc->count != 0 ? &det.polar[sc->first] : NULL, sc->count);
+        else
+            st = mtt_tracker_step_cov(trk, sc->rtime, sc->count != 0 ? &det.meas[sc->first] : NULL,
+                                      (det.cov != NULL && sc->count != 0) ? &det.cov[sc->first] : NULL,
+                                      sc->count);
         if (st == MTT_ERR_UNSUPPORTED && det.cov != NULL) {
             mtt_io_error_at(o->detections, sc->line, "r_xx",
                             "scan %lu: a covariance per detection is not available here (a build without "

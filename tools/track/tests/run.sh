@@ -142,6 +142,17 @@ confirmed_near() {
         } END { exit !ok }' "$1"
 }
 
+# polar_ok CFG DET: CFG.json on DET.det.csv (valid.det.csv's target seen
+# from (0, 0)) runs cleanly with a confirmed track on the target at scan 11.
+polar_ok() {
+    rm -f "$out"
+    run --config "$data/$1.json" --detections "$data/$2.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    [ ! -s "$work/stderr" ] || fail "stderr not empty on success"
+    confirmed_near "$out" 11 111 50 1.5 ||
+        fail "no confirmed track near the target (111, 50) at scan 11"
+}
+
 case "$case" in
 # ---- usage ---------------------------------------------------------------
 help)
@@ -165,7 +176,7 @@ list_settings)
     stdout_has "| \`initial_tracks\` | list | "
     stdout_has " | probability of detection PD | sensor |"
     # one row per key of the library's table, plus the header, rule and initial_tracks
-    [ "$(grep -c '^| `' "$work/stdout")" -eq 52 ] || fail "expected 52 key rows"
+    [ "$(grep -c '^| `' "$work/stdout")" -eq 55 ] || fail "expected 55 key rows"
     ;;
 version)
     run --version
@@ -344,6 +355,33 @@ valid_cov_empty)
     [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
     cmp -s "$out" "$work/a.csv" || fail "tracks differ from valid.det.csv's"
     ;;
+
+polar_valid)
+    # polar detections (ALGORITHMS.md §3.2): valid.det.csv seen from (0, 0)
+    polar_ok polar polar
+    ;;
+det_polar_bad_range)    expect_fail 2 "det_polar_bad_range.det.csv:3: field 'range': '-3' must be > 0" \
+                            "$data/polar.json" "$data/det_polar_bad_range.det.csv" ;;
+det_polar_bearing)      expect_fail 2 "det_polar_bearing.det.csv:3: field 'bearing': 'north' is not a finite number" \
+                            "$data/polar.json" "$data/det_polar_bearing.det.csv" ;;
+det_polar_range_rate)   expect_fail 2 "polar.json: key 'range_rate_sigma': missing: " \
+                            "$data/polar.json" "$data/det_polar_range_rate.det.csv" ;;
+polar_range_rate_valid)
+    # a range rate per detection: gated and updated with (ALGORITHMS.md §3.2)
+    polar_ok polar_rr polar_rr
+    # its velocity (1, 0) per scan to 0.2
+    awk -F, '$1 == 11 && $4 == "confirmed" && ($7 - 1) ^ 2 + $8 ^ 2 < 0.04 { ok = 1 } END { exit !ok }' "$out" ||
+        fail "the confirmed track's velocity at scan 11 is not (1, 0)"
+    ;;
+det_polar_cartesian_settings)
+    # the header names the form, the settings must agree
+    expect_fail 2 "polar.det.csv:3: field 'range': the header is the polar (range,bearing) form but" \
+        "$data/empty.json" "$data/polar.det.csv" ;;
+det_cartesian_polar_settings)
+    expect_fail 2 "valid.det.csv:4: field 'x': the header is the Cartesian (x,y) form but" \
+        "$data/polar.json" "$data/valid.det.csv" ;;
+cfg_polar_unsupported)  expect_fail 2 "polar.json: key 'measurement': measurement = polar needs a build with MTT_WITH_MEAS_COV" \
+                            "$data/polar.json" "$data/polar.det.csv" ;;
 
 # ---- bad settings ------------------------------------------------------------
 cfg_missing_file)
