@@ -470,14 +470,20 @@ static size_t rr_frame(int k, int with_rr, mtt_polar in[8], double e[2])
 }
 
 /* That scene: the radial component of the track's velocity error is
- * smaller with the range rates than without. */
-static double velocity_rms(int with_rr)
+ * smaller with the range rates than without; imm: the IMM from max_accel,
+ * whose models each weigh the range rate against their own prediction. */
+static double velocity_rms(int with_rr, int imm)
 {
     mtt_params p;
     double se = 0.0;
     int k, counted = 0;
     polar_params(&p);
     p.range_rate_sigma = MTT_R(0.5);
+    if (imm) {
+        p.process_psd = MTT_R(0.0);
+        p.max_accel = MTT_R(5.0);
+        p.motion = MTT_MOTION_IMM;
+    }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     rng_state = 4242u;
     for (k = 0; k < SCANS; ++k) {
@@ -504,10 +510,16 @@ static void test_range_rate_lowers_the_velocity_error(void)
 {
     double without, with_rr;
     make_scene();
-    without = velocity_rms(0);
-    with_rr = velocity_rms(1);
+    without = velocity_rms(0, 0);
+    with_rr = velocity_rms(1, 0);
     TEST_ASSERT_TRUE(with_rr > 0.05);        /* a real error */
     TEST_ASSERT_TRUE(with_rr < 0.5 * without); /* 0.21 against 0.52 m/s in float */
+#if MTT_WITH_IMM
+    without = velocity_rms(0, 1);
+    with_rr = velocity_rms(1, 1);
+    TEST_ASSERT_TRUE(with_rr > 0.05);
+    TEST_ASSERT_TRUE(with_rr < 0.5 * without);
+#endif
 }
 
 /* The IMM (motion imm) takes polar detections

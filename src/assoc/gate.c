@@ -309,6 +309,9 @@ void mtt_gate_frame(mtt_tracker *trk)
 #endif
 #if MTT_WITH_IMM
     const int imm = trk->par.motion == MTT_MOTION_IMM;
+#define IMM_TRACK imm
+#else
+#define IMM_TRACK 0
 #endif
 
     trk->n_pairs = 0;
@@ -376,8 +379,10 @@ void mtt_gate_frame(mtt_tracker *trk)
                 continue;
             }
 #if MTT_WITH_MEAS_COV
-            if (meas[j].has_rdot && !(mtt_polar_rdot_lik(trk, tf, &meas[j]) > MTT_R(0.0))) {
-                continue; /* its range rate is outside the gate (ALGORITHMS.md §3.2) */
+            /* its range rate outside the gate (ALGORITHMS.md §3.2); an IMM
+             * track's models gate it in mtt_imm_model_d2, a union */
+            if (meas[j].has_rdot && !IMM_TRACK && !(mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[j]) > MTT_R(0.0))) {
+                continue;
             }
 #endif
             if (nc < MTT_MAX_GATED) {
@@ -421,8 +426,8 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
 #endif
 #if MTT_WITH_MEAS_COV
-            if (meas[cm[a]].has_rdot) {
-                np.p *= mtt_polar_rdot_lik(trk, tf, &meas[cm[a]]); /* its range rate (§3.2) */
+            if (meas[cm[a]].has_rdot && !IMM_TRACK) {
+                np.p *= mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[cm[a]]); /* its range rate (§3.2) */
             }
 #endif
             np.w = MTT_ZERO;

@@ -48,10 +48,11 @@ mtt_real mtt_polar_range(const mtt_tracker *trk, const mtt_real *xp);
 /* The R a track's S is formed with: trk->R, or under polar the converted
  * covariance at its predicted position xp (written into R). */
 const mtt_real *mtt_polar_track_r(const mtt_tracker *trk, const mtt_real *xp, mtt_real R[3]);
-/* A detection's range rate against the track's prediction (§3.2): 1 when
- * it has none, 0 when its innovation given the position's is outside
- * gamma, else N(nu; 0, s) over the clutter's 1 / (2 vmax). */
-mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms);
+/* A detection's range rate against a prediction xp, Pp (a CV track's, or
+ * one IMM model's, rows of MTT_MAX_STATE from &P[0][0]; §3.2): 1 when it
+ * has none, 0 when its innovation given the position's is outside gamma,
+ * else N(nu; 0, s) over the clutter's 1 / (2 vmax). */
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms);
 /* The extended Kalman update of x (n states, x y vx vy first) with the
  * range rate rr[0] of variance rr[1], linearised at x, Joseph form. */
 void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P);

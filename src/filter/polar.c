@@ -89,11 +89,14 @@ static int rdot_h(const mtt_real sensor[2], const mtt_real *x, mtt_real *h, mtt_
     return 0;
 }
 
-mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms)
+/* Pp's element (i, k): rows of MTT_MAX_STATE */
+#define PP(i, k) Pp[(i) * MTT_MAX_STATE + (k)]
+
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms)
 {
     mtt_real h, H[4], A[4], S0, S1, S2, det, a0, a1, nu, s;
     int i, k;
-    if (!ms->has_rdot || rdot_h(trk->par.sensor_xy, tf->xp, &h, H) != 0) {
+    if (!ms->has_rdot || rdot_h(trk->par.sensor_xy, xp, &h, H) != 0) {
         return MTT_R(1.0);
     }
     /* A = P H' over x, y, vx, vy: C = A[0..1] is the range rate's covariance
@@ -101,13 +104,13 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, c
     for (i = 0; i < 4; ++i) {
         A[i] = MTT_R(0.0);
         for (k = 0; k < 4; ++k) {
-            A[i] += tf->Pp[i][k] * H[k];
+            A[i] += PP(i, k) * H[k];
         }
     }
     s = H[0] * A[0] + H[1] * A[1] + H[2] * A[2] + H[3] * A[3] + ms->rr[1];
-    S0 = tf->Pp[0][0] + ms->R[0];
-    S1 = MTT_R(0.5) * (tf->Pp[0][1] + tf->Pp[1][0]) + ms->R[1];
-    S2 = tf->Pp[1][1] + ms->R[2];
+    S0 = PP(0, 0) + ms->R[0];
+    S1 = MTT_R(0.5) * (PP(0, 1) + PP(1, 0)) + ms->R[1];
+    S2 = PP(1, 1) + ms->R[2];
     det = S0 * S2 - S1 * S1;
     if (!(det > MTT_R(0.0))) {
         return MTT_R(1.0);
@@ -116,7 +119,7 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, c
      * variance s - C S^-1 C' (the sequential form of the 3-vector's d^2) */
     a0 = (S2 * A[0] - S1 * A[1]) / det;
     a1 = (S0 * A[1] - S1 * A[0]) / det;
-    nu = ms->rr[0] - h - (a0 * (ms->x - tf->xp[0]) + a1 * (ms->y - tf->xp[1]));
+    nu = ms->rr[0] - h - (a0 * (ms->x - xp[0]) + a1 * (ms->y - xp[1]));
     s -= a0 * A[0] + a1 * A[1];
     if (!(s > MTT_R(0.0))) {
         return MTT_R(1.0);
@@ -128,6 +131,7 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_track_frame *tf, c
      * N(nu; 0, s) to that density (ALGORITHMS.md §3.2) */
     return MTT_R(2.0) * trk->par.vmax * mtt_exp(MTT_R(-0.5) * nu * nu / s) / mtt_sqrt(MTT_R(2.0) * MTT_PI * s);
 }
+#undef PP
 
 void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P)
 {
