@@ -386,26 +386,33 @@ static mtt_polar pol_rr(double r, double b, double rr)
     return d;
 }
 
+/* The seeded track of the range-rate tests: at (3000, 500), moving
+ * radially at 20 from the sensor at (-1000, 500). */
+static void seed_radial(mtt_tracker *t)
+{
+    const mtt_real x[4] = {MTT_R(3000.0), MTT_R(500.0), MTT_R(20.0), MTT_R(0.0)};
+    mtt_real P[16];
+    memset(P, 0, sizeof P);
+    P[0] = P[5] = MTT_R(400.0);
+    P[10] = P[15] = MTT_R(4.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(t, x, P, NULL));
+}
+
 /* A seeded track moving radially at 20 from the sensor at (-1000, 500):
  * a detection on it with range rate 20 is gated with a likelihood ratio
  * above its position's alone; with range rate -20 it is not gated. */
 static void test_range_rate_gates_and_weighs(void)
 {
     mtt_params p;
-    const mtt_real x[4] = {MTT_R(3000.0), MTT_R(500.0), MTT_R(20.0), MTT_R(0.0)};
-    mtt_real P[16];
     mtt_polar d[1];
     double p_pos;
     int k;
-    memset(P, 0, sizeof P);
-    P[0] = P[5] = MTT_R(400.0);
-    P[10] = P[15] = MTT_R(4.0);
     for (k = 0; k < 3; ++k) {
         polar_params(&p);
         p.initiate = 0;
         p.range_rate_sigma = MTT_R(0.5);
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&ta, x, P, NULL));
+        seed_radial(&ta);
         d[0] = (k == 0) ? pol(4005.0, 0.001) : pol_rr(4005.0, 0.001, (k == 1) ? 20.0 : -20.0);
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), d, 1u));
         if (k == 0) {
@@ -569,6 +576,55 @@ static void test_imm_takes_polar_detections(void)
 #endif
 }
 
+/* Under the IMM each model weighs the range rate against its own
+ * prediction (ALGORITHMS.md §3.2, §14.2): a seeded track moving radially
+ * at 20 from the sensor, one frame later a detection on its predicted
+ * position whose range rate is 5 off (2.4 sigma of the steady model's
+ * predicted range rate, 0.9 of the manoeuvring one's) raises the
+ * manoeuvring model's probability above what a matching range rate
+ * leaves.  (Before 834da07 the models' likelihoods left the range rate out
+ * and both gave the same probabilities.) */
+static double imm_mu_after(double rr)
+{
+#if MTT_WITH_IMM
+    mtt_params p;
+    mtt_polar d[1];
+    mtt_track_view v;
+    size_t cnt;
+    polar_params(&p);
+    p.association = MTT_ASSOC_LM_IPDA;
+    p.initiate = 0;
+    p.process_psd = MTT_R(0.0);
+    p.max_accel = MTT_R(5.0); /* models (0.5)^2 and 5^2 per unit time */
+    p.motion = MTT_MOTION_IMM;
+    p.range_rate_sigma = MTT_R(0.5);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    seed_radial(&ta);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), d, 0u));
+    d[0] = pol_rr(4020.0, 0.0, rr); /* the predicted position (3020, 500) */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(1.0), d, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
+    TEST_ASSERT_EQUAL_UINT32(1u, (uint32_t)cnt);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, 0, &v));
+    TEST_ASSERT_EQUAL_UINT8(2u, v.n_models);
+    return (double)v.mu[1];
+#else
+    (void)rr;
+    return 0.0;
+#endif
+}
+
+static void test_imm_models_weigh_the_range_rate(void)
+{
+#if MTT_WITH_IMM
+    const double match = imm_mu_after(20.0), off = imm_mu_after(25.0);
+    TEST_ASSERT_TRUE(match > 0.0 && off < 1.0);
+    TEST_ASSERT_TRUE(off > 5.0 * match); /* 0.0068 against 0.0006 in float and double */
+#else
+    TEST_IGNORE_MESSAGE("no IMM in this build");
+#endif
+}
+
 static void test_range_rate_needs_its_sigma(void)
 {
     mtt_params p;
@@ -626,6 +682,7 @@ int main(void)
     RUN_TEST(test_birth_takes_the_radial_velocity);
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
     RUN_TEST(test_imm_takes_polar_detections);
+    RUN_TEST(test_imm_models_weigh_the_range_rate);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else
     RUN_TEST(test_build_without_meas_cov_refuses_polar);
