@@ -380,8 +380,9 @@ det_polar_cartesian_settings)
 det_cartesian_polar_settings)
     expect_fail 2 "valid.det.csv:4: field 'x': the header is the Cartesian (x,y) form but" \
         "$data/polar.json" "$data/valid.det.csv" ;;
-cfg_polar_unsupported)  expect_fail 2 "polar.json: key 'measurement': measurement = polar needs a build with MTT_WITH_MEAS_COV" \
-                            "$data/polar.json" "$data/polar.det.csv" ;;
+cfg_polar_unsupported)  # values inside both fixed-point scales' formats, so that the refusal is the first error
+                        expect_fail 2 "polar_fixed.json: key 'measurement': measurement = polar needs a build with MTT_WITH_MEAS_COV" \
+                            "$data/polar_fixed.json" "$data/polar.det.csv" ;;
 
 # ---- bad settings ------------------------------------------------------------
 cfg_missing_file)
