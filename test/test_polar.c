@@ -620,9 +620,65 @@ static void test_imm_models_weigh_the_range_rate(void)
     const double match = imm_mu_after(20.0), off = imm_mu_after(25.0);
     TEST_ASSERT_TRUE(match > 0.0 && off < 1.0);
     TEST_ASSERT_TRUE(off > 5.0 * match); /* 0.0068 against 0.0006 in float and double */
+    /* range rate -20: outside every model's gate, so not gated at all */
+    (void)imm_mu_after(-20.0);
+    TEST_ASSERT_EQUAL_UINT16(0u, ta.tf[0].pair_count);
 #else
     TEST_IGNORE_MESSAGE("no IMM in this build");
 #endif
+}
+
+/* Detections on one position that differ only in their range rate (none,
+ * 1, 2 m/s), and beyond MTT_MAX_MEAS a frame's weakest dropped: any input
+ * order gives the same tracks and identities (the canonical order takes
+ * the range rate after the position; the cap ranks polar detections by
+ * amplitude). */
+static void polar_order_run(mtt_tracker *t, int reverse, mtt_track_view *out, size_t *n_out, uint32_t *dropped)
+{
+    static mtt_polar in[MTT_MAX_MEAS + 10];
+    mtt_params p;
+    mtt_stats st;
+    const size_t n = sizeof in / sizeof in[0];
+    size_t i, cnt;
+    int k;
+    polar_params(&p);
+    p.range_rate_sigma = MTT_R(0.5);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(t, &p));
+    for (k = 0; k < 6; ++k) {
+        for (i = 0; i < n; ++i) {
+            const size_t s = reverse ? n - 1u - i : i;
+            in[s] = pol(2000.0 + 30.0 * (double)k + (double)(i / 3u) * 40.0, 0.1 + 0.001 * (double)(i / 3u));
+            in[s].amplitude = (mtt_real)((i / 3u) % 7u); /* one per position: the range rate breaks the tie */
+            in[s].has_amplitude = 1;
+            in[s].has_range_rate = (i % 3u) != 0u;
+            in[s].range_rate = (mtt_real)(i % 3u);
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(t, (mtt_real)k, in, n));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(t, &st));
+    *dropped = st.total.meas_dropped;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(t, &cnt));
+    TEST_ASSERT_TRUE(cnt > 0u && cnt <= MTT_MAX_TRACKS);
+    for (i = 0; i < cnt && i < 16u; ++i) {
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(t, i, &out[i]));
+    }
+    *n_out = cnt;
+}
+
+static void test_polar_order_and_cap(void)
+{
+    static mtt_track_view a[16], b[16];
+    size_t na = 0, nb = 0, i;
+    uint32_t da = 0, db = 0;
+    polar_order_run(&ta, 0, a, &na, &da);
+    polar_order_run(&tb, 1, b, &nb, &db);
+    TEST_ASSERT_EQUAL_UINT32(6u * 10u, da); /* 10 a frame beyond MTT_MAX_MEAS */
+    TEST_ASSERT_EQUAL_UINT32(da, db);
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)na, (uint32_t)nb);
+    for (i = 0; i < na && i < 16u; ++i) {
+        TEST_ASSERT_EQUAL_UINT32(a[i].id, b[i].id);
+        TEST_ASSERT_EQUAL_MEMORY(a[i].x, b[i].x, sizeof a[i].x);
+    }
 }
 
 static void test_range_rate_needs_its_sigma(void)
@@ -683,6 +739,7 @@ int main(void)
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
     RUN_TEST(test_imm_takes_polar_detections);
     RUN_TEST(test_imm_models_weigh_the_range_rate);
+    RUN_TEST(test_polar_order_and_cap);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else
     RUN_TEST(test_build_without_meas_cov_refuses_polar);
