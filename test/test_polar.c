@@ -299,7 +299,7 @@ static void test_refusals(void)
     /* Cartesian settings refuse polar detections, polar settings Cartesian ones */
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, MTT_R(0.0), &d, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, (mtt_real)0, &d, 1u));
     polar_params(&p);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step(&ta, MTT_R(0.0), &z, 1u));
@@ -689,7 +689,7 @@ static void test_range_rate_needs_its_sigma(void)
     mtt_stats st;
     polar_params(&p);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_step_polar(&ta, MTT_R(0.0), &d, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_step_polar(&ta, (mtt_real)0, &d, 1u));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
     TEST_ASSERT_EQUAL_UINT32(0u, st.total.frames); /* nothing changed */
     p.range_rate_sigma = MTT_R(1.0);
@@ -719,6 +719,15 @@ static void test_build_without_meas_cov_refuses_polar(void)
     TEST_ASSERT_EQUAL_STRING("measurement", bad);
     TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_init(&ta, &p));
     TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_polar_to_cartesian(sig, sensor, &d, &m, &c));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_polar_to_cartesian(NULL, sensor, &d, &m, &c));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step_polar(NULL, (mtt_real)0, &d, 1u));
+#ifndef MTT_REAL_FIXED
+    /* a Cartesian tracker of this build refuses polar detections (the
+     * fixed build's defaults need a declared clutter density first) */
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, (mtt_real)0, &d, 1u));
+#endif
 }
 
 #endif

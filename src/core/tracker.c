@@ -177,6 +177,7 @@ mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_pol
     if (st != MTT_OK) {
         return st;
     }
+#if MTT_WITH_MEAS_COV
     if (trk->par.measurement != MTT_MEASUREMENT_POLAR) {
         return MTT_ERR_UNSUPPORTED; /* polar detections need polar settings (§3.2) */
     }
@@ -190,6 +191,9 @@ mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_pol
     }
     step_frame(trk, time, NULL, NULL, det, n);
     return MTT_OK;
+#else
+    return MTT_ERR_UNSUPPORTED; /* mtt_params_check refuses polar settings in this build (§3.2) */
+#endif
 }
 
 mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, const mtt_meas_cov *cov,
@@ -199,9 +203,11 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
     if (st != MTT_OK) {
         return st;
     }
+#if MTT_WITH_MEAS_COV
     if (trk->par.measurement == MTT_MEASUREMENT_POLAR) {
         return MTT_ERR_UNSUPPORTED; /* polar settings take mtt_tracker_step_polar (§3.2) */
     }
+#endif
     if (cov != NULL && (!MTT_WITH_MEAS_COV || (MTT_WITH_SPLIT && trk->par.split))) {
         /* a covariance per detection where the build or the tracker has
          * none (ALGORITHMS.md §3.1): refused before anything is written */
