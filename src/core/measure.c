@@ -100,9 +100,9 @@ static int before(const frame_in *in, uint32_t i, uint32_t j)
     int c;
 #if MTT_WITH_MEAS_COV
     if (in->pol != NULL) {
-        mtt_meas a, b;
-        mtt_meas_cov ca, cb;
-        (void)polar_get(in, i, &a, &ca); /* valid: meas_skip converted them */
+        mtt_meas a = {0}, b = {0};
+        mtt_meas_cov ca = {0}, cb = {0}; /* written by polar_get: meas_skip converted them */
+        (void)polar_get(in, i, &a, &ca);
         (void)polar_get(in, j, &b, &cb);
         c = cmp_value(&a, &ca, &b, &cb);
         if (c == 0 && in->pol[i].range != in->pol[j].range) {

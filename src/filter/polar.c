@@ -185,6 +185,7 @@ void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2]
 #endif /* MTT_WITH_MEAS_COV */
 
 mtt_status mtt_polar_to_cartesian(const mtt_real sigma[2], const mtt_real sensor[2], const mtt_polar *det,
+                                  /* cppcheck-suppress constParameter ; outputs where the build converts */
                                   mtt_meas *m, mtt_meas_cov *cov)
 {
 #if MTT_WITH_MEAS_COV
