@@ -31,6 +31,7 @@ typedef struct frame_in {
     const mtt_meas_cov *cov;
     const mtt_polar *pol;
     const mtt_params *par;
+    const mtt_mstore *st; /* polar, once converted: the store the sort's indices point into */
 #endif
 } frame_in;
 
@@ -92,9 +93,43 @@ static int cmp_value(const mtt_meas *a, const mtt_meas_cov *ca, const mtt_meas *
     return 0;
 }
 
+#if MTT_WITH_MEAS_COV
+/* Polar detections equal once converted: by range, bearing, range rate. */
+static int polar_tie(const mtt_polar *a, const mtt_polar *b)
+{
+    if (a->range != b->range) {
+        return (a->range < b->range) ? -1 : 1;
+    }
+    if (a->bearing != b->bearing) {
+        return (a->bearing < b->bearing) ? -1 : 1;
+    }
+    if (a->has_range_rate != b->has_range_rate) {
+        return a->has_range_rate ? 1 : -1;
+    }
+    if (a->has_range_rate && a->range_rate != b->range_rate) {
+        return (a->range_rate < b->range_rate) ? -1 : 1;
+    }
+    return 0;
+}
+
+/* A stored detection as the detection and covariance it was stored from. */
+static void stored_get(const mtt_mstore *s, mtt_meas *m, mtt_meas_cov *c)
+{
+    m->x = s->x;
+    m->y = s->y;
+    m->amplitude = s->amp;
+    m->has_amplitude = s->has_amp;
+    c->r_xx = s->R[0];
+    c->r_xy = s->R[1];
+    c->r_yy = s->R[2];
+}
+#endif
+
 /* The canonical order: by value (polar: the converted value, then range
  * and bearing), the input index only between equal detections (whose
- * outputs are the same either way). */
+ * outputs are the same either way).  With in->st, i and j are positions in
+ * that store of converted polar detections (converted once, not at every
+ * comparison: the conversion costs exp, sin and cos). */
 static int before(const frame_in *in, uint32_t i, uint32_t j)
 {
     int c;
@@ -102,22 +137,21 @@ static int before(const frame_in *in, uint32_t i, uint32_t j)
     if (in->pol != NULL) {
         mtt_meas a = {0}, b = {0};
         mtt_meas_cov ca = {0}, cb = {0}; /* written by polar_get: meas_skip converted them */
-        (void)polar_get(in, i, &a, &ca);
-        (void)polar_get(in, j, &b, &cb);
+        uint32_t si = i, sj = j;         /* input indices */
+        if (in->st != NULL) {
+            stored_get(&in->st[i], &a, &ca);
+            stored_get(&in->st[j], &b, &cb);
+            si = in->st[i].src;
+            sj = in->st[j].src;
+        } else {
+            (void)polar_get(in, i, &a, &ca);
+            (void)polar_get(in, j, &b, &cb);
+        }
         c = cmp_value(&a, &ca, &b, &cb);
-        if (c == 0 && in->pol[i].range != in->pol[j].range) {
-            c = (in->pol[i].range < in->pol[j].range) ? -1 : 1;
+        if (c == 0) {
+            c = polar_tie(&in->pol[si], &in->pol[sj]);
         }
-        if (c == 0 && in->pol[i].bearing != in->pol[j].bearing) {
-            c = (in->pol[i].bearing < in->pol[j].bearing) ? -1 : 1;
-        }
-        if (c == 0 && in->pol[i].has_range_rate != in->pol[j].has_range_rate) {
-            c = in->pol[i].has_range_rate ? 1 : -1;
-        }
-        if (c == 0 && in->pol[i].has_range_rate && in->pol[i].range_rate != in->pol[j].range_rate) {
-            c = (in->pol[i].range_rate < in->pol[j].range_rate) ? -1 : 1;
-        }
-        return (c != 0) ? (c < 0) : (i < j);
+        return (c != 0) ? (c < 0) : (si < sj);
     }
     c = cmp_value(&in->m[i], (in->cov != NULL) ? &in->cov[i] : NULL, &in->m[j],
                   (in->cov != NULL) ? &in->cov[j] : NULL);
@@ -256,12 +290,55 @@ static int frame_get(const frame_in *in, size_t i, mtt_meas *m, mtt_meas_cov *c)
     return meas_skip(m, c);
 }
 
+#if MTT_WITH_MEAS_COV
+/* Polar: the kept detections (input indices in trk->sel) in the store,
+ * converted once (when none gave way to the cap, as the selection stored
+ * them; else here), sorted by their stored values and put in the canonical
+ * order, one cycle of the permutation at a time. */
+static void polar_store_sorted(mtt_tracker *trk, const frame_in *in, uint32_t kept, int stored)
+{
+    uint32_t *const ord = trk->sel, *const done = trk->sel_tmp;
+    frame_in st = *in;
+    mtt_meas mi;
+    mtt_meas_cov ci;
+    uint32_t i, k;
+    for (i = 0; i < kept; ++i) {
+        if (!stored) {
+            (void)frame_get(in, ord[i], &mi, &ci);
+            store_meas(&trk->meas[i], &mi, &ci, ord[i]);
+        }
+        ord[i] = i;
+    }
+    st.st = trk->meas;
+    sort_canonical(ord, done, kept, &st);
+    for (i = 0; i < kept; ++i) {
+        done[i] = 0;
+    }
+    for (i = 0; i < kept; ++i) { /* position j receives the stored ord[j] */
+        if (!done[i]) {
+            const mtt_mstore t = trk->meas[i];
+            uint32_t j = i;
+            for (k = 0; k < kept; ++k) {
+                const uint32_t nx = ord[j];
+                done[j] = 1u;
+                if (nx == i) {
+                    trk->meas[j] = t;
+                    break;
+                }
+                trk->meas[j] = trk->meas[nx];
+                j = nx;
+            }
+        }
+    }
+}
+#endif
+
 void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_cov *cov, const mtt_polar *pol,
                         size_t n)
 {
     uint32_t *const sel = trk->sel; /* in a local: a large field offset (a firmware's .text) */
 #if MTT_WITH_MEAS_COV
-    const frame_in in = {meas, cov, pol, &trk->par};
+    const frame_in in = {meas, cov, pol, &trk->par, NULL};
 #else
     const frame_in in = {meas};
     (void)pol;
@@ -279,6 +356,11 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
         }
         ++valid;
         if (kept < MTT_MAX_MEAS) {
+#if MTT_WITH_MEAS_COV
+            if (pol != NULL) {
+                store_meas(&trk->meas[kept], &mi, &ci, (uint32_t)i); /* converted once */
+            }
+#endif
             sel[kept++] = (uint32_t)i;
             if (kept == MTT_MAX_MEAS) {
                 uint32_t h;
@@ -292,25 +374,38 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
         }
     }
     trk->stats.last.meas_dropped = valid - kept;
-    sort_canonical(sel, trk->sel_tmp, kept, &in);
+#if MTT_WITH_MEAS_COV
+    if (pol != NULL) {
+        polar_store_sorted(trk, &in, kept, valid == kept);
+    } else
+#endif
+    {
+        sort_canonical(sel, trk->sel_tmp, kept, &in);
+    }
 #if MTT_WITH_MEAS_COV
     trk->n_own_r = 0;
     trk->own_rmax[0] = MTT_ZERO;
     trk->own_rmax[1] = MTT_ZERO;
 #endif
     for (i = 0; i < kept; ++i) {
-        (void)frame_get(&in, sel[i], &mi, &ci);
-        store_meas(&trk->meas[i], &mi, &ci, sel[i]);
 #if MTT_WITH_MEAS_COV
-        trk->meas[i].rng = (pol != NULL) ? pol[sel[i]].range : MTT_ZERO;
-        trk->meas[i].has_rdot = (uint8_t)(pol != NULL && pol[sel[i]].has_range_rate);
-        trk->meas[i].rr[0] = trk->meas[i].has_rdot ? pol[sel[i]].range_rate : MTT_ZERO;
+        const uint32_t src = (pol != NULL) ? trk->meas[i].src : sel[i];
+        if (pol == NULL) {
+            (void)frame_get(&in, src, &mi, &ci);
+            store_meas(&trk->meas[i], &mi, &ci, src);
+        }
+        trk->meas[i].rng = (pol != NULL) ? pol[src].range : MTT_ZERO;
+        trk->meas[i].has_rdot = (uint8_t)(pol != NULL && pol[src].has_range_rate);
+        trk->meas[i].rr[0] = trk->meas[i].has_rdot ? pol[src].range_rate : MTT_ZERO;
         trk->meas[i].rr[1] = trk->meas[i].has_rdot ? trk->par.range_rate_sigma * trk->par.range_rate_sigma : MTT_ZERO;
         if (trk->meas[i].has_R) {
             trk->n_own_r++;
             trk->own_rmax[0] = (trk->meas[i].R[0] > trk->own_rmax[0]) ? trk->meas[i].R[0] : trk->own_rmax[0];
             trk->own_rmax[1] = (trk->meas[i].R[2] > trk->own_rmax[1]) ? trk->meas[i].R[2] : trk->own_rmax[1];
         }
+#else
+        (void)frame_get(&in, sel[i], &mi, &ci);
+        store_meas(&trk->meas[i], &mi, &ci, sel[i]);
 #endif
     }
     trk->n_meas = (uint16_t)kept;

@@ -82,6 +82,7 @@ static void check(mtt_status st, const char *what)
 static mtt_motion g_motion = MTT_MOTION_CV;
 static long g_scan = -1; /* --scan: the replay frame to time (-1: the busiest) */
 static int g_meas_cov;    /* --meas-cov: dense detections carry meas_sigma's R as their own */
+static int g_polar;       /* --polar: dense detections as range and bearing (mtt_tracker_step_polar) */
 
 static int mode_built(mtt_assoc a, const char **name)
 {
@@ -309,6 +310,9 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     tgt *tg = calloc((size_t)n, sizeof *tg);
     mtt_meas *m = calloc((size_t)n * 3u + 1u, sizeof *m);
     mtt_meas_cov *c = calloc((size_t)n * 3u + 1u, sizeof *c);
+    mtt_polar *pd = calloc((size_t)n * 3u + 1u, sizeof *pd);
+    /* --polar: a sensor off the scene's corner, its bearing noise meas_sigma's at the centre */
+    const double sx = -side, sy = -side / 2.0, r0 = hypot(1.5 * side, side);
     sim_rng rng = {1000u + (uint64_t)n};
     mtt_params p;
     result r;
@@ -316,7 +320,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     int i;
     char work[32];
     const char *name = "?";
-    if (!tg || !m || !c) {
+    if (!tg || !m || !c || !pd) {
         fprintf(stderr, "mtt-bench: out of memory\n");
         exit(1);
     }
@@ -335,8 +339,21 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     set_param(&p, "vmax", 8.0);
     p.cycle_counter = ns_counter;
     apply_variant_and_sets(&p);
+#ifdef MTT_REAL_FIXED /* polar detections are refused there (docs/FIXED_POINT.md section 5) */
+    (void)sx;
+    (void)sy;
+    (void)r0;
+#else
+    if (g_polar) {
+        const double sxy[2] = {sx, sy}, sig[2] = {(double)p.meas_sigma[0], (double)p.meas_sigma[1] / r0};
+        p.measurement = MTT_MEASUREMENT_POLAR;
+        check(mtt_params_set(&p, "sensor_xy", sxy, 2), "sensor_xy");
+        check(mtt_params_set(&p, "meas_sigma", sig, 2), "meas_sigma");
+        set_param(&p, "clutter_density", 2.0 * n / (side * side) * r0); /* per range x bearing */
+    }
+#endif
     if (mtt_tracker_init(&trk, &p) != MTT_OK) {
-        fprintf(stderr, "mtt-bench: init failed\n");
+        fprintf(stderr, "mtt-bench: init failed%s\n", g_polar ? " (--polar: a build without MTT_WITH_MEAS_COV?)" : "");
         exit(1);
     }
     for (i = 0; i < n * 3 + 1; ++i) { /* the same R, through the per-detection paths */
@@ -349,6 +366,17 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
         double fl = 0.0, dt;
         mtt_stats st;
         dense_frame(&rng, tg, n, side, m, &nm);
+#ifndef MTT_REAL_FIXED
+        if (g_polar) {
+            size_t k;
+            for (k = 0; k < nm; ++k) {
+                pd[k].range = (mtt_real)hypot((double)m[k].x - sx, (double)m[k].y - sy);
+                pd[k].bearing = (mtt_real)atan2((double)m[k].y - sy, (double)m[k].x - sx);
+                pd[k].amplitude = m[k].amplitude;
+                pd[k].has_amplitude = m[k].has_amplitude;
+            }
+        }
+#endif
         if (f == 50u) {
             BENCH_ZERO_COUNTS();
         }
@@ -356,7 +384,8 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
             fl = floor_ns(&trk, tor(1.0, MTT_IO_TIME));
         }
         t0 = now_ns();
-        if (mtt_tracker_step_cov(&trk, tor((double)f, MTT_IO_TIME), m, g_meas_cov ? c : NULL, nm) != MTT_OK) {
+        if ((g_polar ? mtt_tracker_step_polar(&trk, tor((double)f, MTT_IO_TIME), pd, nm)
+                     : mtt_tracker_step_cov(&trk, tor((double)f, MTT_IO_TIME), m, g_meas_cov ? c : NULL, nm)) != MTT_OK) {
             fprintf(stderr, "mtt-bench: step failed%s\n", g_meas_cov ? " (--meas-cov: a build without MTT_WITH_MEAS_COV?)" : "");
             exit(1);
         }
@@ -372,6 +401,7 @@ static void run_dense(int n, mtt_assoc mode, size_t frames, FILE *json, int *fir
     free(tg);
     free(m);
     free(c);
+    free(pd);
 }
 
 /* ---- replay workload: the busiest frame of a detections file (or --scan's) ---- */
@@ -458,7 +488,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: mtt-bench [--frames N] [--dense N,N,...] [--modes m,m,...]\n"
             "                 [--det D.det.csv --config S.json] [--json OUT.json]\n"
-            "                 [--motion cv|imm|auto] [--meas-cov]\n"
+            "                 [--motion cv|imm|auto] [--meas-cov] [--polar]\n"
             "\n"
             "Per-frame cost of each association mode against load, beside a floor of\n"
             "bare Kalman predict+update on the same tracks.\n"
@@ -475,6 +505,8 @@ static void usage(FILE *f)
             "  --meas-cov   the dense detections carry meas_sigma's covariance as their\n"
             "               own (mtt_tracker_step_cov): the cost of the per-detection\n"
             "               paths on the same tracks (ALGORITHMS.md section 3.1)\n"
+            "  --polar      the dense detections as range and bearing from a sensor off\n"
+            "               the scene (mtt_tracker_step_polar, ALGORITHMS.md section 3.2)\n"
             "  --list-modes print the modes built into this library and exit\n"
             "  --motion M   cv (default), imm (the default CV + CA models, or the\n"
             "               --config file's imm_models) or auto (with --set process_psd=0\n"
@@ -506,6 +538,12 @@ int main(int argc, char **argv)
             return 0;
         } else if (!strcmp(argv[i], "--meas-cov")) {
             g_meas_cov = 1;
+        } else if (!strcmp(argv[i], "--polar")) {
+#ifdef MTT_REAL_FIXED
+            fprintf(stderr, "mtt-bench: --polar needs a float or double build (polar detections are refused in fixed point)\n");
+            return 2;
+#endif
+            g_polar = 1;
         } else if (i + 1 < argc && !strcmp(argv[i], "--frames")) {
             frames = strtoul(argv[++i], NULL, 10);
         } else if (i + 1 < argc && !strcmp(argv[i], "--dense")) {
