@@ -16,6 +16,14 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
  * track frame's pair range, S, gate area, has_all_amp, and the CSR lists of
  * pairs per measurement.  Needs trk->tf[].xp/Pp/S/Si/det_s/valid. */
 void mtt_gate_frame(mtt_tracker *trk);
+#if MTT_WITH_MEAS_COV
+/* A detection with its own R against the prediction xp, Pp (rows of
+ * MTT_MAX_STATE): d^2, and p = N / PG times its range rate's ratio
+ * (ALGORITHMS.md §3.1, §3.2); MTT_REAL_MAX and p = 0 when S is not
+ * positive definite or the range rate is outside its gate. */
+mtt_real mtt_gate_own(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms,
+                      mtt_real *p);
+#endif
 
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
 mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg);

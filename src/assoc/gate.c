@@ -211,36 +211,54 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
 }
 #endif /* MTT_REAL_FIXED */
 
-/* d^2 of a detection against the track's CV prediction, with its own R
- * when it has one (ALGORITHMS.md §3.1; +inf when that S is not positive
- * definite), else the track's S^-1. */
-static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy)
+#if MTT_WITH_MEAS_COV
+mtt_real mtt_gate_own(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms,
+                      mtt_real *p)
+{
+    mtt_real d2, S[3], f;
+    if (mtt_meas_gauss(Pp, Pp + MTT_MAX_STATE, ms->R, trk->par.pg, ms->x - xp[0], ms->y - xp[1], &d2, p, S) != 0) {
+        *p = MTT_R(0.0);
+        return MTT_REAL_MAX;
+    }
+    f = mtt_polar_rdot_lik(trk, xp, Pp, S, ms); /* 1 without a range rate */
+    if (!(f > MTT_R(0.0))) {
+        *p = MTT_R(0.0);
+        return MTT_REAL_MAX;
+    }
+    *p *= f;
+    return d2;
+}
+#endif
+
+/* d^2 of a detection against the track's CV prediction: with its own R
+ * when it has one (then *p gets its likelihood, mtt_gate_own), else the
+ * track's S^-1 (the likelihood from d^2 and the track's peak, own_p). */
+static mtt_d2 own_d2(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy,
+                     mtt_real *p)
 {
 #if MTT_WITH_MEAS_COV
     if (ms->has_R) {
-        mtt_real d2, p;
-        return (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, dx, dy, &d2, &p) == 0) ? d2 : MTT_REAL_MAX;
+        return mtt_gate_own(trk, tf->xp, &tf->Pp[0][0], ms, p);
     }
 #else
     (void)trk;
     (void)ms;
 #endif
+    *p = MTT_ZERO;
     return mtt_mahal2(tf->Si, dx, dy);
 }
 
-/* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4), d2 its own_d2. */
-static mtt_real own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2)
+/* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4): own_d2's for
+ * its own R, else from d2 its own_d2. */
+static mtt_real own_p(const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2, mtt_real p)
 {
 #if MTT_WITH_MEAS_COV
     if (ms->has_R) {
-        mtt_real p;
-        (void)mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, ms->x - tf->xp[0], ms->y - tf->xp[1], &d2, &p);
         return p;
     }
 #else
-    (void)trk;
     (void)ms;
-    (void)tf;
+    (void)p;
 #endif
     return MTT_GATE_LIK(peak, d2);
 }
@@ -302,6 +320,14 @@ void mtt_gate_frame(mtt_tracker *trk)
     uint16_t *mp_first = trk->mp_first;
     uint16_t cm[MTT_MAX_GATED];
     mtt_d2 cd[MTT_MAX_GATED];
+#if MTT_WITH_MEAS_COV
+    mtt_real cp[MTT_MAX_GATED]; /* own R: each one's likelihood, from its gate test */
+#define CP_SET(k, v) (cp[k] = (v))
+#define CP_GET(k) cp[k]
+#else /* no own R: the likelihood from d^2 (the firmware's stack and text as they were) */
+#define CP_SET(k, v) ((void)0)
+#define CP_GET(k) MTT_ZERO
+#endif
     uint16_t i, j, k;
     int resort = 0;
 #ifdef MTT_REAL_FIXED
@@ -309,9 +335,6 @@ void mtt_gate_frame(mtt_tracker *trk)
 #endif
 #if MTT_WITH_IMM
     const int imm = trk->par.motion == MTT_MOTION_IMM;
-#define IMM_TRACK imm
-#else
-#define IMM_TRACK 0
 #endif
 
     trk->n_pairs = 0;
@@ -364,6 +387,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
             mtt_pos dx = MTT_SUBS(meas[j].x, zx), dy = MTT_SUBS(meas[j].y, zy);
             mtt_d2 d2;
+            mtt_real pj = MTT_ZERO;
             if (dx > wx) {
                 break;
             }
@@ -371,23 +395,19 @@ void mtt_gate_frame(mtt_tracker *trk)
                 continue;
             }
 #if MTT_WITH_IMM
-            d2 = imm ? mtt_imm_gate_d2(trk, i, &meas[j]) : own_d2(trk, tf, &meas[j], dx, dy);
+            /* (its range rate outside its gate: d2 MTT_REAL_MAX, ALGORITHMS.md
+             * §3.2; an IMM track's models gate it in mtt_imm_model_d2, a union) */
+            d2 = imm ? mtt_imm_gate_d2(trk, i, &meas[j]) : own_d2(trk, tf, &meas[j], dx, dy, &pj);
 #else
-            d2 = own_d2(trk, tf, &meas[j], dx, dy);
+            d2 = own_d2(trk, tf, &meas[j], dx, dy, &pj);
 #endif
             if (!(d2 <= gamma)) {
                 continue;
             }
-#if MTT_WITH_MEAS_COV
-            /* its range rate outside the gate (ALGORITHMS.md §3.2); an IMM
-             * track's models gate it in mtt_imm_model_d2, a union */
-            if (meas[j].has_rdot && !IMM_TRACK && !(mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[j]) > MTT_R(0.0))) {
-                continue;
-            }
-#endif
             if (nc < MTT_MAX_GATED) {
                 cm[nc] = j;
                 cd[nc] = d2;
+                CP_SET(nc, pj);
                 ++nc;
             } else {
                 /* Gate full: the largest d^2 gives way (ALGORITHMS.md §7.2, cap). */
@@ -401,6 +421,7 @@ void mtt_gate_frame(mtt_tracker *trk)
                 if (d2 < cd[w] || (d2 == cd[w] && j < cm[w])) {
                     cm[w] = j;
                     cd[w] = d2;
+                    CP_SET(w, pj);
                 }
             }
         }
@@ -408,12 +429,16 @@ void mtt_gate_frame(mtt_tracker *trk)
         for (a = 1; a < nc; ++a) {
             uint16_t mj = cm[a];
             mtt_d2 md = cd[a];
+            const mtt_real mp = CP_GET(a);
             for (b = a; b > 0 && cm[b - 1u] > mj; --b) {
                 cm[b] = cm[b - 1u];
                 cd[b] = cd[b - 1u];
+                CP_SET(b, CP_GET(b - 1u));
             }
             cm[b] = mj;
             cd[b] = md;
+            CP_SET(b, mp);
+            (void)mp;
         }
         for (a = 0; a < nc; ++a) {
             mtt_pair np;
@@ -421,14 +446,9 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.meas = cm[a];
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
-            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
+            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(&meas[cm[a]], peak, cd[a], CP_GET(a));
 #else
-            np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
-#endif
-#if MTT_WITH_MEAS_COV
-            if (meas[cm[a]].has_rdot && !IMM_TRACK) {
-                np.p *= mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[cm[a]]); /* its range rate (§3.2) */
-            }
+            np.p = own_p(&meas[cm[a]], peak, cd[a], CP_GET(a));
 #endif
             np.w = MTT_ZERO;
             np.lam = MTT_ZERO;
@@ -437,6 +457,8 @@ void mtt_gate_frame(mtt_tracker *trk)
             push_pair(trk, pairs, &np, &resort);
         }
     }
+#undef CP_SET
+#undef CP_GET
     if (resort) {
         mtt_sort(pairs, trk->n_pairs, sizeof pairs[0], less_pair, NULL);
     }

@@ -50,8 +50,8 @@ void mtt_lm_all_frame(mtt_tracker *trk)
             dy = trk->meas[j].y - tf->xp[1];
 #if MTT_WITH_MEAS_COV
             if (trk->meas[j].has_R) {
-                mtt_real d2; /* its own R (ALGORITHMS.md §3.1), as the gated pairs' p */
-                if (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], trk->meas[j].R, trk->par.pg, dx, dy, &d2, &p) != 0) {
+                mtt_real d2, S[3]; /* its own R (ALGORITHMS.md §3.1), as the gated pairs' p */
+                if (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], trk->meas[j].R, trk->par.pg, dx, dy, &d2, &p, S) != 0) {
                     continue; /* S_j not positive definite: no term, as no gate */
                 }
             } else

@@ -112,8 +112,8 @@ void mtt_adapt_observe(mtt_tracker *trk, uint16_t ti)
         nis = tf->Si[0] * dx * dx + MTT_R(2.0) * tf->Si[1] * dx * dy + tf->Si[2] * dy * dy;
 #if MTT_WITH_MEAS_COV
         if (ms->has_R) {
-            mtt_real pj;
-            nis = (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, p->pg, dx, dy, &nis, &pj) == 0) ? nis : MTT_REAL_MAX;
+            mtt_real pj, S[3];
+            nis = (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, p->pg, dx, dy, &nis, &pj, S) == 0) ? nis : MTT_REAL_MAX;
         }
 #endif
     }

@@ -52,15 +52,16 @@ const mtt_real *mtt_polar_track_r(const mtt_tracker *trk, const mtt_real *xp, mt
  * one IMM model's, rows of MTT_MAX_STATE from &P[0][0]; §3.2): 1 when it
  * has none, 0 when its innovation given the position's is outside gamma,
  * else N(nu; 0, s) over the clutter's 1 / (2 vmax). */
-mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms);
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_real S[3],
+                            const mtt_mstore *ms);
 /* The extended Kalman update of x (n states, x y vx vy first) with the
  * range rate rr[0] of variance rr[1], linearised at x, Joseph form. */
 void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P);
 /* A detection with covariance R against a prediction whose covariance has
  * the rows p0, p1 (ALGORITHMS.md §3.1): d2 = nu' S^-1 nu and p = N(nu; 0,
- * S) / PG, S = Pp_pos + R; -1 when S is not positive definite. */
+ * S) / PG, S = Pp_pos + R (into S); -1 when S is not positive definite. */
 int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
-                   mtt_real ny, mtt_real *d2, mtt_real *p);
+                   mtt_real ny, mtt_real *d2, mtt_real *p, mtt_real S[3]);
 /* The PDA update of an n-state prediction with a covariance Rj[j] per
  * detection (§3.1); d is scratch for m corrections. */
 /* rr (may be NULL): each detection's range rate and variance or NULL, an

@@ -576,12 +576,15 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 
 #if MTT_WITH_MEAS_COV
 int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
-                   mtt_real ny, mtt_real *d2, mtt_real *p)
+                   mtt_real ny, mtt_real *d2, mtt_real *p, mtt_real S[3])
 {
     /* S = Pp_pos + R as innov_n forms it */
     const mtt_real s0 = p0[0] + R[0], s1 = MTT_R(0.5) * (p0[1] + p1[0]) + R[1], s2 = p1[1] + R[2];
     const mtt_real det = s0 * s2 - s1 * s1;
     mtt_real Si[MTT_SYM_SLOTS];
+    S[0] = s0;
+    S[1] = s1;
+    S[2] = s2;
     if (!(det > MTT_R(0.0)) || !mtt_isfinite(det)) {
         return -1;
     }

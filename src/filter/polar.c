@@ -92,9 +92,11 @@ static int rdot_h(const mtt_real sensor[2], const mtt_real *x, mtt_real *h, mtt_
 /* Pp's element (i, k): rows of MTT_MAX_STATE */
 #define PP(i, k) Pp[(i) * MTT_MAX_STATE + (k)]
 
-mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms)
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_real S[3],
+                            const mtt_mstore *ms)
 {
-    mtt_real h, H[4], A[4], S0, S1, S2, det, a0, a1, nu, s;
+    const mtt_real S0 = S[0], S1 = S[1], S2 = S[2], det = S0 * S2 - S1 * S1;
+    mtt_real h, H[4], A[4], a0, a1, nu, s;
     int i, k;
     if (!ms->has_rdot || rdot_h(trk->par.sensor_xy, xp, &h, H) != 0) {
         return MTT_R(1.0);
@@ -108,10 +110,6 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mt
         }
     }
     s = H[0] * A[0] + H[1] * A[1] + H[2] * A[2] + H[3] * A[3] + ms->rr[1];
-    S0 = PP(0, 0) + ms->R[0];
-    S1 = MTT_R(0.5) * (PP(0, 1) + PP(1, 0)) + ms->R[1];
-    S2 = PP(1, 1) + ms->R[2];
-    det = S0 * S2 - S1 * S1;
     if (!(det > MTT_R(0.0))) {
         return MTT_R(1.0);
     }

@@ -142,21 +142,8 @@ mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uin
     mtt_real d2;
 #if MTT_WITH_MEAS_COV
     if (ms->has_R) {
-        /* its own R (ALGORITHMS.md §3.1): S_j from the model's prediction */
-        mtt_real f;
-        if (mtt_meas_gauss(tf->Ppm[j][0], tf->Ppm[j][1], ms->R, trk->par.pg, nx, ny, &d2, p) != 0) {
-            *p = MTT_R(0.0);
-            return MTT_REAL_MAX;
-        }
-        /* its range rate against this model's prediction (§3.2): outside
-         * its gate, outside this model's */
-        f = mtt_polar_rdot_lik(trk, tf->xpm[j], &tf->Ppm[j][0][0], ms);
-        if (!(f > MTT_R(0.0))) {
-            *p = MTT_R(0.0);
-            return MTT_REAL_MAX;
-        }
-        *p *= f;
-        return d2;
+        /* its own R and range rate against this model's prediction (§3.1, §3.2) */
+        return mtt_gate_own(trk, tf->xpm[j], &tf->Ppm[j][0][0], ms, p);
     }
 #endif
     d2 = mtt_mahal2(tf->Sim[j], nx, ny);
