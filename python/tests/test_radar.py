@@ -248,22 +248,26 @@ class TestRadarDeterminismAndFiles(unittest.TestCase):
 
 class TestShippedRadarScenario(unittest.TestCase):
     def test_radar_quickstart(self):
-        files = sorted(glob.glob(os.path.join(REPO, "scenarios", "recorded", "radar_*.json")))
+        files = sorted(glob.glob(os.path.join(REPO, "scenarios", "recorded", "radar_*.json")) +
+                       glob.glob(os.path.join(REPO, "scenarios", "radar", "*.json")))
         self.assertIn(os.path.join(REPO, "scenarios", "recorded", "radar_quickstart.json"), files)
+        self.assertIn(os.path.join(REPO, "scenarios", "radar", "crossing3.json"), files)
         for path in files:
             with self.subTest(path=path):
                 with open(path) as f:
                     scn = scenario._strip_comments(json.load(f))
                 scenario.validate(scn, path)  # no I/O: loading would fetch the wheel
-                self.assertEqual(scn["name"], os.path.basename(path)[:-5])
+                base = os.path.basename(path)[:-5]
+                self.assertEqual(scn["name"], base if base.startswith("radar_") else "radar_" + base)
                 r, t = radar.sensor(scn), scn["tracker"]
                 # the tracker is told the radar's facts
                 self.assertEqual(t["measurement"], "polar")
                 self.assertEqual(t["sensor_xy"], [r["xs"], r["ys"]])
                 self.assertEqual(t["meas_sigma"], [r["sr"], r["sb"]])
                 self.assertEqual(t["pd"], scn["pd"])
-                self.assertAlmostEqual(t["clutter_density"] * radar.clutter_measure(r) / scn["clutter"]["mean"], 1.0,
-                                       delta=1e-9)
+                c = scn["clutter"]  # a mean per scan over the coverage, or a density per m rad
+                lam = c["density"] if "density" in c else c["mean"] / radar.clutter_measure(r)
+                self.assertAlmostEqual(t["clutter_density"] / lam, 1.0, delta=1e-9)
                 self.assertTrue(set(t) <= scenario.TRACKER_KEYS)
         with open(os.path.join(REPO, "scenarios", "recorded", "radar_quickstart.json")) as f:
             scn = scenario._strip_comments(json.load(f))
