@@ -16,6 +16,11 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
  * track frame's pair range, S, gate area, has_all_amp, and the CSR lists of
  * pairs per measurement.  Needs trk->tf[].xp/Pp/S/Si/det_s/valid. */
 void mtt_gate_frame(mtt_tracker *trk);
+#if MTT_WITH_MEAS_COV
+/* A gate window's half-widths wx, wy (sqrt(gamma S) per axis) widened for
+ * the frame's detections with a wider R of their own (ALGORITHMS.md §3.1). */
+void mtt_gate_own_widen(const mtt_tracker *trk, mtt_real gamma, mtt_real *wx, mtt_real *wy);
+#endif
 
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */
 mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex_pred, mtt_ratio vg);
