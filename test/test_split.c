@@ -457,39 +457,40 @@ static void test_split_update_reference(void)
     assert_psd(Ps, 8);
 }
 
-/* PD = PG = 1, no cross covariance, one measurement in each target's gate
- * only: a single event, and the coupled update is two Kalman updates. */
-static void test_split_update_independent(void)
+/* PD = PG = 1, no cross covariance, one measurement z[t] in each target's
+ * gate only: a single event, and the coupled update (xs, Ps) is two Kalman
+ * updates, each with its measurement's R (rj[t]; rj NULL: R). */
+static void check_independent(const mtt_real *const rj[2], mtt_real z[2][2], mtt_split_state xs, mtt_split_cov Ps)
 {
-    mtt_split_cov Pps, Ps;
-    mtt_split_state xps, xs;
+    mtt_split_cov Pps;
+    mtt_split_state xps;
     mtt_split_assoc as;
     mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], Pk[MTT_MAX_STATE][MTT_MAX_STATE];
     mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], xk[MTT_MAX_STATE], nu[1][2];
     mtt_real one[1] = {MTT_R(1.0)};
-    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
     int t, i, k;
     memcpy(xps, XPS, sizeof XPS);
     xps[4] += MTT_R(60.0);
     prior_s(Pps, 0.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, NULL, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
                                                   MTT_R(2000.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta[0][0]);
     TV_ASSERT_REAL(1.0, as.beta[1][1]);
     TEST_ASSERT_TRUE(as.beta0 == MTT_R(0.0));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, NULL, z, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, z, xs, Ps));
     for (t = 0; t < 2; ++t) {
         const int o = 4 * t;
+        const mtt_real *Rt = (rj != NULL) ? rj[t] : R;
         for (i = 0; i < 4; ++i) {
             for (k = 0; k < 4; ++k) {
                 P[i][k] = Pps[o + i][o + k];
             }
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(P, R, S, Si, &det, K));
+        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(P, Rt, S, Si, &det, K));
         nu[0][0] = z[t][0] - xps[o];
         nu[0][1] = z[t][1] - xps[o + 1];
-        mtt_kalman_pda(&xps[o], P, K, Si, R, 1, nu, one, MTT_R(0.0), xk, Pk);
+        mtt_kalman_pda(&xps[o], P, K, Si, Rt, 1, nu, one, MTT_R(0.0), xk, Pk);
         for (i = 0; i < 4; ++i) {
             TV_ASSERT_REAL(xk[i], xs[o + i]);
             for (k = 0; k < 4; ++k) {
@@ -499,6 +500,14 @@ static void test_split_update_independent(void)
         }
     }
     assert_psd(Ps, 8);
+}
+
+static void test_split_update_independent(void)
+{
+    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
+    mtt_split_state xs;
+    mtt_split_cov Ps;
+    check_independent(NULL, z, xs, Ps);
 }
 
 /* No measurement: beta0 = 1, the prediction stays, Lambda_6 = (1 - PD PG)^2. */
@@ -790,57 +799,22 @@ static void test_own_r_just_two_hand(void)
 }
 
 /* Model 6 with PD = PG = 1 and one measurement in each target's gate
- * (test_split_update_independent): with their own R the coupled update is
- * two Kalman updates, each with its measurement's R; target 2, whose R is
- * large, moves less than with R. */
+ * (check_independent): with their own R the coupled update is two Kalman
+ * updates, each with its measurement's R; target 2, whose R is 10 times
+ * R, moves less towards its measurement than with R. */
 static void test_own_r_split_update_independent(void)
 {
     const mtt_real Rbig[3] = {MTT_R(90.0), MTT_R(15.0), MTT_R(120.0)};
     const mtt_real *rj[2] = {R, Rbig}, *req[2] = {R, R};
-    mtt_split_cov Pps, Ps, Pq;
-    mtt_split_state xps, xs, xq;
-    mtt_split_assoc as;
-    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], Pk[MTT_MAX_STATE][MTT_MAX_STATE];
-    mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], xk[MTT_MAX_STATE], nu[1][2];
-    mtt_real one[1] = {MTT_R(1.0)};
     mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(178.0), MTT_R(43.0)}};
-    int t, i, k;
-    memcpy(xps, XPS, sizeof XPS);
-    xps[4] += MTT_R(60.0);
-    prior_s(Pps, 0.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
-                                                  MTT_R(2000.0), MTT_R(0.0), &as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    TV_ASSERT_REAL(1.0, as.beta[0][0]);
-    TV_ASSERT_REAL(1.0, as.beta[1][1]);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, z, xs, Ps));
-    for (t = 0; t < 2; ++t) {
-        const int o = 4 * t;
-        for (i = 0; i < 4; ++i) {
-            for (k = 0; k < 4; ++k) {
-                P[i][k] = Pps[o + i][o + k];
-            }
-        }
-        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(P, rj[t], S, Si, &det, K));
-        nu[0][0] = z[t][0] - xps[o];
-        nu[0][1] = z[t][1] - xps[o + 1];
-        mtt_kalman_pda(&xps[o], P, K, Si, rj[t], 1, nu, one, MTT_R(0.0), xk, Pk);
-        for (i = 0; i < 4; ++i) {
-            TV_ASSERT_REAL(xk[i], xs[o + i]);
-            for (k = 0; k < 4; ++k) {
-                TV_ASSERT_REAL(Pk[i][k], Ps[o + i][o + k]);
-                TEST_ASSERT_TRUE(fabs((double)Ps[i][4 + k]) <= 1e-4);
-            }
-        }
-    }
-    assert_psd(Ps, 8);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, req, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
-                                                  MTT_R(2000.0), MTT_R(0.0), &as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, req, z, xq, Pq));
+    mtt_split_state xs, xq;
+    mtt_split_cov Ps, Pq;
+    check_independent(rj, z, xs, Ps);
+    check_independent(req, z, xq, Pq);
     TEST_ASSERT_TRUE(hypot((double)(xs[4] - z[1][0]), (double)(xs[5] - z[1][1])) >
                      hypot((double)(xq[4] - z[1][0]), (double)(xq[5] - z[1][1])) + 1.0);
     TV_ASSERT_REAL((double)xq[0], xs[0]);
+    TEST_ASSERT_TRUE(Ps[4][4] > Pq[4][4]);
 }
 
 /* An R that makes S not positive definite: refused, nothing written. */

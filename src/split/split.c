@@ -588,23 +588,22 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
         const int o = t * (int)n;
         for (j = 0u; j < m; ++j) {
             const mtt_real *sit = Si[t];
-            mtt_real dt = det[t], sij[3];
+            mtt_real dt = det[t], d2, g;
 #if MTT_WITH_MEAS_COV
+            mtt_real sij[3];
             if (Rj != NULL) {
                 (void)innov2(Pps, o, Rj[j], S, sij, &dt); /* its own S_tj (§3.1): checked above */
                 sit = sij;
             }
 #endif
-            {
-            const mtt_real d2 = quad2(sit, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
+            d2 = quad2(sit, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
             /* PD V N: the detection factor of [S3] eq. 14 times V (the
              * ratio to V^-m), or PD N / lambda with a known clutter
              * density; 0 outside the target's gate (not feasible). */
-            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, dt) / lam : vg * gauss2(d2, dt);
+            g = (lam > MTT_R(0.0)) ? gauss2(d2, dt) / lam : vg * gauss2(d2, dt);
             as->a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
             as->nu[t][j][0] = z[j][0] - xps[o];
             as->nu[t][j][1] = z[j][1] - xps[o + 1];
-            }
         }
         /* Undetected: 1 - PD PG, the library's convention for N truncated
          * to the gate (ALGORITHMS.md §4); PG = 1 gives [S3]'s 1 - PD. */
@@ -928,7 +927,8 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
             wk->nu[j][1] = z[j][1] - xk[1];
             wk->bn[j] = beta_n[j] / bs;
             if (cluster[j] == 0u) {
-                if (mtt_meas_gauss(Pp[0], Pp[1], Rj[j], MTT_R(1.0), z[j][0] - xp[0], z[j][1] - xp[1], &d2, &pj) != 0) {
+                if (mtt_meas_gauss(Pp[0], Pp[1], Rj[j], MTT_R(1.0), z[j][0] - xp[0], z[j][1] - xp[1], &d2,
+                                   &pj) != 0) {
                     return -1;
                 }
                 g[0] += pj;
@@ -947,31 +947,31 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
     (void)Rj;
 #endif
     {
-    for (j = 0u; j < m; ++j) {
-        if (cluster[j] == 0u) {
-            g[0] += gauss2(quad2(Sai, z[j][0] - xp[0], z[j][1] - xp[1]), deta);
-        } else {
-            const mtt_real w = beta_n[j] / bs;
-            g[1] += gauss2(quad2(Sbi, z[j][0] - xk[0], z[j][1] - xk[1]), detb);
-            nub[0] += w * (z[j][0] - xk[0]);
-            nub[1] += w * (z[j][1] - xk[1]);
+        for (j = 0u; j < m; ++j) {
+            if (cluster[j] == 0u) {
+                g[0] += gauss2(quad2(Sai, z[j][0] - xp[0], z[j][1] - xp[1]), deta);
+            } else {
+                const mtt_real w = beta_n[j] / bs;
+                g[1] += gauss2(quad2(Sbi, z[j][0] - xk[0], z[j][1] - xk[1]), detb);
+                nub[0] += w * (z[j][0] - xk[0]);
+                nub[1] += w * (z[j][1] - xk[1]);
+            }
         }
-    }
-    for (j = 0u; j < m; ++j) {
-        if (cluster[j] == 1u) {
-            const mtt_real w = beta_n[j] / bs;
-            const mtt_real dx = z[j][0] - xk[0] - nub[0], dy = z[j][1] - xk[1] - nub[1];
-            sp[0][0] += w * dx * dx;
-            sp[0][1] += w * dx * dy;
-            sp[1][1] += w * dy * dy;
+        for (j = 0u; j < m; ++j) {
+            if (cluster[j] == 1u) {
+                const mtt_real w = beta_n[j] / bs;
+                const mtt_real dx = z[j][0] - xk[0] - nub[0], dy = z[j][1] - xk[1] - nub[1];
+                sp[0][0] += w * dx * dx;
+                sp[0][1] += w * dx * dy;
+                sp[1][1] += w * dy * dy;
+            }
         }
-    }
-    sp[1][0] = sp[0][1];
-    rq_block(R, Rq, 0);
-    /* the child half's PDA update (beta0 = 0) from the prior */
-    if (mixed_update(wk, n, 2, sel, xk, Pk, Rq, MTT_R(0.0), nub, sp, wk->xh[0], wk->Ph[0], NULL) != 0) {
-        return -1;
-    }
+        sp[1][0] = sp[0][1];
+        rq_block(R, Rq, 0);
+        /* the child half's PDA update (beta0 = 0) from the prior */
+        if (mixed_update(wk, n, 2, sel, xk, Pk, Rq, MTT_R(0.0), nub, sp, wk->xh[0], wk->Ph[0], NULL) != 0) {
+            return -1;
+        }
     }
     for (a = 0; a < (int)n; ++a) {
         xs[n + a] = wk->xh[0][a];
