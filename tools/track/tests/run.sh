@@ -381,6 +381,16 @@ polar_split)
              !c || $c == "" || $c < 0 || $c > 1 { exit 1 }' "$out" ||
         fail "a row without a split probability in [0, 1]"
     ;;
+polar_split_modes)
+    # a polar target that splits (polar_split.det.csv): the split modes run
+    # on the converted detections' own R, P(split) of track 0 >= 0.9 at scan 14
+    rm -f "$out"
+    run --config "$data/polar_split.json" --detections "$data/polar_split.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "p_split") c = i; next }
+             $1 == 14 && $3 == 0 && $c >= 0.9 { ok = 1 } END { exit !ok }' "$out" ||
+        fail "track 0 without P(split) >= 0.9 at scan 14"
+    ;;
 det_polar_split_range_rate)
     expect_fail 2 "polar_split.json: key 'split': split = true takes no range rates" \
         "$data/polar_split.json" "$data/polar_rr.det.csv" ;;
