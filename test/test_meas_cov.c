@@ -4,7 +4,7 @@
  * the mixture PDA update against an independent double computation, the
  * two-point birth, meas_sigma's R given explicitly against none in every
  * mode (and with the IMM), the order invariance, bad covariances and the
- * refusals (split, a build without MTT_WITH_MEAS_COV). */
+ * refusals (a build without MTT_WITH_MEAS_COV); split takes them. */
 #include <math.h>
 #include <string.h>
 
@@ -353,21 +353,32 @@ static void test_any_order_gives_the_same_identities(void)
     }
 }
 
-static void test_split_refuses_a_covariance(void)
+static void test_split_takes_a_covariance(void)
 {
 #if MTT_WITH_SPLIT
+    /* split takes a covariance per detection (ALGORITHMS.md §3.1, §14.3;
+     * its arithmetic: test_split.c, test_split_tracker.c): a seeded track
+     * moves towards a detection with meas_sigma's R, less with an own R 100
+     * times it */
     mtt_params p;
-    const mtt_meas z = det(1.0, 1.0);
-    const mtt_meas_cov c = cv3(2.0, 0.0, 2.0), none = cv3(0, 0, 0);
-    mtt_stats st;
+    const mtt_meas z = det(6.0, 0.0);
+    const mtt_meas_cov big = cv3(100.0, 0.0, 100.0);
+    const mtt_real x0[4] = {0, 0, 0, 0};
+    const mtt_real P0[16] = {4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    mtt_track_view va, vb;
     base_params(&p, MTT_ASSOC_LM_IHPDA);
     p.motion = MTT_MOTION_IMM;
     p.split = 1;
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_cov(&ta, MTT_R(0.0), &z, &c, 1u));
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
-    TEST_ASSERT_EQUAL_UINT32(0u, st.total.frames); /* nothing changed */
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&ta, MTT_R(0.0), &z, &none, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&tb, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&ta, x0, P0, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&tb, x0, P0, NULL));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&ta, MTT_R(1.0), &z, NULL, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&tb, MTT_R(1.0), &z, &big, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, 0, &va));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&tb, 0, &vb));
+    TEST_ASSERT_TRUE(va.x[0] > MTT_R(1.0));
+    TEST_ASSERT_TRUE(vb.x[0] > MTT_R(0.0) && vb.x[0] < MTT_R(0.5) * va.x[0]);
 #else
     TEST_IGNORE_MESSAGE("no split models in this build");
 #endif
@@ -416,7 +427,7 @@ int main(void)
     RUN_TEST(test_bad_covariance_is_counted);
     RUN_TEST(test_explicit_default_r_gives_the_same_tracks_in_every_mode);
     RUN_TEST(test_any_order_gives_the_same_identities);
-    RUN_TEST(test_split_refuses_a_covariance);
+    RUN_TEST(test_split_takes_a_covariance);
 #else
     RUN_TEST(test_build_without_it_refuses_a_covariance);
 #endif

@@ -7,7 +7,7 @@
  * update against a double computation with a numerical Jacobian, its gate
  * and likelihood, the birth's radial velocity, a scene where it lowers the
  * velocity error; the refusals (Cartesian settings, polar settings with a
- * Cartesian step, split, a range rate without range_rate_sigma, a build
+ * Cartesian step, a range rate with split, a range rate without range_rate_sigma, a build
  * without MTT_WITH_MEAS_COV). */
 #include <math.h>
 #include <string.h>
@@ -308,11 +308,25 @@ static void test_refusals(void)
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 1u));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 0u));
 #if MTT_WITH_SPLIT
-    /* split: no covariance per detection there */
+    /* split takes polar detections (§14.3), not their range rates */
     p.motion = MTT_MOTION_IMM;
     p.split = 1;
-    TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
-    TEST_ASSERT_EQUAL_STRING("measurement", bad);
+    p.range_rate_sigma = MTT_R(0.5);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    {
+        mtt_polar dr[2];
+        dr[0] = d;
+        dr[1] = pol(200.0, 0.3);
+        dr[1].has_range_rate = 1;
+        dr[1].range_rate = MTT_R(3.0);
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+        TEST_ASSERT_EQUAL_UINT32(0u, st.total.frames); /* nothing changed */
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 1u));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+        TEST_ASSERT_EQUAL_UINT32(1u, st.total.frames);
+    }
 #else
     (void)bad;
 #endif

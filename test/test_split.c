@@ -242,7 +242,7 @@ static void test_just_split_reference(void)
     mtt_real bn[5], lik = MTT_R(0.0);
     int j;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
                                             bn, &lik));
     for (j = 0; j < 5; ++j) {
         TEST_ASSERT_EQUAL_INT(ref5_cluster[j], cl[j]);
@@ -265,9 +265,9 @@ static void test_just_split_refuses(void)
     mtt_real bn[5] = {MTT_R(-1.0)}, lik = MTT_R(-1.0);
     prior1(P);
     /* one measurement: no split; n out of range; V not positive */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 3, XP, P, R, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 3, XP, P, R, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(7, cl[0]);
     TV_ASSERT_REAL(-1.0, lik);
 }
@@ -287,7 +287,7 @@ static void test_just_split_two(void)
     int h, i, k;
     double n1, n2;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(1, cl[0]);
     TEST_ASSERT_EQUAL_INT(0, cl[1]);
     TV_ASSERT_REAL(1.0, bn[0]);
@@ -340,12 +340,12 @@ static void test_known_split_reference(void)
     mtt_real bn[5], lik = MTT_R(0.0), lk = MTT_R(0.0);
     int c, i, k;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl,
                                             bn, &lik));
     for (c = 0; c < 3; ++c) {
         memcpy(xs, xs0, sizeof xs);
         memcpy(Ps, Ps0, sizeof Ps);
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, (mtt_real)ref_known[c].dv,
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, (mtt_real)ref_known[c].dv,
                                                  MTT_R(1.0), (uint8_t)ref_known[c].n_off, (mtt_real)ref5_V,
                                                  xs, Ps, &lk));
         TV_ASSERT_REAL(ref_known[c].lik, lk);
@@ -361,16 +361,16 @@ static void test_known_split_reference(void)
         }
     }
     /* refused: no speed, no offset, more offsets than the bound, one cluster */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(0.0), MTT_R(1.0), 1u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(0.0), MTT_R(1.0), 1u,
                                               (mtt_real)ref5_V, xs, Ps, &lk));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 0u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 0u,
                                               (mtt_real)ref5_V, xs, Ps, &lk));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0),
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0),
                                               (uint8_t)(MTT_SPLIT_KNOWN_MAX_OFFSETS + 1u), (mtt_real)ref5_V,
                                               xs, Ps, &lk));
     {
         const uint8_t one[5] = {0, 0, 0, 0, 0};
-        TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, 5, Z5, one, bn, MTT_R(5.0), MTT_R(1.0),
+        TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, one, bn, MTT_R(5.0), MTT_R(1.0),
                                                   1u, (mtt_real)ref5_V, xs, Ps, &lk));
     }
 }
@@ -384,7 +384,7 @@ static void test_split_events_reference(void)
     double sum = 0.0;
     int e, t, j, j1, j2, found;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA,
                                                   (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     /* every event of the brute-force enumeration, and no other */
@@ -426,7 +426,7 @@ static void test_split_events_parametric(void)
     double sum = 0.0;
     int e;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
                                                   MTT_R(2e-4), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     for (e = 0; e < 13; ++e) {
@@ -438,7 +438,7 @@ static void test_split_events_parametric(void)
     TV_ASSERT_REAL(1.0, sum);
     TV_ASSERT_REAL(ref6p_lik, as.lik);
     /* neither a clutter density nor a volume: refused */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
                                                    MTT_R(0.0), &as));
 }
 
@@ -448,48 +448,49 @@ static void test_split_update_reference(void)
     mtt_split_state xs;
     mtt_split_assoc as;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 4, Z6, PD6, PG6, GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA,
                                                   (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, Z6, xs, Ps));
     TV_ASSERT_VEC(ref6_xs, xs, 8);
     assert_cov8(ref6_Ps, Ps, "Ps");
     assert_psd(Ps, 8);
 }
 
-/* PD = PG = 1, no cross covariance, one measurement in each target's gate
- * only: a single event, and the coupled update is two Kalman updates. */
-static void test_split_update_independent(void)
+/* PD = PG = 1, no cross covariance, one measurement z[t] in each target's
+ * gate only: a single event, and the coupled update (xs, Ps) is two Kalman
+ * updates, each with its measurement's R (rj[t]; rj NULL: R). */
+static void check_independent(const mtt_real *const rj[2], mtt_real z[2][2], mtt_split_state xs, mtt_split_cov Ps)
 {
-    mtt_split_cov Pps, Ps;
-    mtt_split_state xps, xs;
+    mtt_split_cov Pps;
+    mtt_split_state xps;
     mtt_split_assoc as;
     mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], Pk[MTT_MAX_STATE][MTT_MAX_STATE];
     mtt_real S[3], Si[3], det, K[MTT_MAX_STATE][2], xk[MTT_MAX_STATE], nu[1][2];
     mtt_real one[1] = {MTT_R(1.0)};
-    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
     int t, i, k;
     memcpy(xps, XPS, sizeof XPS);
     xps[4] += MTT_R(60.0);
     prior_s(Pps, 0.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
                                                   MTT_R(2000.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta[0][0]);
     TV_ASSERT_REAL(1.0, as.beta[1][1]);
     TEST_ASSERT_TRUE(as.beta0 == MTT_R(0.0));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, z, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, z, xs, Ps));
     for (t = 0; t < 2; ++t) {
         const int o = 4 * t;
+        const mtt_real *Rt = (rj != NULL) ? rj[t] : R;
         for (i = 0; i < 4; ++i) {
             for (k = 0; k < 4; ++k) {
                 P[i][k] = Pps[o + i][o + k];
             }
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(P, R, S, Si, &det, K));
+        TEST_ASSERT_EQUAL_INT(0, mtt_kalman_innov(P, Rt, S, Si, &det, K));
         nu[0][0] = z[t][0] - xps[o];
         nu[0][1] = z[t][1] - xps[o + 1];
-        mtt_kalman_pda(&xps[o], P, K, Si, R, 1, nu, one, MTT_R(0.0), xk, Pk);
+        mtt_kalman_pda(&xps[o], P, K, Si, Rt, 1, nu, one, MTT_R(0.0), xk, Pk);
         for (i = 0; i < 4; ++i) {
             TV_ASSERT_REAL(xk[i], xs[o + i]);
             for (k = 0; k < 4; ++k) {
@@ -501,6 +502,14 @@ static void test_split_update_independent(void)
     assert_psd(Ps, 8);
 }
 
+static void test_split_update_independent(void)
+{
+    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
+    mtt_split_state xs;
+    mtt_split_cov Ps;
+    check_independent(NULL, z, xs, Ps);
+}
+
 /* No measurement: beta0 = 1, the prediction stays, Lambda_6 = (1 - PD PG)^2. */
 static void test_split_no_measurement(void)
 {
@@ -509,11 +518,11 @@ static void test_split_no_measurement(void)
     mtt_split_assoc as;
     int i, k;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta0);
     TV_ASSERT_REAL((1.0 - 0.9 * 0.99) * (1.0 - 0.9 * 0.99), as.lik);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, Z6, xs, Ps));
     for (i = 0; i < 8; ++i) {
         TV_ASSERT_REAL(XPS[i], xs[i]);
         for (k = 0; k < 8; ++k) {
@@ -521,7 +530,7 @@ static void test_split_no_measurement(void)
         }
     }
     /* PD = PG = 1 and nothing gated: every event weighs 0 -> refused */
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, 0, Z6, MTT_R(1.0), MTT_R(1.0), GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 0, Z6, MTT_R(1.0), MTT_R(1.0), GAMMA,
                                                   MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(-1, mtt_split_joint(&as));
 }
@@ -621,7 +630,7 @@ static void test_separate(void)
     int i, k;
     /* the model-5 result: parent = half 1 (largest beta), child = half 2 */
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_separate(&wk, 4, xs, Ps, x1, P1, x2, P2));
     for (i = 0; i < 4; ++i) {
         TV_ASSERT_REAL(ref5_xs[i], x1[i]);
@@ -649,6 +658,200 @@ static double urand(double lo, double hi)
     lcg_state = lcg_state * 1664525u + 1013904223u;
     return lo + (hi - lo) * (double)(lcg_state >> 8) / 16777216.0;
 }
+
+#if MTT_WITH_MEAS_COV
+/* ---- a covariance per detection (ALGORITHMS.md §3.1, §14.3) ---- */
+
+/* The same R for every measurement through Rj: the mixture of single
+ * updates equals the shared-R forms, i.e. the numpy references. */
+static void test_own_r_equal_is_the_shared_form(void)
+{
+    const mtt_real *rj[5] = {R, R, R, R, R};
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_split_state xs, xs0;
+    mtt_split_cov Ps, Ps0, Pps;
+    mtt_split_assoc as;
+    uint8_t cl[5];
+    mtt_real bn[5], lik = MTT_R(0.0), lk = MTT_R(0.0);
+    int j, i, k;
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl, bn,
+                                            &lik));
+    for (j = 0; j < 5; ++j) {
+        TEST_ASSERT_EQUAL_INT(ref5_cluster[j], cl[j]);
+    }
+    TV_ASSERT_VEC(ref5_xs, xs0, 8);
+    assert_cov8(ref5_Ps, Ps0, "Ps own");
+    assert_psd(Ps0, 8);
+    TV_ASSERT_REAL(ref5_lik, lik);
+    memcpy(xs, xs0, sizeof xs);
+    memcpy(Ps, Ps0, sizeof Ps);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, 5, Z5, cl, bn, (mtt_real)ref_known[0].dv,
+                                             MTT_R(1.0), (uint8_t)ref_known[0].n_off, (mtt_real)ref5_V, xs, Ps,
+                                             &lk));
+    TV_ASSERT_REAL(ref_known[0].lik, lk);
+    for (i = 0; i < 4; ++i) {
+        TV_ASSERT_REAL(ref_known[0].x2[i], xs[4 + i]);
+        for (k = 0; k < 4; ++k) {
+            TV_ASSERT_REAL(ref_known[0].P2[4 * i + k], Ps[4 + i][4 + k]);
+        }
+    }
+    prior_s(Pps, 1.0);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rj, 4, Z6, PD6, PG6, GAMMA, (mtt_real)ref6_V,
+                                                  MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+    TV_ASSERT_REAL(ref6_lik, as.lik);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, rj, Z6, xs, Ps));
+    TV_ASSERT_VEC(ref6_xs, xs, 8);
+    assert_cov8(ref6_Ps, Ps, "Ps6 own");
+    assert_psd(Ps, 8);
+}
+
+/* The Kalman update of (XP, PP) with z of noise Rr, in double: x, P, A =
+ * I - K H and N(z; H xp, S). */
+static double kalman_d(const double Rr[3], const mtt_real z[2], double x[4], double Pu[4][4], double A[4][4])
+{
+    const double s0 = PP[0][0] + Rr[0], s1 = PP[0][1] + Rr[1], s2 = PP[1][1] + Rr[2];
+    const double det = s0 * s2 - s1 * s1, nx = (double)z[0] - (double)XP[0], ny = (double)z[1] - (double)XP[1];
+    const double si[3] = {s2 / det, -s1 / det, s0 / det};
+    double K[4][2], T[4][4];
+    int i, k, l;
+    for (i = 0; i < 4; ++i) {
+        K[i][0] = PP[i][0] * si[0] + PP[i][1] * si[1];
+        K[i][1] = PP[i][0] * si[1] + PP[i][1] * si[2];
+        x[i] = (double)XP[i] + K[i][0] * nx + K[i][1] * ny;
+        for (k = 0; k < 4; ++k) {
+            A[i][k] = (i == k ? 1.0 : 0.0) - (k == 0 ? K[i][0] : 0.0) - (k == 1 ? K[i][1] : 0.0);
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            T[i][k] = 0.0;
+            for (l = 0; l < 4; ++l) {
+                T[i][k] += A[i][l] * PP[l][k];
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            Pu[i][k] = K[i][0] * (Rr[0] * K[k][0] + Rr[1] * K[k][1]) + K[i][1] * (Rr[1] * K[k][0] + Rr[2] * K[k][1]);
+            for (l = 0; l < 4; ++l) {
+                Pu[i][k] += T[i][l] * A[k][l];
+            }
+        }
+    }
+    return exp(-0.5 * (si[0] * nx * nx + 2.0 * si[1] * nx * ny + si[2] * ny * ny)) / (2.0 * 3.14159265358979323846 * sqrt(det));
+}
+
+/* Model 5 with two measurements, the child's with an own R 25 times R:
+ * each half is the Kalman update with its measurement's R, the cross
+ * covariance A_1 PP A_2', the likelihood V N(z_1; S_1) V N(z_2; S_2)
+ * (hand-derived in double above); the child half moves less towards its
+ * measurement than with R. */
+static void test_own_r_just_two_hand(void)
+{
+    const mtt_real Rbig[3] = {MTT_R(225.0), MTT_R(37.5), MTT_R(300.0)};
+    const double Rd[2][3] = {{9.0, 1.5, 12.0}, {225.0, 37.5, 300.0}};
+    const mtt_real *rj[2] = {R, Rbig}, *req[2] = {R, R};
+    const mtt_real b[2] = {MTT_R(0.6), MTT_R(0.4)};
+    const double V = 500.0;
+    mtt_real z[2][2] = {{MTT_R(104.0), MTT_R(48.0)}, {MTT_R(93.0), MTT_R(57.0)}};
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], bn[2], lik = MTT_R(0.0), lik_eq = MTT_R(0.0);
+    mtt_split_state xs, xq;
+    mtt_split_cov Ps, Pq;
+    uint8_t cl[2];
+    double x[2][4], Pu[2][4][4], A[2][4][4], g[2], e_own, e_eq;
+    int h, i, k, l, q;
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, 2, z, b, (mtt_real)V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, cl[0]);
+    TEST_ASSERT_EQUAL_INT(1, cl[1]);
+    for (h = 0; h < 2; ++h) {
+        g[h] = kalman_d(Rd[h], z[h], x[h], Pu[h], A[h]);
+        for (i = 0; i < 4; ++i) {
+            TV_ASSERT_REAL(x[h][i], xs[4 * h + i]);
+            for (k = 0; k < 4; ++k) {
+                TV_ASSERT_REAL(Pu[h][i][k], Ps[4 * h + i][4 * h + k]);
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            double c = 0.0;
+            for (l = 0; l < 4; ++l) {
+                for (q = 0; q < 4; ++q) {
+                    c += A[0][i][l] * PP[l][q] * A[1][k][q];
+                }
+            }
+            TEST_ASSERT_TRUE(fabs(c - (double)Ps[i][4 + k]) <= 1e-4 * (1.0 + fabs(c)));
+            TEST_ASSERT_TRUE(Ps[i][4 + k] == Ps[4 + k][i]);
+        }
+    }
+    TV_ASSERT_REAL(V * g[0] * V * g[1], lik);
+    assert_psd(Ps, 8);
+    /* against R for both: the child half ends farther from its measurement */
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, req, 2, z, b, (mtt_real)V, xq, Pq, cl, bn, &lik_eq));
+    e_own = hypot((double)xs[4] - (double)z[1][0], (double)xs[5] - (double)z[1][1]);
+    e_eq = hypot((double)xq[4] - (double)z[1][0], (double)xq[5] - (double)z[1][1]);
+    TEST_ASSERT_TRUE(e_own > e_eq + 3.0);
+    TEST_ASSERT_TRUE(Ps[4][4] > Pq[4][4]);
+    TV_ASSERT_REAL((double)xq[0], xs[0]); /* the parent's half is the same */
+}
+
+/* Model 6 with PD = PG = 1 and one measurement in each target's gate
+ * (check_independent): with their own R the coupled update is two Kalman
+ * updates, each with its measurement's R; target 2, whose R is 10 times
+ * R, moves less towards its measurement than with R. */
+static void test_own_r_split_update_independent(void)
+{
+    const mtt_real Rbig[3] = {MTT_R(90.0), MTT_R(15.0), MTT_R(120.0)};
+    const mtt_real *rj[2] = {R, Rbig}, *req[2] = {R, R};
+    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(178.0), MTT_R(43.0)}};
+    mtt_split_state xs, xq;
+    mtt_split_cov Ps, Pq;
+    check_independent(rj, z, xs, Ps);
+    check_independent(req, z, xq, Pq);
+    TEST_ASSERT_TRUE(hypot((double)(xs[4] - z[1][0]), (double)(xs[5] - z[1][1])) >
+                     hypot((double)(xq[4] - z[1][0]), (double)(xq[5] - z[1][1])) + 1.0);
+    TV_ASSERT_REAL((double)xq[0], xs[0]);
+    TEST_ASSERT_TRUE(Ps[4][4] > Pq[4][4]);
+}
+
+/* An R that makes S not positive definite: refused, nothing written. */
+static void test_own_r_not_positive_refused(void)
+{
+    const mtt_real bad[3] = {MTT_R(-1000.0), MTT_R(0.0), MTT_R(1000.0)}; /* det S < 0 */
+    const mtt_real *rb[5] = {R, bad, R, R, R}, *rc[5] = {R, R, R, R, bad}, *rg[4] = {R, R, R, R};
+    const mtt_real *rx[4] = {R, R, bad, R};
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], bn[5], lik = MTT_R(-7.0);
+    mtt_split_state xs;
+    mtt_split_cov Ps, Pps;
+    mtt_split_assoc as;
+    uint8_t cl[5];
+    prior1(P);
+    xs[0] = MTT_R(-3.0);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, rb, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_FLOAT(-7.0f, (float)lik);
+    TEST_ASSERT_EQUAL_FLOAT(-3.0f, (float)xs[0]);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    /* a child-cluster measurement (Z5[4] is the parent's: ref5_cluster) and a parent's */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rb, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+                                              MTT_R(1000.0), xs, Ps, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rc, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+                                              MTT_R(1000.0), xs, Ps, &lik));
+    prior_s(Pps, 1.0);
+    as.m = 77u;
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, rx, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
+                                                   MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_UINT16(77u, as.m);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rg, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
+                                                  MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+    xs[0] = MTT_R(-3.0);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_update(&wk, &as, XPS, Pps, R, rx, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_FLOAT(-3.0f, (float)xs[0]);
+}
+#endif
 
 static void test_split_random_properties(void)
 {
@@ -685,7 +888,7 @@ static void test_split_random_properties(void)
             z[i][1] = xps[t + 1] + (mtt_real)urand(-6.0, 6.0);
             b[i] = (mtt_real)urand(0.0, 1.0);
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, m, z, pd, PG6, GAMMA, MTT_R(500.0),
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, NULL, m, z, pd, PG6, GAMMA, MTT_R(500.0),
                                                       MTT_R(0.0), &as));
         TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
         for (j1 = -1; j1 < (int16_t)m; ++j1) {
@@ -701,7 +904,7 @@ static void test_split_random_properties(void)
             }
             TV_ASSERT_REAL(1.0, s);
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, z, xs, Ps));
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, NULL, z, xs, Ps));
         assert_psd(Ps, 8);
         if (m >= 2u) {
             for (i = 0; i < 4; ++i) {
@@ -709,7 +912,7 @@ static void test_split_random_properties(void)
                     P[i][k] = Pps[i][k];
                 }
             }
-            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, xps, P, R, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, xps, P, R, NULL, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
             assert_psd(Ps, 8);
             TEST_ASSERT_TRUE(lik >= MTT_R(0.0));
         }
@@ -734,6 +937,12 @@ int main(void)
     RUN_TEST(test_decouple_reference);
     RUN_TEST(test_decouple_boundary);
     RUN_TEST(test_separate);
+#if MTT_WITH_MEAS_COV
+    RUN_TEST(test_own_r_equal_is_the_shared_form);
+    RUN_TEST(test_own_r_just_two_hand);
+    RUN_TEST(test_own_r_split_update_independent);
+    RUN_TEST(test_own_r_not_positive_refused);
+#endif
     return UNITY_END();
 }
 

@@ -46,6 +46,31 @@ static void split_params(mtt_params *p)
     p->vmax = MTT_R(20.0);
 }
 
+/* own_r: every detection carries its own covariance r_xx = r_yy = own_r
+ * (0: none, mtt_tracker_step; 1 is meas_sigma's R: ALGORITHMS.md §3.1). */
+static double own_r = 0.0;
+
+/* One frame: mtt_tracker_step, or with own_r the same detections with
+ * their own covariance through mtt_tracker_step_cov. */
+static void step_own(mtt_real time, const mtt_meas *z, size_t m)
+{
+#if MTT_WITH_MEAS_COV
+    if (own_r > 0.0) {
+        mtt_meas_cov c[8];
+        size_t i;
+        TEST_ASSERT_TRUE(m <= 8u);
+        for (i = 0; i < m; ++i) {
+            c[i].r_xx = (mtt_real)own_r;
+            c[i].r_xy = MTT_R(0.0);
+            c[i].r_yy = (mtt_real)own_r;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&trk, time, z, c, m));
+        return;
+    }
+#endif
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, time, z, m));
+}
+
 /* Runs the scene; returns the number of tracks that split off, and the
  * parent id and the number of confirmed tracks at the end. */
 static int run_scene(double vy_child, uint32_t *parent_of_child, int *n_confirmed, double *child_dy)
@@ -75,7 +100,7 @@ static int run_scene(double vy_child, uint32_t *parent_of_child, int *n_confirme
             z[m++] = sim_meas((mtt_real)(10.0 * k - 200.0 + 400.0 * sim_unif(&r)),
                               (mtt_real)(-400.0 - 200.0 * sim_unif(&r)), MTT_R(0.0), 0);
         }
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, z, (size_t)m));
+        step_own((mtt_real)k, z, (size_t)m);
     }
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&trk, &st));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
@@ -267,13 +292,53 @@ static double late_look(int rule, double *gate)
         if (k == 10) {
             z[m++] = sim_meas(MTT_R(100.0), MTT_R(15.0), MTT_R(0.0), 0);
         }
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, (mtt_real)k, z, (size_t)m));
+        step_own((mtt_real)k, z, (size_t)m);
     }
     *gate = sqrt(9.2103403719761836 * ((double)TV_PP(&trk, 0)[1][1] + 1.0 + 16.0 / 2.0));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
     TEST_ASSERT_EQUAL_UINT32(0, v.id);
     return (double)v.p_split;
 }
+
+#if MTT_WITH_MEAS_COV
+/* Every detection with its own covariance equal to meas_sigma's R: the
+ * split modes take the mixture of single-detection updates (§3.1), equal
+ * to the shared-R forms, so the split, the child and P(split) are those of
+ * the plain run, through models 5 and 6, the decoupling and the late look. */
+static void test_own_r_equal_to_meas_sigma_splits_the_same(void)
+{
+    uint32_t parent, parent_own;
+    int conf, conf_own;
+    double dy, dy_own, gate, p1, p1_own;
+    TEST_ASSERT_EQUAL_INT(1, run_scene(4.0, &parent, &conf, &dy));
+    p1 = late_look(1, &gate);
+    own_r = 1.0;
+    TEST_ASSERT_EQUAL_INT(1, run_scene(4.0, &parent_own, &conf_own, &dy_own));
+    p1_own = late_look(1, &gate);
+    own_r = 0.0;
+    TEST_ASSERT_EQUAL_UINT32(parent, parent_own);
+    TEST_ASSERT_EQUAL_INT(conf, conf_own);
+    TEST_ASSERT_TRUE(fabs(dy - dy_own) < 1e-3);
+    TEST_ASSERT_TRUE(p1 > 1e-3);
+    TEST_ASSERT_TRUE(fabs(p1 - p1_own) <= 1e-3 * p1);
+}
+
+/* The late look's scene (late_look, rule 1) with an own R 25 times
+ * meas_sigma's on every detection: the split modes weigh the far
+ * detection on its own, wider S_j, where it is no longer far out in the
+ * tails, and P(split) rises (0.09 to 0.40 in the double build). */
+static void test_own_r_moves_the_split_probability(void)
+{
+    double gate, p1, p1_own;
+    p1 = late_look(1, &gate);
+    own_r = 25.0;
+    p1_own = late_look(1, &gate);
+    own_r = 0.0;
+    TEST_ASSERT_TRUE(p1_own >= 0.0 && p1_own <= 1.0);
+    TEST_ASSERT_TRUE(p1 > 0.05 && p1 < 0.15);
+    TEST_ASSERT_TRUE(p1_own > 3.0 * p1);
+}
+#endif
 
 static void test_late_look_reaches_a_far_child(void)
 {
@@ -385,6 +450,10 @@ int main(void)
     RUN_TEST(test_child_confirmed_by_split_confirm);
     RUN_TEST(test_provisional_child_deleted);
     RUN_TEST(test_late_look_reaches_a_far_child);
+#if MTT_WITH_MEAS_COV
+    RUN_TEST(test_own_r_equal_to_meas_sigma_splits_the_same);
+    RUN_TEST(test_own_r_moves_the_split_probability);
+#endif
     RUN_TEST(test_a_confirmed_neighbours_detection_starts_no_split);
     RUN_TEST(test_split_needs_imm_with_a_cv_model);
 #else

@@ -122,7 +122,7 @@ typedef enum mtt_model_kind {
 typedef enum mtt_measurement {
     MTT_MEASUREMENT_CARTESIAN = 0, /**< x, y (mtt_tracker_step, mtt_tracker_step_cov) */
     MTT_MEASUREMENT_POLAR = 1      /**< range, bearing from sensor_xy (mtt_tracker_step_polar); needs
-                                        MTT_WITH_MEAS_COV and split false, else MTT_ERR_UNSUPPORTED */
+                                        MTT_WITH_MEAS_COV, else MTT_ERR_UNSUPPORTED */
 } mtt_measurement;
 
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
@@ -217,7 +217,8 @@ typedef struct mtt_params {
     mtt_real imm_initial[MTT_MAX_MODELS];     /**< model probabilities of a new or seeded track, sum 1; all 0:
                                                    not given */
     int split;                      /**< nonzero: split-target detection (ALGORITHMS.md §14.3); needs
-                                         motion = imm, a cv entry in imm_models and MTT_WITH_SPLIT */
+                                         motion = imm, a cv entry in imm_models and MTT_WITH_SPLIT; takes
+                                         a covariance per detection and polar detections (no range rate) */
     mtt_real split_p25;             /**< per scan: cv -> "just split" */
     mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
     mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */
@@ -555,13 +556,14 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
 /** mtt_tracker_step with a covariance per detection: cov[i] is meas[i]'s
  *  (cov may be NULL: then this is mtt_tracker_step).  A detection with one
  *  is gated, weighed, updated with and initiated from its own R, in every
- *  mode and with the IMM; one whose cov[i] is all 0 has meas_sigma's
+ *  mode, with the IMM and in the split modes (split = true, ALGORITHMS.md
+ *  §14.3); one whose cov[i] is all 0 has meas_sigma's
  *  (ALGORITHMS.md §3.1).  The canonical order takes the covariance after
  *  the amplitude.
  *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
  *          written, when a cov[i] is nonzero and the build has no
  *          MTT_WITH_MEAS_COV (the firmware configurations, the fixed-point
- *          build) or the tracker runs split = true; MTT_ERR_UNSUPPORTED
+ *          build); MTT_ERR_UNSUPPORTED
  *          (this and mtt_tracker_step) when its measurement is polar. */
 MTT_MUST_CHECK mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas,
                                                const mtt_meas_cov *cov, size_t n);
@@ -575,13 +577,16 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, 
  *  detections.  A detection with a range rate (has_range_rate) is also
  *  gated on it and updated with it, an extended Kalman update of the radial
  *  velocity with variance range_rate_sigma^2, and a birth from it takes its
- *  radial velocity from it.  det may be NULL when n = 0.  A range, bearing
+ *  radial velocity from it.  With split = true the split modes take the
+ *  converted detections with their own R (ALGORITHMS.md §14.3), and a
+ *  range rate is refused.  det may be NULL when n = 0.  A range, bearing
  *  or range rate that is not finite, or a range <= 0: skipped, meas_bad.
  *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
  *          written, when the tracker's measurement is not polar (and the
  *          build without MTT_WITH_MEAS_COV, whose params_check refuses
- *          polar); MTT_ERR_PARAM, before anything is written, when a
- *          detection has a range rate and range_rate_sigma is 0. */
+ *          polar), or when a detection has a range rate and the tracker
+ *          runs split = true; MTT_ERR_PARAM, before anything is written,
+ *          when a detection has a range rate and range_rate_sigma is 0. */
 MTT_MUST_CHECK mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_polar *det,
                                                  size_t n);
 

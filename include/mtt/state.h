@@ -135,6 +135,15 @@ typedef struct mtt_split_work {
     mtt_real nu[MTT_MAX_SPLIT_MEAS][2];  /* model 5: innovations */
     mtt_real bn[MTT_MAX_SPLIT_MEAS];     /* model 5: betas renormalised per cluster */
     uint8_t cl[MTT_MAX_SPLIT_MEAS];      /* model 5: cluster of each measurement */
+#if MTT_WITH_MEAS_COV
+    /* a covariance per detection (ALGORITHMS.md §3.1, §14.3): the mixture
+     * of the single-detection (single-event) updates */
+    mtt_split_cov Pe;                    /* one detection's (event's) updated covariance */
+    mtt_split_cov Pa;                    /* their weighted sum with the spread */
+    mtt_split_cov Am[2];                 /* model 5: each half's weighted mean of I - W_j H */
+    mtt_split_state xe;                  /* one detection's (event's) updated state */
+    mtt_split_state da;                  /* the mean correction */
+#endif
 } mtt_split_work;
 
 /** Scratch of the split stage, one track at a time. */
@@ -143,6 +152,10 @@ typedef struct mtt_split_scratch {
     mtt_split_assoc as;
     mtt_real z[MTT_MAX_SPLIT_MEAS][2];   /* model 6's validated set */
     uint16_t zi[MTT_MAX_SPLIT_MEAS];     /* their measurement indices */
+#if MTT_WITH_MEAS_COV
+    const mtt_real *rz[MTT_MAX_SPLIT_MEAS]; /* their R: own, or meas_sigma's (§3.1) */
+    uint16_t n_own;                      /* how many of them have their own R */
+#endif
     uint16_t owner[MTT_MAX_MEAS];        /* 1 + the confirmed track that holds measurement j, 0 */
     uint8_t reported[MTT_MAX_MEAS];      /* 1 when owner[j] reports measurement j */
     mtt_real beta[MTT_MAX_GATED];        /* model 5's input betas */

@@ -23,6 +23,9 @@ void mtt_gate_frame(mtt_tracker *trk);
  * positive definite or the range rate is outside its gate. */
 mtt_real mtt_gate_own(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms,
                       mtt_real *p);
+/* A gate window's half-widths wx, wy (sqrt(gamma S) per axis) widened for
+ * the frame's detections with a wider R of their own (ALGORITHMS.md §3.1). */
+void mtt_gate_own_widen(const mtt_tracker *trk, mtt_real gamma, mtt_real *wx, mtt_real *wy);
 #endif
 
 /* ---- lm_clutter.c: clutter densities (ALGORITHMS.md §5.2, §8) ---- */

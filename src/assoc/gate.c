@@ -309,6 +309,22 @@ static void push_pair(mtt_tracker *trk, mtt_pair *pairs, const mtt_pair *np, int
     }
 }
 
+#if MTT_WITH_MEAS_COV
+void mtt_gate_own_widen(const mtt_tracker *trk, mtt_real gamma, mtt_real *wx, mtt_real *wy)
+{
+    if (trk->n_own_r > 0u) {
+        /* detections with a wider R of their own: the window reaches
+         * sqrt(gamma (S_xx - R_xx + r_xx)) <= w + sqrt(gamma (r_xx - R_xx)) (§3.1) */
+        /* polar (§3.2): S holds the track's own R_t, not trk->R, so
+         * the bound sqrt(gamma r_xx) without the subtraction */
+        const int pol = trk->par.measurement == MTT_MEASUREMENT_POLAR;
+        const mtt_real r0 = pol ? MTT_R(0.0) : trk->R[0], r2 = pol ? MTT_R(0.0) : trk->R[2];
+        *wx += (trk->own_rmax[0] > r0) ? mtt_sqrt(gamma * (trk->own_rmax[0] - r0)) : MTT_R(0.0);
+        *wy += (trk->own_rmax[1] > r2) ? mtt_sqrt(gamma * (trk->own_rmax[1] - r2)) : MTT_R(0.0);
+    }
+}
+#endif
+
 void mtt_gate_frame(mtt_tracker *trk)
 {
     const uint16_t n = trk->n_meas;
@@ -373,16 +389,7 @@ void mtt_gate_frame(mtt_tracker *trk)
         }
 #endif
 #if MTT_WITH_MEAS_COV
-        if (trk->n_own_r > 0u) {
-            /* detections with a wider R of their own: the window reaches
-             * sqrt(gamma (S_xx - R_xx + r_xx)) <= w + sqrt(gamma (r_xx - R_xx)) (§3.1) */
-            /* polar (§3.2): S holds the track's own R_t, not trk->R, so
-             * the bound sqrt(gamma r_xx) without the subtraction */
-            const int pol = trk->par.measurement == MTT_MEASUREMENT_POLAR;
-            const mtt_real r0 = pol ? MTT_R(0.0) : trk->R[0], r2 = pol ? MTT_R(0.0) : trk->R[2];
-            wx += (trk->own_rmax[0] > r0) ? mtt_sqrt(gamma * (trk->own_rmax[0] - r0)) : MTT_R(0.0);
-            wy += (trk->own_rmax[1] > r2) ? mtt_sqrt(gamma * (trk->own_rmax[1] - r2)) : MTT_R(0.0);
-        }
+        mtt_gate_own_widen(trk, gamma, &wx, &wy);
 #endif
         for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
             mtt_pos dx = MTT_SUBS(meas[j].x, zx), dy = MTT_SUBS(meas[j].y, zy);

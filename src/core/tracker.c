@@ -181,11 +181,13 @@ mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_pol
     if (trk->par.measurement != MTT_MEASUREMENT_POLAR) {
         return MTT_ERR_UNSUPPORTED; /* polar detections need polar settings (§3.2) */
     }
-    if (!(trk->par.range_rate_sigma > MTT_ZERO)) {
+    if (!(trk->par.range_rate_sigma > MTT_ZERO) || (MTT_WITH_SPLIT && trk->par.split)) {
         size_t i;
         for (i = 0; i < n; ++i) {
             if (det[i].has_range_rate) {
-                return MTT_ERR_PARAM; /* a range rate without its sigma (§3.2) */
+                /* a range rate without its sigma (§3.2); the split modes
+                 * take none (§14.3) */
+                return (MTT_WITH_SPLIT && trk->par.split) ? MTT_ERR_UNSUPPORTED : MTT_ERR_PARAM;
             }
         }
     }
@@ -208,9 +210,9 @@ mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas 
         return MTT_ERR_UNSUPPORTED; /* polar settings take mtt_tracker_step_polar (§3.2) */
     }
 #endif
-    if (cov != NULL && (!MTT_WITH_MEAS_COV || (MTT_WITH_SPLIT && trk->par.split))) {
-        /* a covariance per detection where the build or the tracker has
-         * none (ALGORITHMS.md §3.1): refused before anything is written */
+    if (cov != NULL && !MTT_WITH_MEAS_COV) {
+        /* a covariance per detection where the build has none
+         * (ALGORITHMS.md §3.1): refused before anything is written */
         size_t i;
         for (i = 0; i < n; ++i) {
             if (cov[i].r_xx != MTT_ZERO || cov[i].r_xy != MTT_ZERO || cov[i].r_yy != MTT_ZERO) {

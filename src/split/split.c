@@ -25,7 +25,14 @@
  * covariance plus the spread of the innovations, a sum of positive
  * semi-definite terms (as kalman.c does for one target).  A's measured
  * block is R S^-1 (exact: H Pp H' = S - R), which avoids the cancellation
- * of I - W H when the prior is far wider than R. */
+ * of I - W H when the prior is far wider than R.
+ *
+ * A covariance per detection (Rj, ALGORITHMS.md §3.1; NULL: R for every
+ * measurement, the forms above): each measurement's S_j = H P H' + R_j in
+ * its gate and likelihood, and an update that is the mixture of the
+ * single-detection (model 6: single-event) updates, each the Joseph form
+ * with its own R and gain, plus their spread (the forms above when the R_j
+ * are equal).  Only with MTT_WITH_MEAS_COV. */
 #include "mtt_internal.h"
 
 #if MTT_WITH_SPLIT
@@ -216,6 +223,135 @@ static int n_ok(uint8_t n)
     return n >= 4u && n <= MTT_MAX_STATE;
 }
 
+/* R (r11, r12, r22) as the 2 x 2 block of Rq at (o, o). */
+static void rq_block(const mtt_real R[3], mtt_real Rq[][QMAX], int o)
+{
+    Rq[o][o] = R[0];
+    Rq[o][o + 1] = R[1];
+    Rq[o + 1][o] = R[1];
+    Rq[o + 1][o + 1] = R[2];
+}
+
+#if MTT_WITH_MEAS_COV
+/* ---- the mixture of single-detection updates (ALGORITHMS.md §3.1) ---- */
+
+/* Clears the mixture's sums of N states (and Am, may be NULL). */
+static void mix_clear(mtt_split_work *wk, int N, mtt_real Am[][NS])
+{
+    int i, k;
+    for (i = 0; i < N; ++i) {
+        wk->da[i] = MTT_R(0.0);
+        for (k = 0; k < N; ++k) {
+            wk->Pa[i][k] = MTT_R(0.0);
+            if (Am != NULL) {
+                Am[i][k] = MTT_R(0.0);
+            }
+        }
+    }
+}
+
+/* One term of weight w: the Kalman update of (xp, Pp) with the q-vector
+ * innovation nu of noise Rq (x_e, P_e, d = x_e - xp).  Pass 0 adds w d to
+ * wk->da and (Am not NULL) w (I - W H) to Am; pass 1, with da complete,
+ * w (P_e + (d - da)(d - da)') to wk->Pa.  -1 when S is not positive
+ * definite. */
+static int mix_term(mtt_split_work *wk, int N, int q, const int sel[], const mtt_real xp[], mtt_real Pp[][NS],
+                    mtt_real Rq[][QMAX], const mtt_real nu[], mtt_real w, int pass, mtt_real Am[][NS])
+{
+    mtt_real none[QMAX][QMAX] = {{MTT_R(0.0)}};
+    int i, k;
+    if (mixed_update(wk, N, q, sel, xp, Pp, Rq, MTT_R(0.0), nu, none, wk->xe, wk->Pe, NULL) != 0) {
+        return -1;
+    }
+    for (i = 0; i < N; ++i) {
+        const mtt_real di = wk->xe[i] - xp[i];
+        for (k = 0; k < N; ++k) {
+            if (pass == 0) {
+                if (Am != NULL) {
+                    Am[i][k] += w * wk->A[i][k];
+                }
+            } else {
+                wk->Pa[i][k] += w * (wk->Pe[i][k] + (di - wk->da[i]) * (wk->xe[k] - xp[k] - wk->da[k]));
+            }
+        }
+        if (pass == 0) {
+            wk->da[i] += w * di;
+        }
+    }
+    return 0;
+}
+
+/* The mixture: x = xp + da, P = b0 (Pp + da da') + Pa, symmetrised (b0:
+ * the weight of no detection, whose d is 0). */
+static void mix_finish(const mtt_split_work *wk, int N, const mtt_real xp[], mtt_real Pp[][NS], mtt_real b0,
+                       mtt_real x[], mtt_real P[][NS])
+{
+    int i, k;
+    for (i = 0; i < N; ++i) {
+        x[i] = xp[i] + wk->da[i];
+    }
+    for (i = 0; i < N; ++i) {
+        for (k = i; k < N; ++k) {
+            const mtt_real v = b0 * (MTT_R(0.5) * (Pp[i][k] + Pp[k][i]) + wk->da[i] * wk->da[k]) +
+                               MTT_R(0.5) * (wk->Pa[i][k] + wk->Pa[k][i]);
+            P[i][k] = v;
+            P[k][i] = v;
+        }
+    }
+}
+
+/* A half of model 5 (and mtt_split_known's child) with the detections'
+ * own R: the measurements j of cluster h, weights w[j], innovations
+ * nu[j]; Am (may be NULL) the weighted mean of I - W_j H. */
+static int mix_half(mtt_split_work *wk, int n, const mtt_real xp[], mtt_real Pp[][NS], const mtt_real *const Rj[],
+                    uint16_t m, const uint8_t cl[], uint8_t h, const mtt_real w[], mtt_real nu[][2],
+                    mtt_real x[], mtt_real P[][NS], mtt_real Am[][NS])
+{
+    static const int sel[2] = {0, 1};
+    mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
+    uint16_t j;
+    int pass;
+    mix_clear(wk, n, Am);
+    for (pass = 0; pass < 2; ++pass) {
+        for (j = 0u; j < m; ++j) {
+            if (cl[j] == h) {
+                rq_block(Rj[j], Rq, 0);
+                if (mix_term(wk, n, 2, sel, xp, Pp, Rq, nu[j], w[j], pass, Am) != 0) {
+                    return -1;
+                }
+            }
+        }
+    }
+    mix_finish(wk, n, xp, Pp, MTT_R(0.0), x, P);
+    return 0;
+}
+
+/* Model 5's cross covariance with the detections' own R: Am[0] Pp Am[1]'
+ * (A Pp A' of [S3] eq. 12 when the R_j are equal). */
+static void mix_cross(mtt_split_work *wk, int n, mtt_real Pp[][NS], mtt_real P12[][NS])
+{
+    int i, k, l;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            mtt_real s = MTT_R(0.0);
+            for (l = 0; l < n; ++l) {
+                s += wk->Am[0][i][l] * Pp[l][k];
+            }
+            wk->AP[i][k] = s;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < n; ++k) {
+            mtt_real s = MTT_R(0.0);
+            for (l = 0; l < n; ++l) {
+                s += wk->AP[i][l] * wk->Am[1][k][l];
+            }
+            P12[i][k] = s;
+        }
+    }
+}
+#endif
+
 /* ---- stacked prediction ---- */
 
 int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE],
@@ -280,7 +416,7 @@ int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE]
 /* ---- model 5: just split ---- */
 
 int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                   const mtt_real R[3], uint16_t m, mtt_real z[][2], const mtt_real beta[],
+                   const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], const mtt_real beta[],
                    mtt_real vg, mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[],
                    mtt_real beta_n[], mtt_real *lik)
 {
@@ -342,8 +478,22 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
     gs[1] = MTT_R(0.0);
     for (j = 0u; j < m; ++j) {
         bs[cl[j]] += beta[j];
+#if MTT_WITH_MEAS_COV
+        if (Rj != NULL) {
+            /* its own S_j (§3.1); the clusters stay on the track's S */
+            mtt_real Sj[3], Sij[3], detj;
+            if (innov2(Pq, 0, Rj[j], Sj, Sij, &detj) != 0) {
+                return -1;
+            }
+            gs[cl[j]] += gauss2(quad2(Sij, nu[j][0], nu[j][1]), detj);
+            continue;
+        }
+#endif
         gs[cl[j]] += gauss2(quad2(Si, nu[j][0], nu[j][1]), det);
     }
+#if !MTT_WITH_MEAS_COV
+    (void)Rj;
+#endif
     for (h = 0; h < 2; ++h) {
         mtt_real nub[QMAX] = {MTT_R(0.0)}, sp[QMAX][QMAX] = {{MTT_R(0.0)}};
         for (j = 0u; j < m; ++j) {
@@ -353,6 +503,14 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
                 nub[1] += bn[j] * nu[j][1];
             }
         }
+#if MTT_WITH_MEAS_COV
+        if (Rj != NULL) {
+            if (mix_half(wk, n, xp, Pq, Rj, m, cl, (uint8_t)h, bn, nu, xh[h], Ph[h], wk->Am[h]) != 0) {
+                return -1;
+            }
+            continue;
+        }
+#endif
         for (j = 0u; j < m; ++j) {
             if (cl[j] == (uint8_t)h) {
                 const mtt_real dx = nu[j][0] - nub[0], dy = nu[j][1] - nub[1];
@@ -362,16 +520,18 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
             }
         }
         sp[1][0] = sp[0][1];
-        Rq[0][0] = R[0];
-        Rq[0][1] = R[1];
-        Rq[1][0] = R[1];
-        Rq[1][1] = R[2];
+        rq_block(R, Rq, 0);
         /* Step 5: the PDA update of the half (beta_0 = 0): x_h and P_hh;
          * A Pp A' is the cross covariance P_12 of [S3] eq. 12. */
         if (mixed_update(wk, n, 2, sel, xp, Pq, Rq, MTT_R(0.0), nub, sp, xh[h], Ph[h], P12) != 0) {
             return -1;
         }
     }
+#if MTT_WITH_MEAS_COV
+    if (Rj != NULL) {
+        mix_cross(wk, n, Pq, P12);
+    }
+#endif
     for (i = 0; i < n; ++i) {
         xs[i] = xh[0][i];
         xs[n + i] = xh[1][i];
@@ -396,7 +556,7 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
 /* ---- model 6: split ---- */
 
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
-                         uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
 {
     mtt_real S[3], Si[2][3], det[2];
@@ -407,7 +567,18 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
         !mtt_isfinite(lam) || (lam == MTT_R(0.0) && !(vg > MTT_R(0.0)))) {
         return -1;
     }
-    /* both innovation covariances first: on error nothing is written */
+    /* every innovation covariance first: on error nothing is written */
+#if MTT_WITH_MEAS_COV
+    for (t = 0; t < 2 && Rj != NULL; ++t) {
+        for (j = 0u; j < m; ++j) {
+            if (innov2(Pps, t * (int)n, Rj[j], S, Si[t], &det[t]) != 0) {
+                return -1;
+            }
+        }
+    }
+#else
+    (void)Rj;
+#endif
     for (t = 0; t < 2; ++t) {
         if (innov2(Pps, t * (int)n, R, S, Si[t], &det[t]) != 0) {
             return -1;
@@ -416,11 +587,20 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
     for (t = 0; t < 2; ++t) {
         const int o = t * (int)n;
         for (j = 0u; j < m; ++j) {
-            const mtt_real d2 = quad2(Si[t], z[j][0] - xps[o], z[j][1] - xps[o + 1]);
+            const mtt_real *sit = Si[t];
+            mtt_real dt = det[t], d2, g;
+#if MTT_WITH_MEAS_COV
+            mtt_real sij[3];
+            if (Rj != NULL) {
+                (void)innov2(Pps, o, Rj[j], S, sij, &dt); /* its own S_tj (§3.1): checked above */
+                sit = sij;
+            }
+#endif
+            d2 = quad2(sit, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
             /* PD V N: the detection factor of [S3] eq. 14 times V (the
              * ratio to V^-m), or PD N / lambda with a known clutter
              * density; 0 outside the target's gate (not feasible). */
-            const mtt_real g = (lam > MTT_R(0.0)) ? gauss2(d2, det[t]) / lam : vg * gauss2(d2, det[t]);
+            g = (lam > MTT_R(0.0)) ? gauss2(d2, dt) / lam : vg * gauss2(d2, dt);
             as->a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
             as->nu[t][j][0] = z[j][0] - xps[o];
             as->nu[t][j][1] = z[j][1] - xps[o + 1];
@@ -504,9 +684,50 @@ int mtt_split_joint(mtt_split_assoc *as)
     return 0;
 }
 
+#if MTT_WITH_MEAS_COV
+/* Model 6's update with the detections' own R: the mixture over the
+ * events theta != theta_0 of the stacked Kalman updates with R^s(theta) =
+ * blockdiag(R_j1, R_j2) (an undetected target's block R, its innovation 0,
+ * as in the form with one R), and theta_0's prediction (beta0). */
+static int mix_events(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
+                      const mtt_real R[3], const mtt_real *const Rj[], mtt_real z[][2], mtt_split_state xs,
+                      mtt_split_cov Ps)
+{
+    const int16_t m = (int16_t)as->m;
+    const int n = (int)as->n;
+    const int sel[QMAX] = {0, 1, n, n + 1};
+    mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
+    int16_t j1, j2;
+    int pass;
+    mix_clear(wk, 2 * n, NULL);
+    for (pass = 0; pass < 2; ++pass) {
+        for (j1 = -1; j1 < m; ++j1) {
+            for (j2 = -1; j2 < m; ++j2) {
+                const mtt_real p = mtt_split_event_weight(as, j1, j2) / as->lik;
+                mtt_real nu[QMAX];
+                if (!(p > MTT_R(0.0)) || (j1 < 0 && j2 < 0)) {
+                    continue;
+                }
+                rq_block((j1 >= 0) ? Rj[j1] : R, Rq, 0);
+                rq_block((j2 >= 0) ? Rj[j2] : R, Rq, 2);
+                nu[0] = (j1 >= 0) ? z[j1][0] - xps[0] : MTT_R(0.0);
+                nu[1] = (j1 >= 0) ? z[j1][1] - xps[1] : MTT_R(0.0);
+                nu[2] = (j2 >= 0) ? z[j2][0] - xps[n] : MTT_R(0.0);
+                nu[3] = (j2 >= 0) ? z[j2][1] - xps[n + 1] : MTT_R(0.0);
+                if (mix_term(wk, 2 * n, QMAX, sel, xps, Pps, Rq, nu, p, pass, NULL) != 0) {
+                    return -1;
+                }
+            }
+        }
+    }
+    mix_finish(wk, 2 * n, xps, Pps, as->beta0, xs, Ps);
+    return 0;
+}
+#endif
+
 int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps,
-                     mtt_split_cov Pps, const mtt_real R[3], mtt_real z[][2], mtt_split_state xs,
-                     mtt_split_cov Ps)
+                     mtt_split_cov Pps, const mtt_real R[3], const mtt_real *const Rj[], mtt_real z[][2],
+                     mtt_split_state xs, mtt_split_cov Ps)
 {
     const int16_t m = (int16_t)as->m;
     const int n = (int)as->n;
@@ -518,6 +739,13 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
     if (!(as->lik > MTT_R(0.0))) {
         return -1;
     }
+#if MTT_WITH_MEAS_COV
+    if (Rj != NULL) {
+        return mix_events(wk, as, xps, Pps, R, Rj, z, xs, Ps);
+    }
+#else
+    (void)Rj;
+#endif
     for (a = 0; a < QMAX; ++a) {
         zh[a] = xps[sel[a]];
     }
@@ -557,14 +785,8 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
         }
     }
     /* R^s = blockdiag(R, R), H^s = blockdiag(H, H) ([S3] eq. 22, 23). */
-    Rq[0][0] = R[0];
-    Rq[0][1] = R[1];
-    Rq[1][0] = R[1];
-    Rq[1][1] = R[2];
-    Rq[2][2] = R[0];
-    Rq[2][3] = R[1];
-    Rq[3][2] = R[1];
-    Rq[3][3] = R[2];
+    rq_block(R, Rq, 0);
+    rq_block(R, Rq, 2);
     return mixed_update(wk, 2 * n, QMAX, sel, xps, Pps, Rq, as->beta0, nub, sp, xs, Ps, NULL);
 }
 
@@ -614,7 +836,7 @@ void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_
 /* ---- model 5's child half for a split of known speed ---- */
 
 int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                    const mtt_real R[3], uint16_t m, mtt_real z[][2], const uint8_t cluster[],
+                    const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], const uint8_t cluster[],
                     const mtt_real beta_n[], mtt_real dv, mtt_real dt, uint8_t n_off, mtt_real vg,
                     mtt_split_state xs, mtt_split_cov Ps, mtt_real *lik)
 {
@@ -695,33 +917,61 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
     Sai[0] = Sa[2] / deta;
     Sai[1] = -Sa[1] / deta;
     Sai[2] = Sa[0] / deta;
-    for (j = 0u; j < m; ++j) {
-        if (cluster[j] == 0u) {
-            g[0] += gauss2(quad2(Sai, z[j][0] - xp[0], z[j][1] - xp[1]), deta);
-        } else {
-            const mtt_real w = beta_n[j] / bs;
-            g[1] += gauss2(quad2(Sbi, z[j][0] - xk[0], z[j][1] - xk[1]), detb);
-            nub[0] += w * (z[j][0] - xk[0]);
-            nub[1] += w * (z[j][1] - xk[1]);
+#if MTT_WITH_MEAS_COV
+    if (Rj != NULL) {
+        /* the detections' own R (§3.1): each its own S_j on both priors,
+         * the child half the mixture of its single-detection updates */
+        for (j = 0u; j < m; ++j) {
+            mtt_real d2, pj, S[3];
+            wk->nu[j][0] = z[j][0] - xk[0];
+            wk->nu[j][1] = z[j][1] - xk[1];
+            wk->bn[j] = beta_n[j] / bs;
+            if (cluster[j] == 0u) {
+                if (mtt_meas_gauss(Pp[0], Pp[1], Rj[j], MTT_R(1.0), z[j][0] - xp[0], z[j][1] - xp[1], &d2,
+                                   &pj, S) != 0) {
+                    return -1;
+                }
+                g[0] += pj;
+            } else {
+                if (innov2(Pk, 0, Rj[j], Sb, Sbi, &detb) != 0) {
+                    return -1;
+                }
+                g[1] += gauss2(quad2(Sbi, wk->nu[j][0], wk->nu[j][1]), detb);
+            }
         }
-    }
-    for (j = 0u; j < m; ++j) {
-        if (cluster[j] == 1u) {
-            const mtt_real w = beta_n[j] / bs;
-            const mtt_real dx = z[j][0] - xk[0] - nub[0], dy = z[j][1] - xk[1] - nub[1];
-            sp[0][0] += w * dx * dx;
-            sp[0][1] += w * dx * dy;
-            sp[1][1] += w * dy * dy;
+        if (mix_half(wk, n, xk, Pk, Rj, m, cluster, 1u, wk->bn, wk->nu, wk->xh[0], wk->Ph[0], NULL) != 0) {
+            return -1;
         }
-    }
-    sp[1][0] = sp[0][1];
-    Rq[0][0] = R[0];
-    Rq[0][1] = R[1];
-    Rq[1][0] = R[1];
-    Rq[1][1] = R[2];
-    /* the child half's PDA update (beta0 = 0) from the prior */
-    if (mixed_update(wk, n, 2, sel, xk, Pk, Rq, MTT_R(0.0), nub, sp, wk->xh[0], wk->Ph[0], NULL) != 0) {
-        return -1;
+    } else
+#else
+    (void)Rj;
+#endif
+    {
+        for (j = 0u; j < m; ++j) {
+            if (cluster[j] == 0u) {
+                g[0] += gauss2(quad2(Sai, z[j][0] - xp[0], z[j][1] - xp[1]), deta);
+            } else {
+                const mtt_real w = beta_n[j] / bs;
+                g[1] += gauss2(quad2(Sbi, z[j][0] - xk[0], z[j][1] - xk[1]), detb);
+                nub[0] += w * (z[j][0] - xk[0]);
+                nub[1] += w * (z[j][1] - xk[1]);
+            }
+        }
+        for (j = 0u; j < m; ++j) {
+            if (cluster[j] == 1u) {
+                const mtt_real w = beta_n[j] / bs;
+                const mtt_real dx = z[j][0] - xk[0] - nub[0], dy = z[j][1] - xk[1] - nub[1];
+                sp[0][0] += w * dx * dx;
+                sp[0][1] += w * dx * dy;
+                sp[1][1] += w * dy * dy;
+            }
+        }
+        sp[1][0] = sp[0][1];
+        rq_block(R, Rq, 0);
+        /* the child half's PDA update (beta0 = 0) from the prior */
+        if (mixed_update(wk, n, 2, sel, xk, Pk, Rq, MTT_R(0.0), nub, sp, wk->xh[0], wk->Ph[0], NULL) != 0) {
+            return -1;
+        }
     }
     for (a = 0; a < (int)n; ++a) {
         xs[n + a] = wk->xh[0][a];

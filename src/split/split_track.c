@@ -67,7 +67,13 @@
  * child at the offsets a and a + 1, late_centres); and a split-off track
  * whose existence is below split_provisional_exist (0.6) in its first
  * split_provisional_scans (3) scans is deleted (the
- * provisional child, mtt_split_frame).  The reported estimate of a track stays
+ * provisional child, mtt_split_frame).
+ *
+ * A covariance per detection (ALGORITHMS.md §3.1, polar detections §3.2):
+ * the validated sets carry each measurement's R (own, or meas_sigma's),
+ * which split.c takes when one of them has its own; the windows widen as
+ * the gate's (mtt_gate_own_widen), and the track's R is the polar one at
+ * the predicted position.  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
 
@@ -88,6 +94,31 @@
     (MTT_SPLIT_KNOWN_OFFSET + (mtt_real)(KNOWN_LATE_OFFSETS - 1u) + MTT_SPLIT_KNOWN_OFFSET)
 #define NS (2 * MTT_STATE_N)
 #define SPLIT_HELD_BY_MANY 0xFFFFu /* owner[]: held by two or more confirmed tracks */
+
+/* The track's R at the predicted position xp: meas_sigma's; polar: at xp
+ * (ALGORITHMS.md §3.2). */
+static const mtt_real *track_r(const mtt_tracker *trk, const mtt_real *xp, mtt_real R[3])
+{
+#if MTT_WITH_MEAS_COV
+    return mtt_polar_track_r(trk, xp, R);
+#else
+    (void)xp;
+    (void)R;
+    return trk->R;
+#endif
+}
+
+/* The validated set's R per measurement for split.c: NULL when none has
+ * its own (every one meas_sigma's R). */
+static const mtt_real *const *set_r(const mtt_tracker *trk)
+{
+#if MTT_WITH_MEAS_COV
+    return (trk->split_scr.n_own > 0u) ? trk->split_scr.rz : NULL;
+#else
+    (void)trk;
+    return NULL;
+#endif
+}
 
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
  * states with weights w[0] (mode 5) and w[1] (mode 6), Σ w = 1. */
@@ -168,18 +199,33 @@ static void owners(mtt_tracker *trk)
 static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], mtt_real w[2][2])
 {
     mtt_split_scratch *sc = &trk->split_scr;
+    mtt_real wo[2][2];
     uint16_t j, m = 0;
     int t;
+#if MTT_WITH_MEAS_COV
+    sc->n_own = 0;
+#endif
+    for (t = 0; t < nt; ++t) {
+        wo[t][0] = w[t][0];
+        wo[t][1] = w[t][1];
+#if MTT_WITH_MEAS_COV
+        mtt_gate_own_widen(trk, trk->gamma, &wo[t][0], &wo[t][1]);
+#endif
+    }
     for (j = 0; j < trk->n_meas && m < MTT_MAX_SPLIT_MEAS; ++j) {
         const mtt_mstore *ms = &trk->meas[j];
         int in = 0;
         for (t = 0; t < nt; ++t) {
-            in |= mtt_fabs(ms->x - c[t][0]) <= w[t][0] && mtt_fabs(ms->y - c[t][1]) <= w[t][1];
+            in |= mtt_fabs(ms->x - c[t][0]) <= wo[t][0] && mtt_fabs(ms->y - c[t][1]) <= wo[t][1];
         }
         if (in && free_for(trk, ti, j)) {
             sc->z[m][0] = ms->x;
             sc->z[m][1] = ms->y;
             sc->zi[m] = j;
+#if MTT_WITH_MEAS_COV
+            sc->rz[m] = mtt_meas_r(trk, ms);
+            sc->n_own = (uint16_t)(sc->n_own + ms->has_R);
+#endif
             ++m;
         }
     }
@@ -190,14 +236,15 @@ static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], 
 static uint16_t split_candidates(mtt_tracker *trk, uint16_t ti, const mtt_split_state xp,
                                  mtt_split_cov Pp)
 {
-    mtt_real c[2][2], w[2][2];
+    mtt_real c[2][2], w[2][2], Rb[3];
     int t;
     for (t = 0; t < 2; ++t) {
         const int o = t * N1;
+        const mtt_real *R = track_r(trk, &xp[o], Rb);
         c[t][0] = xp[o];
         c[t][1] = xp[o + 1];
-        w[t][0] = mtt_sqrt(trk->gamma * (Pp[o][o] + trk->R[0]));
-        w[t][1] = mtt_sqrt(trk->gamma * (Pp[o + 1][o + 1] + trk->R[2]));
+        w[t][0] = mtt_sqrt(trk->gamma * (Pp[o][o] + R[0]));
+        w[t][1] = mtt_sqrt(trk->gamma * (Pp[o + 1][o + 1] + R[2]));
     }
     return gather(trk, ti, 2, c, w);
 }
@@ -214,7 +261,8 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_real(*F)[MTT_MAX_STATE] = sc->F6; /* scratch: not the stack */
     mtt_real(*Q)[MTT_MAX_STATE] = sc->Q6;
-    mtt_real d2;
+    mtt_real d2, Rb[3];
+    const mtt_real *R;
     uint16_t m;
     int a;
     *dec = 0;
@@ -230,15 +278,16 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
         return MTT_R(0.0);
     }
     m = split_candidates(trk, ti, sc->xp, sc->Pp);
-    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, trk->R, m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
+    R = track_r(trk, sc->xp, Rb); /* polar: at the parent's predicted position */
+    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, R, set_r(trk), m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
                              tf->lambda, &sc->as) != 0 ||
         mtt_split_joint(&sc->as) != 0 ||
-        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, trk->R, sc->z, sc->x0, sc->P0) != 0) {
+        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, R, set_r(trk), sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
     /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
      * split_decouple_r (the header) */
-    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, p->split_decouple_r ? trk->R : no_noise,
+    *dec = mtt_split_decouple(N1, sc->x0, sc->P0, p->split_decouple_r ? R : no_noise,
                               MTT_SPLIT_CHI2_99, &d2) == 1;
     return sc->as.lik;
 }
@@ -268,9 +317,10 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     mtt_split_scratch *sc = &trk->split_scr;
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t cm = mtt_params_cv_model(&trk->par);
-    mtt_real lik;
+    mtt_real lik, Rb[3];
     int a, b;
-    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->beta,
+    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], track_r(trk, tf->xpm[cm], Rb), set_r(trk), m,
+                       sc->z, sc->beta,
                        MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
         return; /* the impulse then stays in both halves */
     }
@@ -341,7 +391,8 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     const uint8_t cm = mtt_params_cv_model(p);
     mtt_real(*P5)[MTT_MAX_STATE] = sc->P5p; /* Q_s, then P̄_cv + Q_s (scratch: not the stack) */
     mtt_real K[MTT_MAX_STATE][2];
-    mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0);
+    mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0), Rb[3];
+    const mtt_real *R = track_r(trk, tf->xpm[cm], Rb); /* polar: at the cv prediction */
     const int known = p->split_known_speed && p->split_dv > MTT_R(0.0);
     int late = 0; /* the late look of split_known_speed */
     mtt_real nx = MTT_R(0.0), ny = MTT_R(1.0); /* the course's unit normal, for the late look */
@@ -353,7 +404,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
             P5[a][b] = tf->Ppm[cm][a][b] + ((a < N1 && b < N1) ? P5[a][b] : MTT_R(0.0));
         }
     }
-    if (mtt_kalman_innov_n(N1, P5, trk->R, S, Si, &det, K) != 0 || !(tf->lambda > MTT_R(0.0))) {
+    if (mtt_kalman_innov_n(N1, P5, R, S, Si, &det, K) != 0 || !(tf->lambda > MTT_R(0.0))) {
         return MTT_R(0.0);
     }
     c[0][0] = tf->xpm[cm][0];
@@ -375,12 +426,23 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         m = MTT_MAX_GATED; /* the first ones, in measurement order */
     }
     for (j = 0; j < m; ++j) {
+#if MTT_WITH_MEAS_COV
+        if (set_r(trk) != NULL) {
+            /* N(z_j; ẑ_5, S_5j) with its own R (§3.1) */
+            mtt_real d2, Sj[3];
+            if (mtt_meas_gauss(P5[0], P5[1], sc->rz[j], MTT_R(1.0), sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1],
+                               &d2, &sc->beta[j], Sj) != 0) {
+                sc->beta[j] = MTT_R(0.0);
+            }
+            continue;
+        }
+#endif
         sc->beta[j] = mtt_exp(MTT_R(-0.5) * mtt_mahal2(Si, sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1]));
     }
     if (late && m >= 2u) {
         late_centres(trk, ti, m, Si, dt, nx, ny);
     }
-    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, trk->R, m, sc->z, sc->beta,
+    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, R, set_r(trk), m, sc->z, sc->beta,
                                  MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
                                  &lik) != 0) {
         return MTT_R(0.0);
@@ -391,7 +453,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (known) {
         /* the child's half at the known speed; on failure the impulse's stays */
         mtt_real lk;
-        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], trk->R, m, sc->z, sc->cluster,
+        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], R, set_r(trk), m, sc->z, sc->cluster,
                             sc->beta_n, p->split_dv, dt, late ? KNOWN_LATE_OFFSETS : 1u,
                             MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, &lk) == 0) {
             lik = lk;

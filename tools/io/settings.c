@@ -806,8 +806,8 @@ static int check_params(const sctx *c)
     case MTT_ERR_UNSUPPORTED:
         if (bad != NULL && strcmp(bad, "measurement") == 0) {
             mtt_io_error_key(c->file, bad, "measurement = polar needs a build with MTT_WITH_MEAS_COV (the "
-                             "float and double host builds; not the fixed-point or firmware builds) and "
-                             "split = false (docs/FIXED_POINT.md §5)");
+                             "float and double host builds; not the fixed-point or firmware builds) "
+                             "(docs/FIXED_POINT.md §5)");
             return MTT_IO_EINPUT;
         }
         if (bad != NULL && strcmp(bad, "split") == 0) {

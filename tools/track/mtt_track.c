@@ -389,6 +389,13 @@ static int run(const options *o)
         rc = EXIT_INPUT;
         goto done;
     }
+    if (det.has_range_rate && settings.params.split) {
+        mtt_io_error_key(o->config, "split",
+                         "split = true takes no range rates (docs/ALGORITHMS.md §14.3): %s has a range_rate "
+                         "column; drop it or set \"split\": false", o->detections);
+        rc = EXIT_INPUT;
+        goto done;
+    }
     if (det.has_range_rate && !(settings.params.range_rate_sigma > 0)) {
         mtt_io_error_key(o->config, "range_rate_sigma",
                          "missing: %s has range rates, which need their standard deviation (length/time)",
@@ -436,7 +443,7 @@ static int run(const options *o)
         if (st == MTT_ERR_UNSUPPORTED && det.cov != NULL) {
             mtt_io_error_at(o->detections, sc->line, "r_xx",
                             "scan %lu: a covariance per detection is not available here (a build without "
-                            "MTT_WITH_MEAS_COV, or split = true): leave r_xx,r_xy,r_yy empty or drop the columns",
+                            "MTT_WITH_MEAS_COV): leave r_xx,r_xy,r_yy empty or drop the columns",
                             sc->scan);
             rc = EXIT_INPUT;
             goto done;

@@ -67,13 +67,15 @@ def test_bad_cov_raises_and_changes_nothing():
     assert trk._core.state_bytes() == before
 
 
-def test_split_refuses_a_cov():
+def test_split_takes_a_cov():
+    """split = true takes each detection's covariance (ALGORITHMS.md section 14.3): the
+    seeded track moves less towards a detection whose own R is 100 times meas_sigma's."""
     s = dict(SETTINGS, motion="imm", split=True, association="lm-ihpda")
-    s.pop("initial_tracks")
-    trk = mtt.Tracker(s)
-    with pytest.raises(ValueError, match="not available"):
-        trk.step(1.0, [[1.0, 1.0]], [[2.0, 0.0, 2.0]])
-    trk.step(1.0, [[1.0, 1.0]], [[0.0, 0.0, 0.0]])  # zeros: meas_sigma's, accepted
+    a, b = mtt.Tracker(s), mtt.Tracker(s)
+    xa = a.step(1.0, [[6.0, 0.0]], [[0.0, 0.0, 0.0]])[0].state[0]  # zeros: meas_sigma's
+    xb = b.step(1.0, [[6.0, 0.0]], [[100.0, 0.0, 100.0]])[0].state[0]
+    assert xa > 1.0
+    assert 0.0 < xb < 0.5 * xa
 
 
 def test_stonesoup_takes_each_detections_measurement_model():

@@ -135,6 +135,23 @@ def test_polar_step_with_range_rate():
     assert no_sigma.time is None
 
 
+def test_split_takes_polar_but_no_range_rate():
+    """split = true tracks polar detections (ALGORITHMS.md section 14.3) and refuses range rates."""
+    s = dict(SETTINGS_RR, motion="imm", split=True,
+             imm_models=[{"model": "cv", "process_psd": 1.0}, {"model": "ca", "process_psd": 50.0}],
+             imm_transition=[[0.95, 0.05], [0.1, 0.9]], imm_initial=[0.9, 0.1])
+    zs, truth = scene()
+    trk = mtt.Tracker(s)
+    for k, z in enumerate(zs):
+        conf = [t for t in trk.step(float(k), z) if t.confirmed]
+    assert len(conf) == 1
+    assert np.hypot(*(conf[0].state[:2] - truth[-1])) < 30.0
+    zr, _ = scene_rr()
+    with pytest.raises(ValueError, match="split = true does not take"):
+        trk.step(100.0, zr[0])
+    assert trk.time == 39.0
+
+
 def test_stonesoup_takes_bearing_range_rate_detections():
     try:
         from stonesoup.models.measurement.nonlinear import CartesianToBearingRangeRate

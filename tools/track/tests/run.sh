@@ -373,6 +373,27 @@ polar_range_rate_valid)
     awk -F, '$1 == 11 && $4 == "confirmed" && ($7 - 1) ^ 2 + $8 ^ 2 < 0.04 { ok = 1 } END { exit !ok }' "$out" ||
         fail "the confirmed track's velocity at scan 11 is not (1, 0)"
     ;;
+polar_split)
+    # polar detections with split = true (ALGORITHMS.md §14.3): the split
+    # modes take each converted detection's own R; p_split in every row
+    polar_ok polar_split polar
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "p_split") c = i; next }
+             !c || $c == "" || $c < 0 || $c > 1 { exit 1 }' "$out" ||
+        fail "a row without a split probability in [0, 1]"
+    ;;
+polar_split_modes)
+    # a polar target that splits (polar_split.det.csv): the split modes run
+    # on the converted detections' own R, P(split) of track 0 >= 0.9 at scan 14
+    rm -f "$out"
+    run --config "$data/polar_split.json" --detections "$data/polar_split.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "p_split") c = i; next }
+             $1 == 14 && $3 == 0 && $c >= 0.9 { ok = 1 } END { exit !ok }' "$out" ||
+        fail "track 0 without P(split) >= 0.9 at scan 14"
+    ;;
+det_polar_split_range_rate)
+    expect_fail 2 "polar_split.json: key 'split': split = true takes no range rates" \
+        "$data/polar_split.json" "$data/polar_rr.det.csv" ;;
 det_polar_cartesian_settings)
     # the header names the form, the settings must agree
     expect_fail 2 "polar.det.csv:3: field 'range': the header is the polar (range,bearing) form but" \
