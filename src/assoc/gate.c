@@ -211,12 +211,28 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
 }
 #endif /* MTT_REAL_FIXED */
 
+/* The fixed-point build's likelihoods are ratios to the clutter density:
+ * own_p takes the frame's gate factors gc (mtt_fx_gate_consts) there. */
+#ifdef MTT_REAL_FIXED
+#define GC_PARAM , const int32_t gc[4]
+#define GC_ARG , gc
+#else
+#define GC_PARAM
+#define GC_ARG
+#endif
+
 /* d^2 of a detection against the track's CV prediction, with its own R
  * when it has one (ALGORITHMS.md §3.1; +inf when that S is not positive
  * definite), else the track's S^-1. */
 static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+    if (ms->has_R) {
+        mtt_d2 d2;
+        (void)trk;
+        return (mtt_meas_gauss_fx(tf->Pp, ms->R, NULL, dx, dy, &d2, NULL) == 0) ? d2 : MTT_FX_MAX;
+    }
+#elif MTT_WITH_MEAS_COV
     if (ms->has_R) {
         mtt_real d2, p;
         return (mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, dx, dy, &d2, &p) == 0) ? d2 : MTT_REAL_MAX;
@@ -229,9 +245,17 @@ static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_msto
 }
 
 /* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4), d2 its own_d2. */
-static mtt_real own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2)
+static mtt_ratio own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_ratio peak,
+                       mtt_d2 d2 GC_PARAM)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+    if (ms->has_R) {
+        mtt_ratio p = 0;
+        (void)trk;
+        (void)mtt_meas_gauss_fx(tf->Pp, ms->R, gc, MTT_SUBS(ms->x, tf->xp[0]), MTT_SUBS(ms->y, tf->xp[1]), &d2, &p);
+        return p;
+    }
+#elif MTT_WITH_MEAS_COV
     if (ms->has_R) {
         mtt_real p;
         (void)mtt_meas_gauss(tf->Pp[0], tf->Pp[1], ms->R, trk->par.pg, ms->x - tf->xp[0], ms->y - tf->xp[1], &d2, &p);
@@ -241,9 +265,30 @@ static mtt_real own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mst
     (void)trk;
     (void)ms;
     (void)tf;
+#ifdef MTT_REAL_FIXED
+    (void)gc;
+#endif
 #endif
     return MTT_GATE_LIK(peak, d2);
 }
+
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+/* The slice half-width w along k (0: x, 2: y) for the widest own R: that
+ * of S with dr (variance format, the largest own r_kk less R_kk) added. */
+static mtt_pos own_width(mtt_d2 gamma, const mtt_real S[MTT_SYM_SLOTS], mtt_real dr, int k, mtt_pos w)
+{
+    mtt_real Sk[MTT_SYM_SLOTS];
+    int c;
+    if (!(dr > 0)) {
+        return w;
+    }
+    for (c = 0; c < MTT_SYM_SLOTS; ++c) {
+        Sk[c] = S[c];
+    }
+    Sk[k] = MTT_ADDS(S[k], MTT_AT(dr, -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
+    return MTT_GATE_WIDTH(gamma, Sk, k);
+}
+#endif
 
 static int less_pair(const void *a, const void *b, const void *ctx)
 {
@@ -349,7 +394,15 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+        if (trk->n_own_r > 0u) {
+            /* detections with a wider R of their own: the window reaches
+             * sqrt(gamma (S_xx - R_xx + r_xx)) (§3.1), an upper bound as
+             * MTT_GATE_WIDTH's (no polar detections in this build) */
+            wx = own_width(gamma, tf->S, trk->own_rmax[0] - trk->R[0], 0, wx);
+            wy = own_width(gamma, tf->S, trk->own_rmax[1] - trk->R[2], 2, wy);
+        }
+#elif MTT_WITH_MEAS_COV
         if (trk->n_own_r > 0u) {
             /* detections with a wider R of their own: the window reaches
              * sqrt(gamma (S_xx - R_xx + r_xx)) <= w + sqrt(gamma (r_xx - R_xx)) (§3.1) */
@@ -378,7 +431,7 @@ void mtt_gate_frame(mtt_tracker *trk)
             if (!(d2 <= gamma)) {
                 continue;
             }
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
             /* its range rate outside the gate (ALGORITHMS.md §3.2); an IMM
              * track's models gate it in mtt_imm_model_d2, a union */
             if (meas[j].has_rdot && !IMM_TRACK && !(mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[j]) > MTT_R(0.0))) {
@@ -421,11 +474,11 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.meas = cm[a];
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
-            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
+            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a] GC_ARG);
 #else
-            np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a]);
+            np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a] GC_ARG);
 #endif
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
             if (meas[cm[a]].has_rdot && !IMM_TRACK) {
                 np.p *= mtt_polar_rdot_lik(trk, tf->xp, &tf->Pp[0][0], &meas[cm[a]]); /* its range rate (§3.2) */
             }
