@@ -25,7 +25,14 @@
 #define MTT_FX_GATE_FRAC 24
 #endif
 
-/* The firmware switches (IMM, baselines, contest, split, a covariance per
- * detection all 0) are mtt/config.h's defaults under MTT_REAL_FIXED. */
+/* A radar's detections carry their own covariance (ALGORITHMS.md §3.1):
+ * the Cartesian r_xx, r_xy, r_yy in the variance format
+ * (docs/FIXED_POINT.md §5); polar detections stay out of this build.  The
+ * other firmware switches (IMM, baselines, contest, split all 0) are
+ * mtt/config.h's defaults under MTT_REAL_FIXED, and the firmware
+ * configurations (configs/firmware.h) keep MTT_WITH_MEAS_COV 0. */
+#ifndef MTT_WITH_MEAS_COV
+#define MTT_WITH_MEAS_COV 1
+#endif
 
 #endif /* MTT_CONFIGS_FIRMWARE_FIXED_RADAR_H */

@@ -230,7 +230,9 @@
 /* A covariance per detection (mtt_tracker_step_cov, ALGORITHMS.md §3.1): 1
  * builds it (the host default); with 0 the tracker refuses a detection that
  * carries one (MTT_ERR_UNSUPPORTED), and every detection has meas_sigma's R.
- * The firmware configurations and the fixed-point build leave it out. */
+ * The firmware configurations leave it out; the fixed-point build holds
+ * the Cartesian covariance (docs/FIXED_POINT.md §5) when it is set to 1
+ * (configs/firmware_fixed_radar.h). */
 #ifndef MTT_WITH_MEAS_COV
 #ifdef MTT_REAL_FIXED
 #define MTT_WITH_MEAS_COV 0
@@ -241,8 +243,14 @@
 #if MTT_WITH_MEAS_COV != 0 && MTT_WITH_MEAS_COV != 1
 #error "MTT_WITH_MEAS_COV must be 0 or 1"
 #endif
-#if defined(MTT_REAL_FIXED) && MTT_WITH_MEAS_COV
-#error "MTT_REAL_FIXED does not hold a covariance per detection yet: MTT_WITH_MEAS_COV must be 0"
+/* Polar detections (ALGORITHMS.md §3.2), derived, not configurable: they
+ * need the covariance per detection, and the fixed-point build has no
+ * polar conversion (its trigonometry and range rate), so there they stay
+ * refused (measurement = polar is MTT_ERR_UNSUPPORTED). */
+#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
+#define MTT_WITH_POLAR 1
+#else
+#define MTT_WITH_POLAR 0
 #endif
 
 #if defined(MTT_REAL_FIXED) && (MTT_WITH_IMM || MTT_WITH_BASELINES || MTT_WITH_CONTEST || MTT_WITH_SPLIT)

@@ -563,7 +563,7 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step(mtt_tracker *trk, mtt_real time,
  *  @return as mtt_tracker_step; MTT_ERR_UNSUPPORTED, before anything is
  *          written, when a cov[i] is nonzero and the build has no
  *          MTT_WITH_MEAS_COV (the firmware configurations, the fixed-point
- *          build); MTT_ERR_UNSUPPORTED
+ *          build at its default scale); MTT_ERR_UNSUPPORTED
  *          (this and mtt_tracker_step) when its measurement is polar. */
 MTT_MUST_CHECK mtt_status mtt_tracker_step_cov(mtt_tracker *trk, mtt_real time, const mtt_meas *meas,
                                                const mtt_meas_cov *cov, size_t n);
@@ -596,7 +596,8 @@ MTT_MUST_CHECK mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time
  *  @return MTT_OK; MTT_ERR_NULL; MTT_ERR_VALUE if det's range is not finite
  *          and > 0, its bearing not finite, a sigma not finite and > 0, or
  *          the result not finite; MTT_ERR_UNSUPPORTED without
- *          MTT_WITH_MEAS_COV.  On error m and cov are unchanged. */
+ *          MTT_WITH_MEAS_COV and in the fixed-point build (MTT_WITH_POLAR
+ *          0).  On error m and cov are unchanged. */
 MTT_MUST_CHECK mtt_status mtt_polar_to_cartesian(const mtt_real sigma[2], const mtt_real sensor[2],
                                                  const mtt_polar *det, mtt_meas *m, mtt_meas_cov *cov);
 

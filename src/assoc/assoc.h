@@ -16,7 +16,7 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg); /* p = N
  * track frame's pair range, S, gate area, has_all_amp, and the CSR lists of
  * pairs per measurement.  Needs trk->tf[].xp/Pp/S/Si/det_s/valid. */
 void mtt_gate_frame(mtt_tracker *trk);
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
 /* A detection with its own R against the prediction xp, Pp (rows of
  * MTT_MAX_STATE): d^2, and p = N / PG times its range rate's ratio
  * (ALGORITHMS.md §3.1, §3.2); MTT_REAL_MAX and p = 0 when S is not

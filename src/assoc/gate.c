@@ -211,7 +211,24 @@ mtt_real mtt_gate_likelihood(mtt_real d2, mtt_real det_s, mtt_real pg)
 }
 #endif /* MTT_REAL_FIXED */
 
-#if MTT_WITH_MEAS_COV
+/* A detection's own R in float and double: its likelihood is kept from
+ * the gate test (mtt_gate_own); in the fixed-point build (no polar, no
+ * range rate) it is formed for each gated pair as a ratio to the clutter
+ * density, and own_p takes the frame's gate factors gc (mtt_fx_gate_consts). */
+#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
+#define OWN_R_FLOAT 1
+#else
+#define OWN_R_FLOAT 0
+#endif
+#ifdef MTT_REAL_FIXED
+#define GC_PARAM , const int32_t gc[4]
+#define GC_ARG , gc
+#else
+#define GC_PARAM
+#define GC_ARG
+#endif
+
+#if OWN_R_FLOAT
 mtt_real mtt_gate_own(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_mstore *ms,
                       mtt_real *p)
 {
@@ -233,10 +250,17 @@ mtt_real mtt_gate_own(const mtt_tracker *trk, const mtt_real *xp, const mtt_real
 /* d^2 of a detection against the track's CV prediction: with its own R
  * when it has one (then *p gets its likelihood, mtt_gate_own), else the
  * track's S^-1 (the likelihood from d^2 and the track's peak, own_p). */
-static mtt_d2 own_d2(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy,
+static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_pos dx, mtt_pos dy,
                      mtt_real *p)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+    (void)trk;
+    if (ms->has_R) {
+        mtt_d2 d2;
+        *p = MTT_ZERO;
+        return (mtt_meas_gauss_fx(tf->Pp, ms->R, NULL, dx, dy, &d2, NULL) == 0) ? d2 : MTT_FX_MAX;
+    }
+#elif MTT_WITH_MEAS_COV
     if (ms->has_R) {
         return mtt_gate_own(trk, tf->xp, &tf->Pp[0][0], ms, p);
     }
@@ -248,20 +272,54 @@ static mtt_d2 own_d2(const mtt_tracker *trk, const mtt_track_frame *tf, const mt
     return mtt_mahal2(tf->Si, dx, dy);
 }
 
-/* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4): own_d2's for
- * its own R, else from d2 its own_d2. */
-static mtt_real own_p(const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2, mtt_real p)
+/* Its gate-normalised likelihood N / PG (ALGORITHMS.md §4): for its own R
+ * p, own_d2's (fixed point: formed here), else from d2 its own_d2. */
+static mtt_ratio own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_mstore *ms, mtt_ratio peak, mtt_d2 d2,
+                       mtt_real p GC_PARAM)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+    (void)trk;
+    (void)p;
+    if (ms->has_R) {
+        mtt_ratio pf = 0;
+        (void)mtt_meas_gauss_fx(tf->Pp, ms->R, gc, MTT_SUBS(ms->x, tf->xp[0]), MTT_SUBS(ms->y, tf->xp[1]), &d2, &pf);
+        return pf;
+    }
+#elif MTT_WITH_MEAS_COV
+    (void)trk;
+    (void)tf;
     if (ms->has_R) {
         return p;
     }
 #else
+    (void)trk;
+    (void)tf;
     (void)ms;
     (void)p;
+#ifdef MTT_REAL_FIXED
+    (void)gc;
+#endif
 #endif
     return MTT_GATE_LIK(peak, d2);
 }
+
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+/* The slice half-width w along k (0: x, 2: y) for the widest own R: that
+ * of S with dr (variance format, the largest own r_kk less R_kk) added. */
+static mtt_pos own_width(mtt_d2 gamma, const mtt_real S[MTT_SYM_SLOTS], mtt_real dr, int k, mtt_pos w)
+{
+    mtt_real Sk[MTT_SYM_SLOTS];
+    int c;
+    if (!(dr > 0)) {
+        return w;
+    }
+    for (c = 0; c < MTT_SYM_SLOTS; ++c) {
+        Sk[c] = S[c];
+    }
+    Sk[k] = MTT_ADDS(S[k], MTT_AT(dr, -MTT_FX_VAR_FRAC, MTT_SYM_E(S)));
+    return MTT_GATE_WIDTH(gamma, Sk, k);
+}
+#endif
 
 static int less_pair(const void *a, const void *b, const void *ctx)
 {
@@ -309,7 +367,7 @@ static void push_pair(mtt_tracker *trk, mtt_pair *pairs, const mtt_pair *np, int
     }
 }
 
-#if MTT_WITH_MEAS_COV
+#if OWN_R_FLOAT
 void mtt_gate_own_widen(const mtt_tracker *trk, mtt_real gamma, mtt_real *wx, mtt_real *wy)
 {
     if (trk->n_own_r > 0u) {
@@ -336,11 +394,11 @@ void mtt_gate_frame(mtt_tracker *trk)
     uint16_t *mp_first = trk->mp_first;
     uint16_t cm[MTT_MAX_GATED];
     mtt_d2 cd[MTT_MAX_GATED];
-#if MTT_WITH_MEAS_COV
+#if OWN_R_FLOAT
     mtt_real cp[MTT_MAX_GATED]; /* own R: each one's likelihood, from its gate test */
 #define CP_SET(k, v) (cp[k] = (v))
 #define CP_GET(k) cp[k]
-#else /* no own R: the likelihood from d^2 (the firmware's stack and text as they were) */
+#else /* the likelihood from d^2 (the firmware's stack and text as they were) or formed per pair */
 #define CP_SET(k, v) ((void)0)
 #define CP_GET(k) MTT_ZERO
 #endif
@@ -388,7 +446,15 @@ void mtt_gate_frame(mtt_tracker *trk)
             mtt_imm_gate_window(trk, i, &wx, &wy);
         }
 #endif
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+        if (trk->n_own_r > 0u) {
+            /* detections with a wider R of their own: the window reaches
+             * sqrt(gamma (S_xx - R_xx + r_xx)) (§3.1), an upper bound as
+             * MTT_GATE_WIDTH's (no polar detections in this build) */
+            wx = own_width(gamma, tf->S, trk->own_rmax[0] - trk->R[0], 0, wx);
+            wy = own_width(gamma, tf->S, trk->own_rmax[1] - trk->R[2], 2, wy);
+        }
+#elif MTT_WITH_MEAS_COV
         mtt_gate_own_widen(trk, gamma, &wx, &wy);
 #endif
         for (j = lower_bound_x(meas, n, MTT_SUBS(zx, wx)); j < n; ++j) {
@@ -453,9 +519,9 @@ void mtt_gate_frame(mtt_tracker *trk)
             np.meas = cm[a];
 #if MTT_WITH_IMM
             /* IMM: the model-mixed likelihood p* (ALGORITHMS.md §14.2) */
-            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(&meas[cm[a]], peak, cd[a], CP_GET(a));
+            np.p = imm ? mtt_imm_gate_p(trk, i, &meas[cm[a]]) : own_p(trk, tf, &meas[cm[a]], peak, cd[a], CP_GET(a) GC_ARG);
 #else
-            np.p = own_p(&meas[cm[a]], peak, cd[a], CP_GET(a));
+            np.p = own_p(trk, tf, &meas[cm[a]], peak, cd[a], CP_GET(a) GC_ARG);
 #endif
             np.w = MTT_ZERO;
             np.lam = MTT_ZERO;

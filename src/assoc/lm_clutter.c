@@ -30,7 +30,7 @@ mtt_ratio mtt_clutter_estimate(uint16_t m, mtt_prob pd, mtt_prob pg, mtt_prob ex
     return MTT_DIV_CG(MTT_SUB(MTT_CNT(m), MTT_MUL_PC(MTT_MUL_PP(pd, pg), ex_pred)), vg);
 }
 
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
 /* Polar detections, known density lam per unit range x bearing (§3.2):
  * pair.lam = lam / r_j, tf->lambda = lam / r^ at the predicted range, and
  * with lm the w_j of pass 1 from Pt = PD PG P^ (p_j r_j) / sum (p_l r_l),
@@ -79,7 +79,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
 #if MTT_WITH_CONTEST
     const int amp = MTT_CONTEST_ON(trk);
 #endif
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     const int polar = trk->par.measurement == MTT_MEASUREMENT_POLAR;
 #endif
     uint16_t i, k;
@@ -95,7 +95,7 @@ void mtt_clutter_frame(mtt_tracker *trk, int lm)
         if (!(lam > MTT_ZERO)) {
             lam = mtt_clutter_estimate(tf->pair_count, trk->par.pd, trk->par.pg, tf->ex_pred, tf->vg);
         }
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
         if (polar && trk->par.clutter_density > MTT_ZERO) {
 #if MTT_WITH_CONTEST
             polar_lambda(trk, tf, lam, amp, lm);

@@ -172,7 +172,7 @@ void mtt_initiate_frame(mtt_tracker *trk, mtt_real dt)
                     continue;
                 }
                 mtt_motion_birth(pa, b, dt, trk->R, trk->par.vmax, x, P);
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
                 if (b->has_rdot) {
                     /* the radial velocity from b's range rate (ALGORITHMS.md §3.2) */
                     mtt_polar_rdot_update(MTT_STATE_N, trk->par.sensor_xy, b->rr, x, P);

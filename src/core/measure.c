@@ -13,8 +13,10 @@
  *
  * A detection with its own covariance (a nonzero cov[i] of
  * mtt_tracker_step_cov) keeps it when it is finite and positive definite,
- * else it is skipped and counted as bad; a build without MTT_WITH_MEAS_COV
- * never sees one (the step refuses it).
+ * else it is skipped and counted as bad (in the fixed-point build one
+ * with a value outside the variance format, saturated, counted in
+ * meas_out_of_range); a build without MTT_WITH_MEAS_COV never sees one
+ * (the step refuses it).
  *
  * The kept ones are stored in the canonical order (x, y, amplitude, own
  * covariance; the input index only between equal detections), so every later stage, births
@@ -29,6 +31,8 @@ typedef struct frame_in {
     const mtt_meas *m;
 #if MTT_WITH_MEAS_COV
     const mtt_meas_cov *cov;
+#endif
+#if MTT_WITH_POLAR
     const mtt_polar *pol;
     const mtt_params *par;
     const mtt_mstore *st; /* polar, once converted: the store the sort's indices point into */
@@ -40,6 +44,9 @@ static int has_cov(const mtt_meas_cov *c)
 {
     return c != NULL && (c->r_xx != MTT_ZERO || c->r_xy != MTT_ZERO || c->r_yy != MTT_ZERO);
 }
+#endif
+
+#if MTT_WITH_POLAR
 
 /* Polar detection i as the Cartesian detection and covariance it is
  * stored as; 0, or -1 when it does not convert (malformed). */
@@ -93,7 +100,7 @@ static int cmp_value(const mtt_meas *a, const mtt_meas_cov *ca, const mtt_meas *
     return 0;
 }
 
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
 /* Polar detections equal once converted: by range, bearing, range rate. */
 static int polar_tie(const mtt_polar *a, const mtt_polar *b)
 {
@@ -133,7 +140,7 @@ static void stored_get(const mtt_mstore *s, mtt_meas *m, mtt_meas_cov *c)
 static int before(const frame_in *in, uint32_t i, uint32_t j)
 {
     int c;
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     if (in->pol != NULL) {
         mtt_meas a = {0}, b = {0};
         mtt_meas_cov ca = {0}, cb = {0}; /* written by polar_get: meas_skip converted them */
@@ -153,6 +160,8 @@ static int before(const frame_in *in, uint32_t i, uint32_t j)
         }
         return (c != 0) ? (c < 0) : (si < sj);
     }
+#endif
+#if MTT_WITH_MEAS_COV
     c = cmp_value(&in->m[i], (in->cov != NULL) ? &in->cov[i] : NULL, &in->m[j],
                   (in->cov != NULL) ? &in->cov[j] : NULL);
 #else
@@ -166,7 +175,7 @@ static int stronger(const frame_in *in, uint32_t i, uint32_t j)
 {
     int hi, hj;
     mtt_real ai, aj;
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     if (in->pol != NULL) {
         hi = in->pol[i].has_amplitude;
         hj = in->pol[j].has_amplitude;
@@ -230,7 +239,19 @@ static int meas_skip(const mtt_meas *m, const mtt_meas_cov *c)
     if (!MTT_POS_OK(m->x) || !MTT_POS_OK(m->y)) {
         return SKIP_RANGE;
     }
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+    if (has_cov(c)) {
+        /* the variance format (Q MTT_FX_VAR_FRAC): a saturated value did
+         * not fit it, out of range (never wrapped, docs/FIXED_POINT.md §5) */
+        if (!(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy))) {
+            return SKIP_RANGE;
+        }
+        if (!(c->r_xx > MTT_ZERO && c->r_yy > MTT_ZERO &&
+              (int64_t)c->r_xx * c->r_yy > (int64_t)c->r_xy * c->r_xy)) {
+            return SKIP_BAD; /* not a covariance */
+        }
+    }
+#elif MTT_WITH_MEAS_COV
     if (has_cov(c) && !(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy) &&
                         c->r_xx > MTT_ZERO && c->r_yy > MTT_ZERO && c->r_xx * c->r_yy > c->r_xy * c->r_xy)) {
         return SKIP_BAD; /* not a covariance */
@@ -269,7 +290,7 @@ static void store_meas(mtt_mstore *s, const mtt_meas *m, const mtt_meas_cov *c, 
  * and covariance it is stored with (polar: converted, §3.2). */
 static int frame_get(const frame_in *in, size_t i, mtt_meas *m, mtt_meas_cov *c)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     if (in->pol != NULL) {
         if (polar_get(in, (uint32_t)i, m, c) != 0 ||
             (in->pol[i].has_range_rate && !mtt_isfinite(in->pol[i].range_rate))) {
@@ -290,7 +311,7 @@ static int frame_get(const frame_in *in, size_t i, mtt_meas *m, mtt_meas_cov *c)
     return meas_skip(m, c);
 }
 
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
 /* Polar: the kept detections (input indices in trk->sel) in the store,
  * converted once (when none gave way to the cap, as the selection stored
  * them; else here), sorted by their stored values and put in the canonical
@@ -337,8 +358,11 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
                         size_t n)
 {
     uint32_t *const sel = trk->sel; /* in a local: a large field offset (a firmware's .text) */
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     const frame_in in = {meas, cov, pol, &trk->par, NULL};
+#elif MTT_WITH_MEAS_COV
+    const frame_in in = {meas, cov};
+    (void)pol;
 #else
     const frame_in in = {meas};
     (void)pol;
@@ -356,7 +380,7 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
         }
         ++valid;
         if (kept < MTT_MAX_MEAS) {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
             if (pol != NULL) {
                 store_meas(&trk->meas[kept], &mi, &ci, (uint32_t)i); /* converted once */
             }
@@ -374,7 +398,7 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
         }
     }
     trk->stats.last.meas_dropped = valid - kept;
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     if (pol != NULL) {
         polar_store_sorted(trk, &in, kept, valid == kept);
     } else
@@ -388,7 +412,7 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
     trk->own_rmax[1] = MTT_ZERO;
 #endif
     for (i = 0; i < kept; ++i) {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
         const uint32_t src = (pol != NULL) ? trk->meas[i].src : sel[i];
         if (pol == NULL) {
             (void)frame_get(&in, src, &mi, &ci);
@@ -398,14 +422,22 @@ void mtt_measure_select(mtt_tracker *trk, const mtt_meas *meas, const mtt_meas_c
         trk->meas[i].has_rdot = (uint8_t)(pol != NULL && pol[src].has_range_rate);
         trk->meas[i].rr[0] = trk->meas[i].has_rdot ? pol[src].range_rate : MTT_ZERO;
         trk->meas[i].rr[1] = trk->meas[i].has_rdot ? trk->par.range_rate_sigma * trk->par.range_rate_sigma : MTT_ZERO;
+#else
+        (void)frame_get(&in, sel[i], &mi, &ci);
+        store_meas(&trk->meas[i], &mi, &ci, sel[i]);
+#if MTT_WITH_MEAS_COV
+        trk->meas[i].rng = MTT_ZERO;
+        trk->meas[i].has_rdot = 0; /* no polar detections in this build (§3.2) */
+        trk->meas[i].rr[0] = MTT_ZERO;
+        trk->meas[i].rr[1] = MTT_ZERO;
+#endif
+#endif
+#if MTT_WITH_MEAS_COV
         if (trk->meas[i].has_R) {
             trk->n_own_r++;
             trk->own_rmax[0] = (trk->meas[i].R[0] > trk->own_rmax[0]) ? trk->meas[i].R[0] : trk->own_rmax[0];
             trk->own_rmax[1] = (trk->meas[i].R[2] > trk->own_rmax[1]) ? trk->meas[i].R[2] : trk->own_rmax[1];
         }
-#else
-        (void)frame_get(&in, sel[i], &mi, &ci);
-        store_meas(&trk->meas[i], &mi, &ci, sel[i]);
 #endif
     }
     trk->n_meas = (uint16_t)kept;
@@ -423,7 +455,11 @@ uint16_t mtt_meas_row_r(mtt_tracker *trk, uint16_t first, uint16_t m)
     for (i = 0; i < m; ++i) {
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
         trk->row.rj[i] = mtt_meas_r(trk, ms);
+#if MTT_WITH_POLAR
         trk->row.rr[i] = ms->has_rdot ? ms->rr : NULL;
+#else
+        trk->row.rr[i] = NULL;
+#endif
         own = (uint16_t)(own + ms->has_R);
     }
     return own;

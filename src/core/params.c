@@ -321,7 +321,7 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
             st = MTT_ERR_UNSUPPORTED;
         }
     }
-    if (bad == NULL && p->measurement == MTT_MEASUREMENT_POLAR && !MTT_WITH_MEAS_COV) {
+    if (bad == NULL && p->measurement == MTT_MEASUREMENT_POLAR && !MTT_WITH_POLAR) {
         /* polar detections carry their own covariance (ALGORITHMS.md
          * §3.2), which the fixed-point and firmware builds do not hold */
         bad = "measurement";

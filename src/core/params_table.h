@@ -141,7 +141,7 @@ extern const char *const mtt_model_names[3];
     REAL("meas_sigma", meas_sigma, 2, 1e-9, 1e9, 0, NULL, SENSOR,                                    \
          "measurement noise standard deviations [σx, σy]; R = diag(σx², σy²); with measurement polar [σ_range (length), σ_bearing (radians)] (§3.2)") \
     ENUM("measurement", measurement, mtt_measurement, 2, mtt_measurement_names, SENSOR,                     \
-         "form of the detections: cartesian (x, y) or polar (range, bearing from sensor_xy), converted with their own covariance (§3.2); polar needs a build with MTT_WITH_MEAS_COV") \
+         "form of the detections: cartesian (x, y) or polar (range, bearing from sensor_xy), converted with their own covariance (§3.2); polar needs a float or double build with MTT_WITH_MEAS_COV") \
     REAL("sensor_xy", sensor_xy, 2, -MTT_REAL_MAX, MTT_REAL_MAX, 0, NULL, SENSOR,                            \
          "with measurement polar: the sensor's position [x, y]; bearing = atan2(y − y_s, x − x_s) (§3.2)") \
     REAL("range_rate_sigma", range_rate_sigma, 1, 0.0, MTT_REAL_MAX, 0, NULL, SENSOR,                         \

@@ -177,7 +177,7 @@ mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_pol
     if (st != MTT_OK) {
         return st;
     }
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     if (trk->par.measurement != MTT_MEASUREMENT_POLAR) {
         return MTT_ERR_UNSUPPORTED; /* polar detections need polar settings (§3.2) */
     }

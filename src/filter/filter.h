@@ -35,7 +35,7 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 void mtt_kalman_pda(const mtt_state xp, mtt_cov Pp, mtt_real K[][2], const mtt_real Si[MTT_SYM_SLOTS],
                     const mtt_real R[3], uint16_t m, mtt_real nu[][2], const mtt_real beta[],
                     mtt_real beta0, mtt_state x, mtt_cov P);
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
 /* ---- polar.c: polar detections (ALGORITHMS.md §3.2) ---- */
 /* R of a detection at range r, bearing cos c, sin s, sigma = [sr, sb]. */
 void mtt_polar_cov(const mtt_real sigma[2], mtt_real r, mtt_real c, mtt_real s, mtt_real R[3]);
@@ -57,11 +57,22 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mt
 /* The extended Kalman update of x (n states, x y vx vy first) with the
  * range rate rr[0] of variance rr[1], linearised at x, Joseph form. */
 void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P);
+#endif
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+/* A detection with covariance R against the prediction Pp (a block):
+ * d2 = nu' S^-1 nu (Q24), and when gc (mtt_fx_gate_consts) is not NULL
+ * p = N(nu; 0, S) / (PG lambda) (Q16), S = Pp_pos + R; -1 when S is not
+ * positive definite. */
+int mtt_meas_gauss_fx(mtt_cov Pp, const mtt_real R[3], const int32_t *gc, mtt_pos nx, mtt_pos ny, mtt_d2 *d2,
+                      mtt_ratio *p);
+#elif MTT_WITH_MEAS_COV
 /* A detection with covariance R against a prediction whose covariance has
  * the rows p0, p1 (ALGORITHMS.md §3.1): d2 = nu' S^-1 nu and p = N(nu; 0,
  * S) / PG, S = Pp_pos + R (into S); -1 when S is not positive definite. */
 int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
                    mtt_real ny, mtt_real *d2, mtt_real *p, mtt_real S[3]);
+#endif
+#if MTT_WITH_MEAS_COV
 /* The PDA update of an n-state prediction with a covariance Rj[j] per
  * detection (§3.1); d is scratch for m corrections. */
 /* rr (may be NULL): each detection's range rate and variance or NULL, an

@@ -46,16 +46,11 @@ void mtt_kalman_predict(mtt_real dt, mtt_real sw, const mtt_state x, mtt_cov P, 
     mtt_kalman_predict_q(dt, Q, x, P, xp, Pp);
 }
 
-/* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
- * build without IMM, so the firmware code is the fixed-size one. */
-static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
-                   mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2])
+/* S = Pp_pos + R, S^-1 and det S; 0, or -1 when S is not positive definite. */
+static int innov_s(mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS], mtt_real Si[MTT_SYM_SLOTS],
+                   mtt_real *det)
 {
     mtt_real d;
-    int i;
-    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
-        return -1; /* not a model of motion.h (folded away for a constant n) */
-    }
     /* Fixed point: Pp and R (Q16) meet at S's exponent (mtt/real.h). */
     MTT_S_EXP(Pp, R, S);
     S[0] = MTT_ADD(MTT_AT(Pp[0][0], MTT_COV_E(Pp), MTT_SYM_E(S)),
@@ -72,6 +67,21 @@ static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SL
     *det = d;
     MTT_SI_EXP(Si, S, d);
     MTT_SI_SET(Si, S, d); /* adj(S) / det S */
+    return 0;
+}
+
+/* The n-state bodies: one caller with a constant n (MTT_STATE_N) in a
+ * build without IMM, so the firmware code is the fixed-size one. */
+static int innov_n(int n, mtt_cov Pp, const mtt_real R[3], mtt_real S[MTT_SYM_SLOTS],
+                   mtt_real Si[MTT_SYM_SLOTS], mtt_real *det, mtt_real K[][2])
+{
+    int i;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return -1; /* not a model of motion.h (folded away for a constant n) */
+    }
+    if (innov_s(Pp, R, S, Si, det) != 0) {
+        return -1;
+    }
     for (i = 0; i < n; ++i) {
         K[i][0] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[0]), MTT_MUL_K(Pp[i][1], Si[1]));
         K[i][1] = MTT_ADD(MTT_MUL_K(Pp[i][0], Si[1]), MTT_MUL_K(Pp[i][1], Si[2]));
@@ -574,7 +584,169 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 }
 #endif
 
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
+int mtt_meas_gauss_fx(mtt_cov Pp, const mtt_real R[3], const int32_t *gc, mtt_pos nx, mtt_pos ny, mtt_d2 *d2,
+                      mtt_ratio *p)
+{
+    mtt_real S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det;
+    mtt_ratio peak;
+    if (innov_s(Pp, R, S, Si, &det) != 0) {
+        return -1;
+    }
+    *d2 = MTT_MAHAL2(Si, nx, ny);
+    if (gc != NULL) {
+        (void)mtt_fx_gate_area_peak_c(gc, det, S, &peak); /* the track's own area stays its tf->vg */
+        *p = MTT_GATE_LIK(peak, *d2);
+    }
+    return 0;
+}
+
+#define MULQ(a, b) mtt_fx_mulq30((a), (b))
+
+/* round(v / 2^s) of an int64 (s >= 0; 0 beyond 62 bits). */
+static int64_t shr64(int64_t v, int s)
+{
+    if (s <= 0) {
+        return v;
+    }
+    return (s > 62) ? 0 : ((v + ((int64_t)1 << (s - 1))) >> s);
+}
+
+/* The float text's mixture below (ALGORITHMS.md §3.1) in block floating
+ * point: each single-detection update is pda_n's with its own R_j (its P_j
+ * a block with its own exponent); beta0 Pp + sum beta_j P_j accumulates in
+ * int64 at 28 bits below the largest block's exponent seen so far (each
+ * term below 2^56, the beta-weighted sum below 2^57), the spread of the d_j
+ * at the exponent of the d_j normalised to 28 bits (each product below
+ * 2^56, the weighted sum below 2^57), and the two meet one bit above the
+ * larger exponent before P is rounded back to 28-bit mantissas.  Fixed
+ * point has no polar detections, so rr and sensor are unused (NULL). */
+void mtt_kalman_pda_each(int n, const mtt_state xp, mtt_cov Pp, const mtt_real *const Rj[],
+                         const mtt_real *const rr[], const mtt_real sensor[2], uint16_t m,
+                         mtt_real nu[][2], const mtt_real beta[], mtt_real beta0, mtt_real d[][MTT_MAX_STATE],
+                         mtt_state x, mtt_cov P)
+{
+    mtt_cov Pj;
+    mtt_state xj;
+    mtt_real S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det, K[MTT_MAX_STATE][2], c[MTT_MAX_STATE];
+    int64_t acc[MTT_MAX_STATE][MTT_MAX_STATE], sp[MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_prob bsum = 0, b0 = beta0;
+    const mtt_real one[1] = {MTT_P(1.0)};
+    uint32_t u = 0u;
+    uint16_t j;
+    int i, k, ea, es, e, sh;
+    (void)rr;
+    (void)sensor;
+    if (n < MTT_MEAS_DIM || n > MTT_MAX_STATE) {
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        c[i] = 0;
+    }
+    for (j = 0; j < m; ++j) {
+        if (innov_n(n, Pp, Rj[j], S, Si, &det, K) != 0) {
+            b0 += beta[j]; /* as the float text: its weight goes to the prediction */
+        }
+        bsum += beta[j];
+    }
+    /* beta0' Pp first: its mantissas below 2^28 at eP, so at ea = eP - 28 below 2^56 */
+    ea = MTT_COV_E(Pp) - 28;
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            acc[i][k] = (int64_t)MULQ(b0, Pp[i][k]) << 28;
+        }
+    }
+    for (j = 0; j < m; ++j) {
+        int ej;
+        for (i = 0; i < n; ++i) {
+            d[j][i] = 0;
+        }
+        if (innov_n(n, Pp, Rj[j], S, Si, &det, K) != 0) {
+            continue;
+        }
+        pda_n(n, xp, Pp, K, Si, Rj[j], 1, &nu[j], one, 0, xj, Pj);
+        ej = MTT_COV_E(Pj) - 28;
+        if (ej > ea) { /* a larger block: the sum moves to its exponent */
+            for (i = 0; i < n; ++i) {
+                for (k = i; k < n; ++k) {
+                    acc[i][k] = shr64(acc[i][k], ej - ea);
+                }
+            }
+            ea = ej;
+        }
+        for (i = 0; i < n; ++i) {
+            d[j][i] = MTT_SUBS(xj[i], xp[i]);
+            c[i] = MTT_ADDS(c[i], MULQ(beta[j], d[j][i]));
+            for (k = i; k < n; ++k) {
+                const int64_t t = MULQ(beta[j], Pj[i][k]);
+                acc[i][k] += (ej - ea + 28 >= 0) ? (t * ((int64_t)1 << (ej - ea + 28))) : shr64(t, ea - ej - 28);
+            }
+        }
+    }
+    bsum = MTT_P(1.0) - bsum + (b0 - beta0); /* the weight of c c' (float: 1 - sum of the valid betas) */
+    /* the spread: d_j - c and c (bsum's term) on 28 bits, exponent es */
+    for (i = 0; i < n; ++i) {
+        x[i] = MTT_ADDS(xp[i], c[i]);
+        u |= (uint32_t)((c[i] < 0) ? -c[i] : c[i]);
+        for (j = 0; j < m; ++j) {
+            const int32_t v = MTT_SUBS(d[j][i], c[i]);
+            u |= (uint32_t)((v < 0) ? -v : v);
+        }
+    }
+    sh = 28 - (32 - mtt_fx_clz(u)); /* u = 0: no spread */
+    es = -2 * (MTT_FX_POS_FRAC + sh);
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            sp[i][k] = 0;
+        }
+    }
+    for (j = 0; j <= m && u != 0u; ++j) {
+        int32_t vn[MTT_MAX_STATE];
+        const mtt_prob b = (j < m) ? beta[j] : bsum;
+        if (!(b > 0)) {
+            continue;
+        }
+        for (i = 0; i < n; ++i) {
+            vn[i] = mtt_fx_shift((j < m) ? MTT_SUBS(d[j][i], c[i]) : c[i], sh);
+        }
+        for (i = 0; i < n; ++i) {
+            const int64_t bv = MULQ(b, vn[i]);
+            for (k = i; k < n; ++k) {
+                sp[i][k] += bv * vn[k];
+            }
+        }
+    }
+    /* the two sums at one exponent e, one bit above the larger (below
+     * 2^58), then 28-bit mantissas */
+    e = ((ea > es) ? ea : es) + 1;
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            acc[i][k] = shr64(acc[i][k], e - ea) + shr64(sp[i][k], e - es);
+        }
+    }
+    sh = 0;
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            const int64_t a = (acc[i][k] < 0) ? -acc[i][k] : acc[i][k];
+            int b = 0;
+            while (b < 63 && (a >> b) != 0) {
+                ++b;
+            }
+            sh = (b - 28 > sh) ? b - 28 : sh;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        for (k = i; k < n; ++k) {
+            const int32_t v = (int32_t)shr64(acc[i][k], sh);
+            P[i][k] = v;
+            P[k][i] = v;
+        }
+    }
+    MTT_COV_E(P) = e + sh;
+    MTT_COV_NORM(P);
+}
+#undef MULQ
+#elif MTT_WITH_MEAS_COV
 int mtt_meas_gauss(const mtt_real *p0, const mtt_real *p1, const mtt_real R[3], mtt_real pg, mtt_real nx,
                    mtt_real ny, mtt_real *d2, mtt_real *p, mtt_real S[3])
 {

@@ -219,7 +219,8 @@ void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, con
     x[1] = b->y;
     x[2] = MTT_DIV_T(MTT_SUBS(b->x, a->x), dt);
     x[3] = MTT_DIV_T(MTT_SUBS(b->y, a->y), dt);
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
+    /* fixed point: a birth takes meas_sigma's R (docs/FIXED_POINT.md §5) */
     if (a->has_R || b->has_R) {
         two_point_cov2(a->has_R ? a->R : R, b->has_R ? b->R : R, dt, P);
         cap_velocity(P, vmax);

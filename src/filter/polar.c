@@ -6,11 +6,12 @@
  * covariance at a track's predicted position, which gives the track's S
  * (its gate, V_G) under polar detections; a range rate's gate test and its
  * extended Kalman update of the radial velocity; and the public conversion.
- * Only with MTT_WITH_MEAS_COV (the float and double builds): a converted
- * detection is one with its own covariance (§3.1). */
+ * Only with MTT_WITH_POLAR (MTT_WITH_MEAS_COV in the float and double
+ * builds; the fixed-point build has none): a converted detection is one
+ * with its own covariance (§3.1). */
 #include "mtt_internal.h"
 
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
 
 /* R of a detection at range r, bearing cos c, sin s (ALGORITHMS.md §3.2):
  * with u = sigma_b^2, A = 1 - e^{-2u}, B = e^u - 1 - A,
@@ -180,13 +181,13 @@ void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2]
     }
 }
 
-#endif /* MTT_WITH_MEAS_COV */
+#endif /* MTT_WITH_POLAR */
 
 mtt_status mtt_polar_to_cartesian(const mtt_real sigma[2], const mtt_real sensor[2], const mtt_polar *det,
                                   /* cppcheck-suppress constParameter ; outputs where the build converts */
                                   mtt_meas *m, mtt_meas_cov *cov)
 {
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
     mtt_real x, y, R[3];
     if (sigma == NULL || sensor == NULL || det == NULL || m == NULL || cov == NULL) {
         return MTT_ERR_NULL;

@@ -62,7 +62,7 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
             continue;
         }
 #endif
-#if MTT_WITH_MEAS_COV
+#if MTT_WITH_POLAR
         {
             mtt_real Rt[3]; /* polar: R at the predicted position (ALGORITHMS.md §3.2) */
             tf->valid = (uint8_t)(mtt_state_finite(tf->xp) &&

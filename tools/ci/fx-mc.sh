@@ -32,6 +32,7 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
+. tools/ci/fx_build.sh
 RUNS="${1:-200}"
 shift || true
 SCENARIOS=("$@")
@@ -45,9 +46,7 @@ if [[ "${FX_MC_SCALE:-default}" == radar ]]; then
   OUT="$ROOT/build/fx-mc-radar"
   declare -A BIN=([float]="$ROOT/build/fx-float-radar/tools/track/mtt-track"
     [fixed]="$ROOT/build/host-fixed-radar/tools/track/mtt-track")
-  cmake --preset host-float -B "$ROOT/build/fx-float-radar" -DMTT_CONFIG_HEADER="$ROOT/configs/firmware_fixed_radar.h" \
-    -DMTT_BUILD_TESTS=OFF -DMTT_BUILD_FUZZ=OFF -DMTT_INSTALL=OFF >/dev/null
-  cmake --build "$ROOT/build/fx-float-radar" -j2 --target mtt-track >/dev/null
+  fx_float_radar "$ROOT"
 else
   declare -A BIN=([float]="$ROOT/build/fx-float/tools/track/mtt-track" [fixed]="$ROOT/build/host-fixed/tools/track/mtt-track")
   cmake --preset host-float-small -B "$ROOT/build/fx-float" -DMTT_BUILD_TOOLS=ON -DMTT_BUILD_TESTS=OFF \

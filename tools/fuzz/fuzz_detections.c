@@ -137,15 +137,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 FUZZ_FAIL("fuzz_detections", "detection %zu: coordinate not finite", j);
             if (m->has_amplitude && (!mtt_isfinite(m->amplitude) || !(m->amplitude >= MTT_R(0.0))))
                 FUZZ_FAIL("fuzz_detections", "detection %zu: bad amplitude accepted", j);
-#ifndef MTT_REAL_FIXED
-            if (d.cov != NULL) { /* all 0, or a finite positive definite covariance */
+            if (d.cov != NULL) { /* all 0, or a finite positive definite covariance (fixed: inside the variance format) */
                 const mtt_meas_cov *c = &d.cov[j];
-                const int zero = c->r_xx == MTT_R(0.0) && c->r_xy == MTT_R(0.0) && c->r_yy == MTT_R(0.0);
+                const int zero = c->r_xx == MTT_ZERO && c->r_xy == MTT_ZERO && c->r_yy == MTT_ZERO;
                 if (!zero && !(mtt_isfinite(c->r_xx) && mtt_isfinite(c->r_xy) && mtt_isfinite(c->r_yy) &&
-                               c->r_xx > MTT_R(0.0) && c->r_yy > MTT_R(0.0)))
+                               c->r_xx > MTT_ZERO && c->r_yy > MTT_ZERO))
                     FUZZ_FAIL("fuzz_detections", "detection %zu: bad covariance accepted", j);
             }
-#endif
         }
     }
     if (next != d.n_meas)

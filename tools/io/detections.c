@@ -158,8 +158,13 @@ void mtt_io_free_detections(mtt_io_detections *d)
 }
 
 /* A row's covariance columns (ALGORITHMS.md §3.1): all three empty (the
- * settings' meas_sigma), or a finite positive definite r_xx, r_xy, r_yy. */
-static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
+ * settings' meas_sigma), or a finite positive definite r_xx, r_xy, r_yy.
+ * Fixed point: in the variance format (MTT_IO_VAR); one that does not fit
+ * it (beyond its range, or a variance that rounds to 0) is an error, or
+ * with MTT_IO_SKIP_OUT_OF_RANGE counted in *out_of_range (when not NULL)
+ * and kept saturated, which the tracker skips and counts in
+ * meas_out_of_range (docs/FIXED_POINT.md §5). */
+static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r, unsigned flags, size_t *out_of_range)
 {
     double v[3];
     int k, rc, n_empty = 0;
@@ -193,9 +198,39 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r)
                         c->fields[COL_RXY]);
         return MTT_IO_EINPUT;
     }
+#ifdef MTT_REAL_FIXED
+    {
+        mtt_real q[3];
+        int fits = 1;
+        for (k = 0; k < 3; ++k)
+            fits &= mtt_io_to_real(v[k], MTT_IO_VAR, &q[k]) != 0;
+        if (!fits || !(q[0] > 0) || !(q[2] > 0)) {
+            char hi[32], lo[32];
+            if ((flags & MTT_IO_SKIP_OUT_OF_RANGE) == 0u) {
+                mtt_io_format_double(mtt_io_from_real(MTT_FX_MAX - 1, MTT_IO_VAR), hi, sizeof hi);
+                mtt_io_format_double(mtt_io_from_real(1, MTT_IO_VAR), lo, sizeof lo);
+                mtt_io_error_at(c->path, c->line, "r_xx",
+                                "the covariance (%s, %s, %s) is outside this build's variance format "
+                                "(mtt_real=" MTT_IO_REAL_NAME ", Q%d: |r| <= %s, r_xx and r_yy >= %s; "
+                                "--skip-out-of-range skips and counts such detections)",
+                                c->fields[COL_RXX], c->fields[COL_RXY], c->fields[COL_RYY], MTT_IO_VAR, hi, lo);
+                return MTT_IO_EINPUT;
+            }
+            if (out_of_range != NULL)
+                ++*out_of_range; /* one per detection */
+            q[0] = MTT_FX_MAX; /* saturated: measure.c skips and counts it */
+        }
+        r->r_xx = q[0];
+        r->r_xy = q[1];
+        r->r_yy = q[2];
+    }
+#else
+    (void)flags;
+    (void)out_of_range;
     r->r_xx = (mtt_real)v[0];
     r->r_xy = (mtt_real)v[1];
     r->r_yy = (mtt_real)v[2];
+#endif
     return MTT_IO_OK;
 }
 
@@ -274,7 +309,7 @@ static int det_row(mtt_io_detections *d, const mtt_io_csv *c, int *scan_has_empt
         }
     }
     memset(&r, 0, sizeof r);
-    if (!c->polar_form && ncols == N_COLS_COV && (rc = cov_fields(c, empty, &r)) != MTT_IO_OK)
+    if (!c->polar_form && ncols == N_COLS_COV && (rc = cov_fields(c, empty, &r, flags, oor != 0 ? NULL : &oor)) != MTT_IO_OK)
         return rc;
     if (c->polar_form && ncols > N_COLS && c->fields[N_COLS][0] != '\0') {
         /* a range rate (ALGORITHMS.md §3.2) */

@@ -805,7 +805,7 @@ static int check_params(const sctx *c)
         return MTT_IO_EINPUT;
     case MTT_ERR_UNSUPPORTED:
         if (bad != NULL && strcmp(bad, "measurement") == 0) {
-            mtt_io_error_key(c->file, bad, "measurement = polar needs a build with MTT_WITH_MEAS_COV (the "
+            mtt_io_error_key(c->file, bad, "measurement = polar needs a floating-point build with MTT_WITH_MEAS_COV (the "
                              "float and double host builds; not the fixed-point or firmware builds) "
                              "(docs/FIXED_POINT.md §5)");
             return MTT_IO_EINPUT;

@@ -54,7 +54,7 @@ static const char usage_text[] =
     "  --confirmed-only    write confirmed tracks only\n"
     "  --stats             print a summary of the tracker's counters to stderr\n"
     "  --skip-out-of-range a detection outside this build's range (fixed point:\n"
-    "                      the position and amplitude formats) is skipped and\n"
+    "                      position, amplitude, variance formats) is skipped and\n"
     "                      counted, the count printed on stderr; without it the\n"
     "                      first one is an error naming its line, value and range\n"
     "  --help              print this help and exit\n"

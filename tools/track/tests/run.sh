@@ -143,7 +143,8 @@ confirmed_near() {
 }
 
 # polar_ok CFG DET: CFG.json on DET.det.csv (valid.det.csv's target seen
-# from (0, 0)) runs cleanly with a confirmed track on the target at scan 11.
+# from (0, 0), or with its own covariances) runs cleanly with a confirmed
+# track on the target at scan 11.
 polar_ok() {
     rm -f "$out"
     run --config "$data/$1.json" --detections "$data/$2.det.csv" --tracks "$out"
@@ -355,6 +356,28 @@ valid_cov_empty)
     [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
     cmp -s "$out" "$work/a.csv" || fail "tracks differ from valid.det.csv's"
     ;;
+cov_valid)
+    # a covariance per detection (ALGORITHMS.md §3.1; fixed point: the
+    # radar scale's build, docs/FIXED_POINT.md §5): read and tracked
+    polar_ok valid valid_cov
+    run --config "$data/valid.json" --detections "$data/valid.det.csv" --tracks "$work/a.csv"
+    [ "$rc" -eq 0 ] || fail "exit code $rc on valid.det.csv"
+    ! cmp -s "$out" "$work/a.csv" || fail "the own covariances changed nothing"
+    ;;
+cov_unsupported)
+    # a build without MTT_WITH_MEAS_COV (the fixed point's default scale, the firmware configuration)
+    expect_fail 2 "valid_cov.det.csv:5: field 'r_xx': scan 0: a covariance per detection is not available here" \
+        "$data/valid.json" "$data/valid_cov.det.csv" ;;
+det_cov_out_of_range)
+    expect_fail 2 "det_cov_out_of_range.det.csv:16: field 'r_xx': the covariance (1e9, 0, 0.05) is outside this build's variance format" \
+        "$data/valid.json" "$data/det_cov_out_of_range.det.csv"
+    stderr_has "--skip-out-of-range skips"
+    run --config "$data/valid.json" --detections "$data/det_cov_out_of_range.det.csv" --tracks "$out" \
+        --skip-out-of-range --stats
+    [ "$rc" -eq 0 ] || fail "exit code $rc with --skip-out-of-range, expected 0"
+    stderr_has "det_cov_out_of_range.det.csv: 1 detections outside this build's range skipped (1 counted by the tracker, meas_out_of_range)"
+    stderr_has " 0 bad (skipped)"
+    ;;
 
 polar_valid)
     # polar detections (ALGORITHMS.md §3.2): valid.det.csv seen from (0, 0)
@@ -402,7 +425,7 @@ det_cartesian_polar_settings)
     expect_fail 2 "valid.det.csv:4: field 'x': the header is the Cartesian (x,y) form but" \
         "$data/polar.json" "$data/valid.det.csv" ;;
 cfg_polar_unsupported)  # values inside both fixed-point scales' formats, so that the refusal is the first error
-                        expect_fail 2 "polar_fixed.json: key 'measurement': measurement = polar needs a build with MTT_WITH_MEAS_COV" \
+                        expect_fail 2 "polar_fixed.json: key 'measurement': measurement = polar needs a floating-point build with MTT_WITH_MEAS_COV" \
                             "$data/polar_fixed.json" "$data/polar.det.csv" ;;
 
 # ---- bad settings ------------------------------------------------------------
