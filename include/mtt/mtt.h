@@ -121,8 +121,9 @@ typedef enum mtt_model_kind {
 /** Form of the detections (docs/FORMATS.md `measurement`, ALGORITHMS.md §3.2). */
 typedef enum mtt_measurement {
     MTT_MEASUREMENT_CARTESIAN = 0, /**< x, y (mtt_tracker_step, mtt_tracker_step_cov) */
-    MTT_MEASUREMENT_POLAR = 1      /**< range, bearing from sensor_xy (mtt_tracker_step_polar); needs
-                                        MTT_WITH_MEAS_COV, else MTT_ERR_UNSUPPORTED */
+    MTT_MEASUREMENT_POLAR = 1      /**< range, bearing from sensor_xy (mtt_tracker_step_polar); needs a
+                                        float or double build with MTT_WITH_MEAS_COV, else
+                                        MTT_ERR_UNSUPPORTED */
 } mtt_measurement;
 
 /** Initial (two-point) velocity gate (ALGORITHMS.md §12.1, §12.2). */
