@@ -20,7 +20,8 @@
 #             built too so that the cli tests run it;
 #             cli.cfg_unsupported_association is left out there (it expects
 #             the jpda baseline, which this configuration leaves out), and so
-#             are the cli cases that track polar detections (they need
+#             are the cli cases that track polar detections or detections
+#             with a covariance of their own (cli.cov_valid; they need
 #             MTT_WITH_MEAS_COV, 0 there)
 #
 # The double build is not measured here: its tests, the differential test
@@ -91,7 +92,7 @@ run_config() {
       # Host-tool checks of the full settings table (every key, the IMM
       # keys, a run with split, docs/FORMATS.md's and CONFIGURATION.md's tables) and the
       # baseline-mode refusal case describe the default build, not this one.
-      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|cli\.polar_.*|cli\.det_polar_bad_range|cli\.det_polar_bearing|cli\.det_polar_range_rate|cli\.det_polar_split_range_rate|cli\.det_cartesian_polar_settings|docs\.settings_table|docs\.configuration)$'
+      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|cli\.polar_.*|cli\.det_polar_bad_range|cli\.det_polar_bearing|cli\.det_polar_range_rate|cli\.det_polar_split_range_rate|cli\.det_cartesian_polar_settings|cli\.cov_valid|docs\.settings_table|docs\.configuration)$'
       what="host-float-small: float, configs/firmware.h"
       ;;
   esac
