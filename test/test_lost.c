@@ -1,13 +1,15 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* test_lost.c - the lost-track rule of ALGORITHMS.md §12.4 (track_table.c):
- * a track whose position variance (x or y) exceeds (vmax ΔT)^2 after its
- * update is deleted and counted in deletions, ΔT the longer of this frame's
- * interval and the last one's; terminate_threshold 0 keeps it.  One text for
+ * a track whose position variance (x or y) exceeds (vmax ΔT)^2 + γ R after
+ * its update is deleted and counted in deletions, ΔT the longer of this
+ * frame's interval and the last one's; terminate_threshold 0 keeps it.
+ * meas_sigma is the default 1 (R = 1) and PG 0.999: γ R = 13.82.  One text for
  * float, double and the fixed-point build (MTT_POS / MTT_VAR constants).
  *
  * The track is seeded at (0, 0) with P = diag(a, a, 1, 1) and frames carry
  * no detection, so after a frame of dt its variance is the prediction's,
  * a + dt^2 + q dt^3 / 3 (IPDA with no detection keeps P̄). */
+#include <math.h>
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -30,6 +32,7 @@ static void start(double a, mtt_real terminate)
     p.motion = MTT_MOTION_CV;
     p.process_psd = MTT_VAR(QPSD);
     p.vmax = MTT_POS(VMAX);
+    p.pg = MTT_P(0.999);
     p.initiate = 0;
     p.clutter_density = MTT_DENS(1e-3); /* the fixed build needs a declared density */
     p.terminate_threshold = terminate;
@@ -58,16 +61,18 @@ static uint32_t deletions(void)
     return st.last.deletions;
 }
 
-/* (vmax ΔT)^2 = 100 at dt 1: a = 98 gives 99.01, kept; a = 99.5 gives
- * 100.51, deleted, though its existence (about 0.83) is far above the
- * terminate threshold. */
+/* (vmax ΔT)^2 + γ R = 113.82 at dt 1: a = 112 gives 113.01, kept; a =
+ * 113.5 gives 114.51, deleted, though its existence (about 0.83) is far
+ * above the terminate threshold. */
 static void test_beyond_vmax_dt_is_deleted(void)
 {
-    start(98.0, MTT_P(0.01));
+    const double bound = VMAX * VMAX - 2.0 * log(1.0 - 0.999);
+    TEST_ASSERT_TRUE(112.0 + 1.01 < bound && 113.5 + 1.01 > bound);
+    start(112.0, MTT_P(0.01));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), NULL, 0));
     TEST_ASSERT_EQUAL_UINT(1, count());
     TEST_ASSERT_EQUAL_UINT32(0u, deletions());
-    start(99.5, MTT_P(0.01));
+    start(113.5, MTT_P(0.01));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), NULL, 0));
     TEST_ASSERT_EQUAL_UINT(0, count());
     TEST_ASSERT_EQUAL_UINT32(1u, deletions());
@@ -76,15 +81,15 @@ static void test_beyond_vmax_dt_is_deleted(void)
 /* terminate_threshold 0 never deletes, this rule included. */
 static void test_never_delete_keeps_it(void)
 {
-    start(99.5, MTT_P(0.0));
+    start(113.5, MTT_P(0.0));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(1.0), NULL, 0));
     TEST_ASSERT_EQUAL_UINT(1, count());
 }
 
 /* Interleaved frames: after an interval of 10 a frame 0.5 later bounds at
- * (vmax 10)^2 = 10^4, not (vmax 0.5)^2 = 25.  a = 5000: 5110 after the
+ * (vmax 10)^2 + 13.82, not (vmax 0.5)^2 + 13.82.  a = 5000: 5110 after the
  * first interval, 5121 after the second; kept.  The next frame, 0.5 later
- * again, bounds at 25: deleted. */
+ * again, bounds at 38.82: deleted. */
 static void test_interleaved_frames_use_the_longer_interval(void)
 {
     start(5000.0, MTT_P(0.01));

@@ -486,9 +486,9 @@ class Tracker:
                 self.events["merge"] += 1
 
         # --- 8.3 delete (existence, lost), then confirm (§12.4) ------------------
-        # lost: position variance beyond (vmax dT)^2, dT the longer of this
-        # frame's interval and the last one's; not born this frame; never
-        # with terminate_threshold 0
+        # lost: position variance along x or y beyond (vmax dT)^2 + gamma R,
+        # dT the longer of this frame's interval and the last one's; not born
+        # this frame; never with terminate_threshold 0
         reach = max(dt or 0.0, self.dt_last) * p.vmax
         for tr in self.tracks:
             if tr.dead:
@@ -497,9 +497,11 @@ class Tracker:
             self._tie(f"confirm track {tr.id}", tr.existence, p.confirm_threshold)
             lost = False
             if not tr.born and reach > 0.0 and p.terminate_threshold > 0.0:
-                pv = max(tr.P[0, 0], tr.P[1, 1])
-                self._tie(f"lost track {tr.id}", pv, reach * reach)
-                lost = pv > reach * reach
+                bx = reach * reach + self.gamma * self.R[0, 0]
+                by = reach * reach + self.gamma * self.R[1, 1]
+                self._tie(f"lost track {tr.id} x", tr.P[0, 0], bx)
+                self._tie(f"lost track {tr.id} y", tr.P[1, 1], by)
+                lost = tr.P[0, 0] > bx or tr.P[1, 1] > by
             if tr.existence < p.terminate_threshold or lost:
                 tr.dead = True
                 self.events["delete"] += 1
