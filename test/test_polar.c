@@ -6,8 +6,8 @@
  * order; bad detections counted; the range rate: its extended Kalman
  * update against a double computation with a numerical Jacobian, its gate
  * and likelihood, the birth's radial velocity, a scene where it lowers the
- * velocity error; the refusals (Cartesian settings, polar settings with a
- * Cartesian step, a range rate with split, a range rate without range_rate_sigma, a build
+ * velocity error; the split modes with range rates; the refusals (Cartesian settings, polar settings with a
+ * Cartesian step, a range rate without range_rate_sigma (split too), a build
  * without MTT_WITH_MEAS_COV). */
 #include <math.h>
 #include <string.h>
@@ -308,10 +308,10 @@ static void test_refusals(void)
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 1u));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 0u));
 #if MTT_WITH_SPLIT
-    /* split takes polar detections (§14.3), not their range rates */
+    /* split takes polar detections and their range rates (§14.3); a range
+     * rate without range_rate_sigma stays refused */
     p.motion = MTT_MOTION_IMM;
     p.split = 1;
-    p.range_rate_sigma = MTT_R(0.5);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     {
@@ -320,10 +320,12 @@ static void test_refusals(void)
         dr[1] = pol(200.0, 0.3);
         dr[1].has_range_rate = 1;
         dr[1].range_rate = MTT_R(3.0);
-        TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
         TEST_ASSERT_EQUAL_UINT32(0u, st.total.frames); /* nothing changed */
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 1u));
+        p.range_rate_sigma = MTT_R(0.5);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
         TEST_ASSERT_EQUAL_UINT32(1u, st.total.frames);
     }
@@ -590,6 +592,92 @@ static void test_imm_takes_polar_detections(void)
 #endif
 }
 
+/* The split modes take polar detections with range rates (ALGORITHMS.md
+ * §3.2, §14.3): polar_split.det.csv's scene (tools/track/tests), a target
+ * at (100 + k, 50) seen from (0, 0) that splits from scan 13, its child at
+ * (100 + k, 50 + (k - 12)), here with each detection's range rate u . v
+ * (sigma 0.1): every scan is taken, one child splits off its parent, and
+ * at the end each is within 2 of its target's position and 1 of its
+ * velocity ((1, 0) and (1, 1): the last scan's estimates are about 0.5
+ * off, the noise of sigma 0.3 in range and 0.33 across at 110). */
+#define SPLIT_SCANS 30
+static void test_split_takes_range_rates(void)
+{
+#if MTT_WITH_SPLIT
+    mtt_params p;
+    mtt_stats st;
+    size_t cnt, i;
+    int k, children = 0, parents = 0;
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
+    p.association = MTT_ASSOC_LM_IHPDA;
+    p.measurement = MTT_MEASUREMENT_POLAR;
+    p.sensor_xy[0] = MTT_R(0.0);
+    p.sensor_xy[1] = MTT_R(0.0);
+    p.meas_sigma[0] = MTT_R(0.3);
+    p.meas_sigma[1] = MTT_R(0.003);
+    p.clutter_density = MTT_R(0.01);
+    p.vmax = MTT_R(5.0);
+    p.motion = MTT_MOTION_IMM;
+    p.imm_n_models = 2u;
+    p.imm_model[0] = MTT_MODEL_CV;
+    p.imm_model[1] = MTT_MODEL_CA;
+    p.imm_psd[0] = MTT_R(1.0);
+    p.imm_psd[1] = MTT_R(400.0);
+    p.imm_transition[0][0] = MTT_R(0.95);
+    p.imm_transition[0][1] = MTT_R(0.05);
+    p.imm_transition[1][0] = MTT_R(0.1);
+    p.imm_transition[1][1] = MTT_R(0.9);
+    p.imm_initial[0] = MTT_R(0.9);
+    p.imm_initial[1] = MTT_R(0.1);
+    p.split = 1;
+    p.split_dv = MTT_R(1.0);
+    p.range_rate_sigma = MTT_R(0.1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    rng_state = 3u;
+    for (k = 0; k < SPLIT_SCANS; ++k) {
+        mtt_polar in[2];
+        size_t n = 0;
+        int t;
+        for (t = 0; t < 2; ++t) {
+            const double x = 100.0 + k, y = 50.0 + ((t == 1) ? (double)(k - 12) : 0.0), vy = (t == 1) ? 1.0 : 0.0;
+            const double r = hypot(x, y);
+            if (t == 1 && k < 13) {
+                continue;
+            }
+            in[n] = pol(r + 0.3 * gauss01(), atan2(y, x) + 0.003 * gauss01());
+            in[n].has_range_rate = 1;
+            in[n].range_rate = (mtt_real)((x * 1.0 + y * vy) / r + 0.1 * gauss01());
+            ++n;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, n));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+    TEST_ASSERT_EQUAL_UINT32(1u, st.total.splits);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
+    for (i = 0; i < cnt; ++i) {
+        mtt_track_view v;
+        const double kx = 100.0 + (SPLIT_SCANS - 1);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &v));
+        if (!v.confirmed) {
+            continue;
+        }
+        if (v.parent != MTT_NO_PARENT) {
+            ++children;
+            TEST_ASSERT_TRUE(hypot((double)v.x[0] - kx, (double)v.x[1] - (50.0 + SPLIT_SCANS - 13)) < 2.0);
+            TEST_ASSERT_TRUE(hypot((double)v.x[2] - 1.0, (double)v.x[3] - 1.0) < 1.0);
+        } else {
+            ++parents;
+            TEST_ASSERT_TRUE(hypot((double)v.x[0] - kx, (double)v.x[1] - 50.0) < 2.0);
+            TEST_ASSERT_TRUE(hypot((double)v.x[2] - 1.0, (double)v.x[3]) < 1.0);
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(1, children);
+    TEST_ASSERT_EQUAL_INT(1, parents);
+#else
+    TEST_IGNORE_MESSAGE("no split in this build");
+#endif
+}
+
 /* Under the IMM each model weighs the range rate against its own
  * prediction (ALGORITHMS.md §3.2, §14.2): a seeded track moving radially
  * at 20 from the sensor, one frame later a detection on its predicted
@@ -762,6 +850,7 @@ int main(void)
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
     RUN_TEST(test_imm_takes_polar_detections);
     RUN_TEST(test_imm_models_weigh_the_range_rate);
+    RUN_TEST(test_split_takes_range_rates);
     RUN_TEST(test_polar_order_and_cap);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else

@@ -120,6 +120,26 @@ static const mtt_real *const *set_r(const mtt_tracker *trk)
 #endif
 }
 
+/* The validated set's range rates for split.c (ALGORITHMS.md §3.2), in
+ * rd: NULL when none has one. */
+static const mtt_split_rdot *set_rd(const mtt_tracker *trk, mtt_split_rdot *rd)
+{
+#if MTT_WITH_MEAS_COV
+    if (trk->split_scr.n_rdot == 0u) {
+        return NULL;
+    }
+    rd->rr = trk->split_scr.rr;
+    rd->sensor = trk->par.sensor_xy;
+    rd->gamma = trk->gamma;
+    rd->vmax = trk->par.vmax;
+    return rd;
+#else
+    (void)trk;
+    (void)rd;
+    return NULL;
+#endif
+}
+
 /* Model 6's start: the moment-matched mixture of the split modes' stacked
  * states with weights w[0] (mode 5) and w[1] (mode 6), Σ w = 1. */
 static void mix_stacked(const mtt_split_slot *sl, const mtt_real w[2], mtt_split_state x0,
@@ -204,6 +224,7 @@ static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], 
     int t;
 #if MTT_WITH_MEAS_COV
     sc->n_own = 0;
+    sc->n_rdot = 0;
 #endif
     for (t = 0; t < nt; ++t) {
         wo[t][0] = w[t][0];
@@ -225,6 +246,8 @@ static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], 
 #if MTT_WITH_MEAS_COV
             sc->rz[m] = mtt_meas_r(trk, ms);
             sc->n_own = (uint16_t)(sc->n_own + ms->has_R);
+            sc->rr[m] = ms->has_rdot ? ms->rr : NULL;
+            sc->n_rdot = (uint16_t)(sc->n_rdot + ms->has_rdot);
 #endif
             ++m;
         }
@@ -263,6 +286,8 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     mtt_real(*Q)[MTT_MAX_STATE] = sc->Q6;
     mtt_real d2, Rb[3];
     const mtt_real *R;
+    const mtt_split_rdot *rd;
+    mtt_split_rdot rdb;
     uint16_t m;
     int a;
     *dec = 0;
@@ -279,10 +304,11 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     }
     m = split_candidates(trk, ti, sc->xp, sc->Pp);
     R = track_r(trk, sc->xp, Rb); /* polar: at the parent's predicted position */
-    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, R, set_r(trk), m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
+    rd = set_rd(trk, &rdb);
+    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, R, set_r(trk), rd, m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
                              tf->lambda, &sc->as) != 0 ||
         mtt_split_joint(&sc->as) != 0 ||
-        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, R, set_r(trk), sc->z, sc->x0, sc->P0) != 0) {
+        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, R, set_r(trk), rd, sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
     /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
@@ -318,9 +344,10 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t cm = mtt_params_cv_model(&trk->par);
     mtt_real lik, Rb[3];
+    mtt_split_rdot rdb;
     int a, b;
-    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], track_r(trk, tf->xpm[cm], Rb), set_r(trk), m,
-                       sc->z, sc->beta,
+    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], track_r(trk, tf->xpm[cm], Rb), set_r(trk),
+                       set_rd(trk, &rdb), m, sc->z, sc->beta,
                        MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
         return; /* the impulse then stays in both halves */
     }
@@ -392,6 +419,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real(*P5)[MTT_MAX_STATE] = sc->P5p; /* Q_s, then P̄_cv + Q_s (scratch: not the stack) */
     mtt_real K[MTT_MAX_STATE][2];
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0), Rb[3];
+    mtt_split_rdot rdb;
     const mtt_real *R = track_r(trk, tf->xpm[cm], Rb); /* polar: at the cv prediction */
     const int known = p->split_known_speed && p->split_dv > MTT_R(0.0);
     int late = 0; /* the late look of split_known_speed */
@@ -428,11 +456,14 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     for (j = 0; j < m; ++j) {
 #if MTT_WITH_MEAS_COV
         if (set_r(trk) != NULL) {
-            /* N(z_j; ẑ_5, S_5j) with its own R (§3.1) */
+            /* N(z_j; ẑ_5, S_5j) with its own R (§3.1), times its range
+             * rate's factor (§3.2) */
             mtt_real d2, Sj[3];
             if (mtt_meas_gauss(P5[0], P5[1], sc->rz[j], MTT_R(1.0), sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1],
                                &d2, &sc->beta[j], Sj) != 0) {
                 sc->beta[j] = MTT_R(0.0);
+            } else if (sc->rr[j] != NULL) {
+                sc->beta[j] *= mtt_polar_rdot_lik(trk, tf->xpm[cm], P5[0], Sj, &trk->meas[sc->zi[j]]);
             }
             continue;
         }
@@ -442,7 +473,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (late && m >= 2u) {
         late_centres(trk, ti, m, Si, dt, nx, ny);
     }
-    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, R, set_r(trk), m, sc->z, sc->beta,
+    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, R, set_r(trk), set_rd(trk, &rdb), m, sc->z, sc->beta,
                                  MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
                                  &lik) != 0) {
         return MTT_R(0.0);
@@ -453,7 +484,8 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (known) {
         /* the child's half at the known speed; on failure the impulse's stays */
         mtt_real lk;
-        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], R, set_r(trk), m, sc->z, sc->cluster,
+        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], R, set_r(trk), set_rd(trk, &rdb), m, sc->z,
+                            sc->cluster,
                             sc->beta_n, p->split_dv, dt, late ? KNOWN_LATE_OFFSETS : 1u,
                             MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, &lk) == 0) {
             lik = lk;
