@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "mtt_internal.h"
+#include "tv_assert.h"
 #include "unity.h"
 
 static mtt_tracker ta;
@@ -333,6 +334,62 @@ static void test_refusals(void)
     (void)bad;
 #endif
 }
+
+/* mtt_polar_rdot_step on a stacked state (the split modes', §14.3): a
+ * target block at offset 4 with no cross covariance gets the update of the
+ * block alone (mtt_polar_rdot_update) and the other block is untouched; M
+ * is I - K H; out of range, at the sensor or with a variance that leaves
+ * s <= 0 nothing is done. */
+#define ST (2 * MTT_MAX_STATE)
+static void test_range_rate_step_on_a_block(void)
+{
+    const mtt_real sr[2] = {MTT_R(-100.0), MTT_R(300.0)}, rrv[2] = {MTT_R(4.5), MTT_R(0.25)};
+    const mtt_real bad[2] = {MTT_R(4.5), MTT_R(-1e9)};
+    const double x0[4] = {900.0, 1200.0, 12.0, -7.0};
+    const double P0[4][4] = {{40, 5, 2, 0.5}, {5, 60, -1, 3}, {2, -1, 9, 0.4}, {0.5, 3, 0.4, 7}};
+    mtt_real xs[ST], Ps[ST * ST], M[ST * ST], T[ST * ST], x[MTT_MAX_STATE], xk[ST];
+    mtt_cov P;
+    int i, k;
+    memset(xs, 0, sizeof xs);
+    memset(Ps, 0, sizeof Ps);
+    memset(x, 0, sizeof x);
+    memset(P, 0, sizeof P);
+    for (i = 0; i < 4; ++i) {
+        xs[i] = (mtt_real)(100.0 * (i + 1));
+        x[i] = xs[4 + i] = (mtt_real)x0[i];
+        Ps[i * ST + i] = MTT_R(3.0);
+        for (k = 0; k < 4; ++k) {
+            P[i][k] = Ps[(4 + i) * ST + 4 + k] = (mtt_real)P0[i][k];
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(0, mtt_polar_rdot_step(8, 4, ST, sr, rrv, xs, Ps, M, T));
+    mtt_polar_rdot_update(4, sr, rrv, x, P);
+    for (i = 0; i < 4; ++i) {
+        TV_ASSERT_REAL((double)(100.0 * (i + 1)), xs[i]);
+        TV_ASSERT_REAL((double)x[i], xs[4 + i]);
+        TV_ASSERT_REAL(3.0, Ps[i * ST + i]);
+        TV_ASSERT_REAL(1.0, M[i * ST + i]);
+        for (k = 0; k < 4; ++k) {
+            TV_ASSERT_REAL((double)P[i][k], Ps[(4 + i) * ST + 4 + k]);
+            TEST_ASSERT_TRUE(Ps[i * ST + 4 + k] == MTT_R(0.0) && M[i * ST + 4 + k] == MTT_R(0.0));
+        }
+    }
+    memcpy(xk, xs, sizeof xk);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 5, ST, sr, rrv, xs, Ps, M, T)); /* block beyond n */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(ST + 1, 0, ST + 1, sr, rrv, xs, Ps, M, T));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 0, 4, sr, rrv, xs, Ps, M, T)); /* rows shorter than n */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 4, ST, sr, bad, xs, Ps, M, T)); /* s <= 0 */
+    xs[4] = sr[0];
+    xs[5] = sr[1];
+    xk[4] = sr[0];
+    xk[5] = sr[1];
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 4, ST, sr, rrv, xs, Ps, M, T)); /* at the sensor */
+    TEST_ASSERT_EQUAL_MEMORY(xk, xs, sizeof xs);
+    x[0] = MTT_R(7.0);
+    mtt_polar_rdot_update(3, sr, rrv, x, P); /* fewer than x y vx vy: nothing */
+    TV_ASSERT_REAL(7.0, x[0]);
+}
+#undef ST
 
 /* h(x) = u . v of a state in double. */
 static double rdot_of(const double *x, const double *s)
@@ -845,6 +902,7 @@ int main(void)
     RUN_TEST(test_bad_polar_detections_are_counted);
     RUN_TEST(test_refusals);
     RUN_TEST(test_range_rate_update_is_the_ekf);
+    RUN_TEST(test_range_rate_step_on_a_block);
     RUN_TEST(test_range_rate_gates_and_weighs);
     RUN_TEST(test_birth_takes_the_radial_velocity);
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
