@@ -649,6 +649,38 @@ static void test_imm_takes_polar_detections(void)
 #endif
 }
 
+#if MTT_WITH_SPLIT
+/* tools/track/tests/polar_split.json's settings, range_rate_sigma 0.1,
+ * split on or off. */
+static void split_polar_params(mtt_params *p, int split)
+{
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(p));
+    p->association = MTT_ASSOC_LM_IHPDA;
+    p->measurement = MTT_MEASUREMENT_POLAR;
+    p->sensor_xy[0] = MTT_R(0.0);
+    p->sensor_xy[1] = MTT_R(0.0);
+    p->meas_sigma[0] = MTT_R(0.3);
+    p->meas_sigma[1] = MTT_R(0.003);
+    p->clutter_density = MTT_R(0.01);
+    p->vmax = MTT_R(5.0);
+    p->motion = MTT_MOTION_IMM;
+    p->imm_n_models = 2u;
+    p->imm_model[0] = MTT_MODEL_CV;
+    p->imm_model[1] = MTT_MODEL_CA;
+    p->imm_psd[0] = MTT_R(1.0);
+    p->imm_psd[1] = MTT_R(400.0);
+    p->imm_transition[0][0] = MTT_R(0.95);
+    p->imm_transition[0][1] = MTT_R(0.05);
+    p->imm_transition[1][0] = MTT_R(0.1);
+    p->imm_transition[1][1] = MTT_R(0.9);
+    p->imm_initial[0] = MTT_R(0.9);
+    p->imm_initial[1] = MTT_R(0.1);
+    p->split = split;
+    p->split_dv = MTT_R(1.0);
+    p->range_rate_sigma = MTT_R(0.1);
+}
+#endif
+
 /* The split modes take polar detections with range rates (ALGORITHMS.md
  * §3.2, §14.3): polar_split.det.csv's scene (tools/track/tests), a target
  * at (100 + k, 50) seen from (0, 0) that splits from scan 13, its child at
@@ -665,30 +697,7 @@ static void test_split_takes_range_rates(void)
     mtt_stats st;
     size_t cnt, i;
     int k, children = 0, parents = 0;
-    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(&p));
-    p.association = MTT_ASSOC_LM_IHPDA;
-    p.measurement = MTT_MEASUREMENT_POLAR;
-    p.sensor_xy[0] = MTT_R(0.0);
-    p.sensor_xy[1] = MTT_R(0.0);
-    p.meas_sigma[0] = MTT_R(0.3);
-    p.meas_sigma[1] = MTT_R(0.003);
-    p.clutter_density = MTT_R(0.01);
-    p.vmax = MTT_R(5.0);
-    p.motion = MTT_MOTION_IMM;
-    p.imm_n_models = 2u;
-    p.imm_model[0] = MTT_MODEL_CV;
-    p.imm_model[1] = MTT_MODEL_CA;
-    p.imm_psd[0] = MTT_R(1.0);
-    p.imm_psd[1] = MTT_R(400.0);
-    p.imm_transition[0][0] = MTT_R(0.95);
-    p.imm_transition[0][1] = MTT_R(0.05);
-    p.imm_transition[1][0] = MTT_R(0.1);
-    p.imm_transition[1][1] = MTT_R(0.9);
-    p.imm_initial[0] = MTT_R(0.9);
-    p.imm_initial[1] = MTT_R(0.1);
-    p.split = 1;
-    p.split_dv = MTT_R(1.0);
-    p.range_rate_sigma = MTT_R(0.1);
+    split_polar_params(&p, 1);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     rng_state = 3u;
     for (k = 0; k < SPLIT_SCANS; ++k) {
@@ -730,6 +739,51 @@ static void test_split_takes_range_rates(void)
     }
     TEST_ASSERT_EQUAL_INT(1, children);
     TEST_ASSERT_EQUAL_INT(1, parents);
+#else
+    TEST_IGNORE_MESSAGE("no split in this build");
+#endif
+}
+
+/* Under split a detection with a range rate in a confirmed track's
+ * position gate is left to its split modes even where its range rate is
+ * outside the track's range-rate gate (ALGORITHMS.md §14.3): a seeded
+ * track at (100, 50) moving (1, 0), each scan its detection and one 0.7
+ * from it whose range rate is 10 (100 sigma) off: without split those
+ * start a track (two-point initiation), with split none starts. */
+static void test_split_holds_a_gated_position_with_another_range_rate(void)
+{
+#if MTT_WITH_SPLIT
+    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(1.0), MTT_R(0.0)};
+    const mtt_real P0[16] = {MTT_R(0.1), 0, 0, 0, 0, MTT_R(0.1), 0, 0, 0, 0, MTT_R(0.01), 0, 0, 0, 0, MTT_R(0.01)};
+    int split;
+    for (split = 0; split <= 1; ++split) {
+        mtt_params p;
+        mtt_stats st;
+        uint32_t id;
+        int k;
+        split_polar_params(&p, split);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&ta, x0, P0, &id));
+        for (k = 0; k < 6; ++k) {
+            const double x = 100.0 + k, y = 50.0, r = hypot(x, y);
+            const double x2 = x + 0.5, y2 = y + 0.5, r2 = hypot(x2, y2);
+            mtt_polar in[2];
+            in[0] = pol(r, atan2(y, x));
+            in[0].has_range_rate = 1;
+            in[0].range_rate = (mtt_real)(x / r);
+            in[1] = pol(r2, atan2(y2, x2));
+            in[1].has_range_rate = 1;
+            in[1].range_rate = (mtt_real)(x2 / r2 + 10.0);
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, 2u));
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+        TEST_ASSERT_EQUAL_UINT32(0u, st.total.splits);
+        if (split) {
+            TEST_ASSERT_EQUAL_UINT32(0u, st.total.births);
+        } else {
+            TEST_ASSERT_TRUE(st.total.births >= 1u);
+        }
+    }
 #else
     TEST_IGNORE_MESSAGE("no split in this build");
 #endif
@@ -909,6 +963,7 @@ int main(void)
     RUN_TEST(test_imm_takes_polar_detections);
     RUN_TEST(test_imm_models_weigh_the_range_rate);
     RUN_TEST(test_split_takes_range_rates);
+    RUN_TEST(test_split_holds_a_gated_position_with_another_range_rate);
     RUN_TEST(test_polar_order_and_cap);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else

@@ -73,7 +73,10 @@
  * the validated sets carry each measurement's R (own, or meas_sigma's),
  * which split.c takes when one of them has its own; the windows widen as
  * the gate's (mtt_gate_own_widen), and the track's R is the polar one at
- * the predicted position.  The reported estimate of a track stays
+ * the predicted position; their range rates go with them (split.c), and
+ * a detection with one in a confirmed track's position gate is left to
+ * the split modes, not to initiation, even outside the track's range-rate
+ * gate (hold_rdot).  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
 
@@ -552,6 +555,32 @@ static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
     return 0;
 }
 
+#if MTT_WITH_MEAS_COV
+/* [CHOICE] A detection with a range rate whose position is in confirmed
+ * track ti's gate (any model's, on its own S_j) is left to ti's split
+ * modes, not to initiation: without its range rate the gate would have
+ * taken it (marked used), with it the range-rate gate drops the split's
+ * child, which initiation would then start as a second child beside the
+ * one the split modes decouple (ALGORITHMS.md §14.3). */
+static void hold_rdot(mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t j;
+    uint8_t k;
+    for (j = 0; j < trk->n_meas; ++j) {
+        mtt_mstore *ms = &trk->meas[j];
+        for (k = 0; k < trk->par.imm_n_models && ms->has_rdot && !ms->used; ++k) {
+            mtt_real d2, p, S[3];
+            if (mtt_meas_gauss(tf->Ppm[k][0], tf->Ppm[k][1], ms->R, trk->par.pg, ms->x - tf->xpm[k][0],
+                               ms->y - tf->xpm[k][1], &d2, &p, S) == 0 &&
+                d2 <= trk->gamma) {
+                ms->used = 1;
+            }
+        }
+    }
+}
+#endif
+
 /* The split modes of one confirmed IMM track after its update. */
 static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
@@ -650,6 +679,9 @@ void mtt_split_frame(mtt_tracker *trk, mtt_real dt)
             continue;
         }
         split_track(trk, i, dt);
+#if MTT_WITH_MEAS_COV
+        hold_rdot(trk, i);
+#endif
     }
 }
 
