@@ -214,6 +214,62 @@ static void test_covariance_out_of_range_is_counted(void)
 #endif
     TEST_ASSERT_EQUAL_UINT32(1u, st.last.pairs); /* the one kept: detection 3 */
 }
+
+/* A birth from two detections 4 s apart (ALGORITHMS.md §12.1, §3.1):
+ * position Rb, cross Rb/dt, velocity (Ra + Rb)/dt^2, each from that
+ * detection's own R (meas_sigma's for one without); the velocity rows and
+ * columns scaled by c = vmax / sqrt(max velocity variance) when that
+ * exceeds vmax^2. */
+static void birth_check(const double Ra[3], const double Rb[3], int own_a, int own_b)
+{
+    const double dt = 4.0, vmax = 350.0;
+    const mtt_meas a = sim_meas(POS(100000.0), POS(50000.0), MTT_ZERO, 0);
+    const mtt_meas b = sim_meas(POS(100800.0), POS(50200.0), MTT_ZERO, 0);
+    const mtt_meas_cov ca = {VAR(Ra[0]), VAR(Ra[1]), VAR(Ra[2])}, cb = {VAR(Rb[0]), VAR(Rb[1]), VAR(Rb[2])};
+    mtt_params p;
+    mtt_track_view v;
+    size_t n = 0;
+    double vv, c = 1.0, w[4][4];
+    int i, k;
+    radar_params(&p, MTT_ASSOC_IPDA);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&trk, MTT_TIME(0.0), &a, own_a ? &ca : NULL, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_cov(&trk, MTT_TIME(dt), &b, own_b ? &cb : NULL, 1u));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+    TEST_ASSERT_EQUAL_UINT(1, n);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+    TEST_ASSERT_DOUBLE_WITHIN(TOL_VEL, 200.0, POS_D(v.x[2]));
+    TEST_ASSERT_DOUBLE_WITHIN(TOL_VEL, 50.0, POS_D(v.x[3]));
+    vv = (Ra[0] + Rb[0]) / (dt * dt);
+    vv = ((Ra[2] + Rb[2]) / (dt * dt) > vv) ? (Ra[2] + Rb[2]) / (dt * dt) : vv;
+    if (vv > vmax * vmax) {
+        c = vmax / sqrt(vv);
+    }
+    for (i = 0; i < 2; ++i) {
+        for (k = 0; k < 2; ++k) {
+            w[i][k] = Rb[i + k];
+            w[i][k + 2] = c * Rb[i + k] / dt;
+            w[i + 2][k] = w[i][k + 2];
+            w[i + 2][k + 2] = c * c * (Ra[i + k] + Rb[i + k]) / (dt * dt);
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            TEST_ASSERT_DOUBLE_WITHIN(TOL_VAR * fabs(w[i][k]) + 0.125, w[i][k], VAR_D(v.P[i][k]));
+        }
+    }
+}
+
+static void test_birth_takes_each_detections_r(void)
+{
+    const double Ra[3] = {2500.0, 600.0, 1600.0}, Rb[3] = {10000.0, 3000.0, 6400.0};
+    const double wide_a[3] = {1.2e6, 0.0, 4e5}, wide_b[3] = {1e6, 1e5, 5e5}; /* velocity capped */
+    const double sigma[3] = {2500.0, 0.0, 2500.0};                            /* meas_sigma 50 m */
+    birth_check(Ra, Rb, 1, 1);
+    birth_check(wide_a, wide_b, 1, 1);
+    birth_check(Ra, sigma, 1, 0);
+    birth_check(sigma, Rb, 0, 1);
+}
 #else /* MTT_WITH_MEAS_COV 0 */
 static void test_build_without_it_refuses(void)
 {
@@ -233,6 +289,7 @@ int main(void)
     RUN_TEST(test_own_r_gives_the_float_tracks);
     RUN_TEST(test_wide_own_r_is_gated);
     RUN_TEST(test_covariance_out_of_range_is_counted);
+    RUN_TEST(test_birth_takes_each_detections_r);
 #else
     RUN_TEST(test_build_without_it_refuses);
 #endif

@@ -190,7 +190,7 @@ typedef struct mtt_params {
     mtt_real markov_p21;        /**< existence Markov chain: appears */
     mtt_real existence_init;    /**< existence of a new track */
     mtt_real confirm_threshold; /**< existence that confirms */
-    mtt_real terminate_threshold; /**< existence below which a track goes; 0 never deletes */
+    mtt_real terminate_threshold; /**< existence below which a track goes (and a lost one, §12.4); 0 never deletes */
     mtt_real merge_threshold;   /**< merging test threshold; 0 never merges */
     int initiate;               /**< nonzero: start tracks from unused measurements */
     mtt_real vmax;              /**< length per time */

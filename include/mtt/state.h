@@ -311,6 +311,7 @@ typedef struct mtt_tracker {
     mtt_real R[3];                  /* measurement covariance (sym) */
     mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */
     mtt_real time;
+    mtt_real dt_last;               /* the last frame's interval (ALGORITHMS.md §12.4's lost rule) */
 #if MTT_WITH_CONTEST
     mtt_real q_floor;               /* this frame's lowest process-noise scale (ALGORITHMS.md §2.1) */
     mtt_real nis_mean;              /* E[NIS] of a gated target detection, from PG: set once */

@@ -130,6 +130,7 @@ class Tracker:
         self.H = np.zeros((2, 4))
         self.H[0, 0] = self.H[1, 1] = 1.0
         self.time = None
+        self.dt_last = 0.0
         self.next_id = 0
         self.tracks = []          # ascending id
         self.prev_unused = None   # U_{k-1}: list of (x, y, amp, input index), or None before frame 1
@@ -484,19 +485,29 @@ class Tracker:
                 gone.dead = True
                 self.events["merge"] += 1
 
-        # --- 8.3 delete, then confirm (§12.4) ------------------------------------
+        # --- 8.3 delete (existence, lost), then confirm (§12.4) ------------------
+        # lost: position variance beyond (vmax dT)^2, dT the longer of this
+        # frame's interval and the last one's; not born this frame; never
+        # with terminate_threshold 0
+        reach = max(dt or 0.0, self.dt_last) * p.vmax
         for tr in self.tracks:
             if tr.dead:
                 continue
             self._tie(f"terminate track {tr.id}", tr.existence, p.terminate_threshold)
             self._tie(f"confirm track {tr.id}", tr.existence, p.confirm_threshold)
-            if tr.existence < p.terminate_threshold:
+            lost = False
+            if not tr.born and reach > 0.0 and p.terminate_threshold > 0.0:
+                pv = max(tr.P[0, 0], tr.P[1, 1])
+                self._tie(f"lost track {tr.id}", pv, reach * reach)
+                lost = pv > reach * reach
+            if tr.existence < p.terminate_threshold or lost:
                 tr.dead = True
                 self.events["delete"] += 1
             elif tr.existence >= p.confirm_threshold:
                 self.events["confirm"] += not tr.confirmed
                 tr.confirmed = True
         self.tracks = [tr for tr in self.tracks if not tr.dead]
+        self.dt_last = dt or 0.0
         return self.tracks
 
     # ------------------------------------------------------------------ stages

@@ -66,7 +66,7 @@ uint16_t mtt_meas_row_r(mtt_tracker *trk, uint16_t first, uint16_t m);
 int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real existence,
                      int confirmed, int born);
 /* End of frame: delete, confirm, compact. */
-void mtt_track_manage(mtt_tracker *trk);
+void mtt_track_manage(mtt_tracker *trk, mtt_real dt);
 /* The CV part of P as the API gives it: 4 x 4, in the fixed build in the
  * variance format (MTT_COV_VIEW); P is only read. */
 void mtt_cov_view4(mtt_cov P, mtt_real out[4][4]);

@@ -166,7 +166,8 @@ extern const char *const mtt_model_names[3];
          "a track with existence >= this is confirmed (§12.4)")                                               \
     REAL("terminate_threshold", terminate_threshold, 1, 0.0, 1.0,                                \
          PF_OPEN_HI | PF_BELOW_CONFIRM, "below confirm_threshold", TRACK,                                \
-         "a track with existence < this is deleted; 0 never deletes (§12.4)")                             \
+         "a track with existence < this is deleted, and so is a lost one (position sigma > vmax dT); " \
+         "0 never deletes (§12.4)")                                                                    \
     REAL("merge_threshold", merge_threshold, 1, 0.0, MTT_REAL_MAX, 0, NULL, TRACK,                             \
          "chi-square threshold of the track-merging test; 0 never merges (§12.3)")                        \
     FLAG("initiate", initiate, TRACK,                                                                    \

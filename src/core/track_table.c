@@ -54,8 +54,26 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
 }
 
 /* Delete (numerically invalid, merged away, existence below the terminate
- * threshold), then confirm, then compact in place, keeping the order. */
-void mtt_track_manage(mtt_tracker *trk)
+ * threshold, lost), then confirm, then compact in place, keeping the order. */
+/* Lost (ALGORITHMS.md §12.4 [CHOICE]): a track's position standard
+ * deviation (σ_x or σ_y) beyond vmax ΔT, the farthest a target flies
+ * between frames, ΔT the longer of this frame's interval and the last
+ * one's (interleaved sensors).  Its gate then reaches beyond the two-point
+ * start's, clutter keeps it alive, and a new start does better.  Not for a
+ * track born or seeded this frame (no update yet), nor with
+ * terminate_threshold 0 (never delete). */
+static int lost(const mtt_tracker *trk, const mtt_track *t, mtt_real dt)
+{
+    const mtt_real r = MTT_MUL_T((dt > trk->dt_last) ? dt : trk->dt_last, trk->par.vmax);
+    mtt_real r2;
+    if (!(r > MTT_ZERO) || !(trk->par.terminate_threshold > MTT_ZERO)) {
+        return 0;
+    }
+    r2 = MTT_VAR_OF(r);
+    return MTT_COV_VIEW(t->P, 0, 0) > r2 || MTT_COV_VIEW(t->P, 1, 1) > r2;
+}
+
+void mtt_track_manage(mtt_tracker *trk, mtt_real dt)
 {
     uint16_t i, n = 0;
     for (i = 0; i < trk->n_tracks; ++i) {
@@ -67,7 +85,7 @@ void mtt_track_manage(mtt_tracker *trk)
         if (t->dead) {
             continue; /* merged away, counted in merges */
         }
-        if (t->existence < trk->par.terminate_threshold) {
+        if (t->existence < trk->par.terminate_threshold || (!t->born && lost(trk, t, dt))) {
             trk->stats.last.deletions++;
             continue;
         }

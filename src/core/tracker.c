@@ -263,10 +263,11 @@ static void step_frame(mtt_tracker *trk, mtt_real time, const mtt_meas *meas, co
     charge(trk, MTT_STAGE_INITIATE, &mark);
     mtt_merge_frame(trk);
     charge(trk, MTT_STAGE_MERGE, &mark);
-    mtt_track_manage(trk);
+    mtt_track_manage(trk, dt);
     charge(trk, MTT_STAGE_MANAGE, &mark);
 
     trk->time = time;
+    trk->dt_last = dt;
     trk->have_time = 1;
     add_counts(&trk->stats.total, &trk->stats.last);
 }

@@ -104,24 +104,27 @@ static int cap_factor(const int32_t v[3], int e3, mtt_real vmax, int32_t *cm, in
     return 1;
 }
 
-/* Fixed point (docs/FIXED_POINT.md §2): R (Q16) on 29 bits, 1/dt from dt's
- * mantissa dm in [2^29, 2^30] (dt = dm 2^de): R/dt and 2R/dt^2 are
- * quotients by dm below 2^29 at their own exponents, scaled by c and c^2
- * when vmax > 0 caps them; the three blocks meet at the largest exponent,
- * then P is renormalised. */
-static void two_point_fx(const mtt_real R[3], mtt_real dt, mtt_real vmax, mtt_cov P)
+/* Fixed point (docs/FIXED_POINT.md §2): Ra, Rb (Q16) on 29 bits, 1/dt from
+ * dt's mantissa dm in [2^29, 2^30] (dt = dm 2^de): Rb/dt and (Ra + Rb)/dt^2
+ * are quotients by dm at their own exponents, scaled by c and c^2 when vmax
+ * > 0 caps them; the three blocks meet at the largest exponent, then P is
+ * renormalised.  Ra == Rb (one R): 2R/dt^2 is R/dt^2 at the next exponent,
+ * the text every one-R birth has taken. */
+static void two_point_fx(const mtt_real Ra[3], const mtt_real Rb[3], mtt_real dt, mtt_real vmax, mtt_cov P)
 {
     int32_t r[3], q[3], v[3], cm = 0;
     int de, k, i, j, e1, e2, e3, E, z = 0;
     const int32_t dm = mtt_fx_unpack(dt, MTT_FX_T_FRAC, &de);
-    const int sh = mtt_fx_top_exp(0, mtt_fx_or_abs(R, 3), 29);
+    const int sh = mtt_fx_top_exp(0, mtt_fx_or_abs(Ra, 3) | mtt_fx_or_abs(Rb, 3), 29);
     e1 = -MTT_FX_VAR_FRAC + sh;
     e2 = e1 - de - 29;
-    e3 = e2 - de - 29 + 1; /* the factor 2 */
+    e3 = e2 - de - 29 + ((Ra == Rb) ? 1 : 0); /* the factor 2 of one R */
     for (k = 0; k < 3; ++k) {
-        r[k] = mtt_fx_shift(R[k], -sh);
+        r[k] = mtt_fx_shift(Rb[k], -sh);
         q[k] = mtt_fx_div(r[k], dm, 29);
-        v[k] = mtt_fx_div(q[k], dm, 29);
+        /* Ra + Rb below 2^30: its quotients too */
+        v[k] = (Ra == Rb) ? mtt_fx_div(q[k], dm, 29)
+                          : mtt_fx_div(mtt_fx_div(r[k] + mtt_fx_shift(Ra[k], -sh), dm, 29), dm, 29);
     }
     if (cap_factor(v, e3, vmax, &cm, &z)) {
         for (k = 0; k < 3; ++k) {
@@ -148,12 +151,13 @@ static void two_point_fx(const mtt_real R[3], mtt_real dt, mtt_real vmax, mtt_co
 
 void mtt_motion_two_point_cov(const mtt_real R[3], mtt_real dt, mtt_cov P)
 {
-    two_point_fx(R, dt, 0, P);
+    two_point_fx(R, R, dt, 0, P);
 }
 
 /* the two-point P with its velocity capped at vmax^2 (the float text's
- * [CHOICE] below) */
-#define TWO_POINT_CAPPED(R, dt, vmax, P) two_point_fx((R), (dt), (vmax), (P))
+ * [CHOICE] below), of one R and of two */
+#define TWO_POINT_CAPPED(R, dt, vmax, P) two_point_fx((R), (R), (dt), (vmax), (P))
+#define TWO_POINT_OWN(Ra, Rb, dt, vmax, P) two_point_fx((Ra), (Rb), (dt), (vmax), (P))
 
 #else /* float, double */
 
@@ -210,6 +214,7 @@ static void cap_velocity(mtt_cov P, mtt_real vmax)
 }
 
 #define TWO_POINT_CAPPED(R, dt, vmax, P) (mtt_motion_two_point_cov((R), (dt), (P)), cap_velocity((P), (vmax)))
+#define TWO_POINT_OWN(Ra, Rb, dt, vmax, P) (two_point_cov2((Ra), (Rb), (dt), (P)), cap_velocity((P), (vmax)))
 #endif /* MTT_REAL_FIXED */
 
 void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, const mtt_real R[3],
@@ -219,11 +224,9 @@ void mtt_motion_birth(const mtt_mstore *a, const mtt_mstore *b, mtt_real dt, con
     x[1] = b->y;
     x[2] = MTT_DIV_T(MTT_SUBS(b->x, a->x), dt);
     x[3] = MTT_DIV_T(MTT_SUBS(b->y, a->y), dt);
-#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
-    /* fixed point: a birth takes meas_sigma's R (docs/FIXED_POINT.md §5) */
+#if MTT_WITH_MEAS_COV
     if (a->has_R || b->has_R) {
-        two_point_cov2(a->has_R ? a->R : R, b->has_R ? b->R : R, dt, P);
-        cap_velocity(P, vmax);
+        TWO_POINT_OWN(a->has_R ? a->R : R, b->has_R ? b->R : R, dt, vmax, P);
         return;
     }
 #endif
