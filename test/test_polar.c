@@ -6,13 +6,14 @@
  * order; bad detections counted; the range rate: its extended Kalman
  * update against a double computation with a numerical Jacobian, its gate
  * and likelihood, the birth's radial velocity, a scene where it lowers the
- * velocity error; the refusals (Cartesian settings, polar settings with a
- * Cartesian step, a range rate with split, a range rate without range_rate_sigma, a build
+ * velocity error; the split modes with range rates; the refusals (Cartesian settings, polar settings with a
+ * Cartesian step, a range rate without range_rate_sigma (split too), a build
  * without MTT_WITH_MEAS_COV). */
 #include <math.h>
 #include <string.h>
 
 #include "mtt_internal.h"
+#include "tv_assert.h"
 #include "unity.h"
 
 static mtt_tracker ta;
@@ -308,10 +309,10 @@ static void test_refusals(void)
     TEST_ASSERT_EQUAL_INT(MTT_ERR_NULL, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 1u));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), NULL, 0u));
 #if MTT_WITH_SPLIT
-    /* split takes polar detections (§14.3), not their range rates */
+    /* split takes polar detections and their range rates (§14.3); a range
+     * rate without range_rate_sigma stays refused */
     p.motion = MTT_MOTION_IMM;
     p.split = 1;
-    p.range_rate_sigma = MTT_R(0.5);
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
     {
@@ -320,10 +321,12 @@ static void test_refusals(void)
         dr[1] = pol(200.0, 0.3);
         dr[1].has_range_rate = 1;
         dr[1].range_rate = MTT_R(3.0);
-        TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_PARAM, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
         TEST_ASSERT_EQUAL_UINT32(0u, st.total.frames); /* nothing changed */
-        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 1u));
+        p.range_rate_sigma = MTT_R(0.5);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, MTT_R(0.0), dr, 2u));
         TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
         TEST_ASSERT_EQUAL_UINT32(1u, st.total.frames);
     }
@@ -331,6 +334,62 @@ static void test_refusals(void)
     (void)bad;
 #endif
 }
+
+/* mtt_polar_rdot_step on a stacked state (the split modes', §14.3): a
+ * target block at offset 4 with no cross covariance gets the update of the
+ * block alone (mtt_polar_rdot_update) and the other block is untouched; M
+ * is I - K H; out of range, at the sensor or with a variance that leaves
+ * s <= 0 nothing is done. */
+#define ST (2 * MTT_MAX_STATE)
+static void test_range_rate_step_on_a_block(void)
+{
+    const mtt_real sr[2] = {MTT_R(-100.0), MTT_R(300.0)}, rrv[2] = {MTT_R(4.5), MTT_R(0.25)};
+    const mtt_real bad[2] = {MTT_R(4.5), MTT_R(-1e9)};
+    const double x0[4] = {900.0, 1200.0, 12.0, -7.0};
+    const double P0[4][4] = {{40, 5, 2, 0.5}, {5, 60, -1, 3}, {2, -1, 9, 0.4}, {0.5, 3, 0.4, 7}};
+    mtt_real xs[ST], Ps[ST * ST], M[ST * ST], T[ST * ST], x[MTT_MAX_STATE], xk[ST];
+    mtt_cov P;
+    int i, k;
+    memset(xs, 0, sizeof xs);
+    memset(Ps, 0, sizeof Ps);
+    memset(x, 0, sizeof x);
+    memset(P, 0, sizeof P);
+    for (i = 0; i < 4; ++i) {
+        xs[i] = (mtt_real)(100.0 * (i + 1));
+        x[i] = xs[4 + i] = (mtt_real)x0[i];
+        Ps[i * ST + i] = MTT_R(3.0);
+        for (k = 0; k < 4; ++k) {
+            P[i][k] = Ps[(4 + i) * ST + 4 + k] = (mtt_real)P0[i][k];
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(0, mtt_polar_rdot_step(8, 4, ST, sr, rrv, xs, Ps, M, T));
+    mtt_polar_rdot_update(4, sr, rrv, x, P);
+    for (i = 0; i < 4; ++i) {
+        TV_ASSERT_REAL((double)(100.0 * (i + 1)), xs[i]);
+        TV_ASSERT_REAL((double)x[i], xs[4 + i]);
+        TV_ASSERT_REAL(3.0, Ps[i * ST + i]);
+        TV_ASSERT_REAL(1.0, M[i * ST + i]);
+        for (k = 0; k < 4; ++k) {
+            TV_ASSERT_REAL((double)P[i][k], Ps[(4 + i) * ST + 4 + k]);
+            TEST_ASSERT_TRUE(Ps[i * ST + 4 + k] == MTT_R(0.0) && M[i * ST + 4 + k] == MTT_R(0.0));
+        }
+    }
+    memcpy(xk, xs, sizeof xk);
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 5, ST, sr, rrv, xs, Ps, M, T)); /* block beyond n */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(ST + 1, 0, ST + 1, sr, rrv, xs, Ps, M, T));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 0, 4, sr, rrv, xs, Ps, M, T)); /* rows shorter than n */
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 4, ST, sr, bad, xs, Ps, M, T)); /* s <= 0 */
+    xs[4] = sr[0];
+    xs[5] = sr[1];
+    xk[4] = sr[0];
+    xk[5] = sr[1];
+    TEST_ASSERT_EQUAL_INT(-1, mtt_polar_rdot_step(8, 4, ST, sr, rrv, xs, Ps, M, T)); /* at the sensor */
+    TEST_ASSERT_EQUAL_MEMORY(xk, xs, sizeof xs);
+    x[0] = MTT_R(7.0);
+    mtt_polar_rdot_update(3, sr, rrv, x, P); /* fewer than x y vx vy: nothing */
+    TV_ASSERT_REAL(7.0, x[0]);
+}
+#undef ST
 
 /* h(x) = u . v of a state in double. */
 static double rdot_of(const double *x, const double *s)
@@ -590,6 +649,146 @@ static void test_imm_takes_polar_detections(void)
 #endif
 }
 
+#if MTT_WITH_SPLIT
+/* tools/track/tests/polar_split.json's settings, range_rate_sigma 0.1,
+ * split on or off. */
+static void split_polar_params(mtt_params *p, int split)
+{
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_default(p));
+    p->association = MTT_ASSOC_LM_IHPDA;
+    p->measurement = MTT_MEASUREMENT_POLAR;
+    p->sensor_xy[0] = MTT_R(0.0);
+    p->sensor_xy[1] = MTT_R(0.0);
+    p->meas_sigma[0] = MTT_R(0.3);
+    p->meas_sigma[1] = MTT_R(0.003);
+    p->clutter_density = MTT_R(0.01);
+    p->vmax = MTT_R(5.0);
+    p->motion = MTT_MOTION_IMM;
+    p->imm_n_models = 2u;
+    p->imm_model[0] = MTT_MODEL_CV;
+    p->imm_model[1] = MTT_MODEL_CA;
+    p->imm_psd[0] = MTT_R(1.0);
+    p->imm_psd[1] = MTT_R(400.0);
+    p->imm_transition[0][0] = MTT_R(0.95);
+    p->imm_transition[0][1] = MTT_R(0.05);
+    p->imm_transition[1][0] = MTT_R(0.1);
+    p->imm_transition[1][1] = MTT_R(0.9);
+    p->imm_initial[0] = MTT_R(0.9);
+    p->imm_initial[1] = MTT_R(0.1);
+    p->split = split;
+    p->split_dv = MTT_R(1.0);
+    p->range_rate_sigma = MTT_R(0.1);
+}
+#endif
+
+/* The split modes take polar detections with range rates (ALGORITHMS.md
+ * §3.2, §14.3): polar_split.det.csv's scene (tools/track/tests), a target
+ * at (100 + k, 50) seen from (0, 0) that splits from scan 13, its child at
+ * (100 + k, 50 + (k - 12)), here with each detection's range rate u . v
+ * (sigma 0.1): every scan is taken, one child splits off its parent, and
+ * at the end each is within 2 of its target's position and 1 of its
+ * velocity ((1, 0) and (1, 1): the last scan's estimates are about 0.5
+ * off, the noise of sigma 0.3 in range and 0.33 across at 110). */
+#define SPLIT_SCANS 30
+static void test_split_takes_range_rates(void)
+{
+#if MTT_WITH_SPLIT
+    mtt_params p;
+    mtt_stats st;
+    size_t cnt, i;
+    int k, children = 0, parents = 0;
+    split_polar_params(&p, 1);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+    rng_state = 3u;
+    for (k = 0; k < SPLIT_SCANS; ++k) {
+        mtt_polar in[2];
+        size_t n = 0;
+        int t;
+        for (t = 0; t < 2; ++t) {
+            const double x = 100.0 + k, y = 50.0 + ((t == 1) ? (double)(k - 12) : 0.0), vy = (t == 1) ? 1.0 : 0.0;
+            const double r = hypot(x, y);
+            if (t == 1 && k < 13) {
+                continue;
+            }
+            in[n] = pol(r + 0.3 * gauss01(), atan2(y, x) + 0.003 * gauss01());
+            in[n].has_range_rate = 1;
+            in[n].range_rate = (mtt_real)((x * 1.0 + y * vy) / r + 0.1 * gauss01());
+            ++n;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, n));
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+    TEST_ASSERT_EQUAL_UINT32(1u, st.total.splits);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&ta, &cnt));
+    for (i = 0; i < cnt; ++i) {
+        mtt_track_view v;
+        const double kx = 100.0 + (SPLIT_SCANS - 1);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&ta, i, &v));
+        if (!v.confirmed) {
+            continue;
+        }
+        if (v.parent != MTT_NO_PARENT) {
+            ++children;
+            TEST_ASSERT_TRUE(hypot((double)v.x[0] - kx, (double)v.x[1] - (50.0 + SPLIT_SCANS - 13)) < 2.0);
+            TEST_ASSERT_TRUE(hypot((double)v.x[2] - 1.0, (double)v.x[3] - 1.0) < 1.0);
+        } else {
+            ++parents;
+            TEST_ASSERT_TRUE(hypot((double)v.x[0] - kx, (double)v.x[1] - 50.0) < 2.0);
+            TEST_ASSERT_TRUE(hypot((double)v.x[2] - 1.0, (double)v.x[3]) < 1.0);
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(1, children);
+    TEST_ASSERT_EQUAL_INT(1, parents);
+#else
+    TEST_IGNORE_MESSAGE("no split in this build");
+#endif
+}
+
+/* Under split a detection with a range rate in a confirmed track's
+ * position gate is left to its split modes even where its range rate is
+ * outside the track's range-rate gate (ALGORITHMS.md §14.3): a seeded
+ * track at (100, 50) moving (1, 0), each scan its detection and one 0.7
+ * from it whose range rate is 10 (100 sigma) off: without split those
+ * start a track (two-point initiation), with split none starts. */
+static void test_split_holds_a_gated_position_with_another_range_rate(void)
+{
+#if MTT_WITH_SPLIT
+    const mtt_real x0[4] = {MTT_R(100.0), MTT_R(50.0), MTT_R(1.0), MTT_R(0.0)};
+    const mtt_real P0[16] = {MTT_R(0.1), 0, 0, 0, 0, MTT_R(0.1), 0, 0, 0, 0, MTT_R(0.01), 0, 0, 0, 0, MTT_R(0.01)};
+    int split;
+    for (split = 0; split <= 1; ++split) {
+        mtt_params p;
+        mtt_stats st;
+        uint32_t id;
+        int k;
+        split_polar_params(&p, split);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&ta, &p));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_add_track(&ta, x0, P0, &id));
+        for (k = 0; k < 6; ++k) {
+            const double x = 100.0 + k, y = 50.0, r = hypot(x, y);
+            const double x2 = x + 0.5, y2 = y + 0.5, r2 = hypot(x2, y2);
+            mtt_polar in[2];
+            in[0] = pol(r, atan2(y, x));
+            in[0].has_range_rate = 1;
+            in[0].range_rate = (mtt_real)(x / r);
+            in[1] = pol(r2, atan2(y2, x2));
+            in[1].has_range_rate = 1;
+            in[1].range_rate = (mtt_real)(x2 / r2 + 10.0);
+            TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step_polar(&ta, (mtt_real)k, in, 2u));
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_stats(&ta, &st));
+        TEST_ASSERT_EQUAL_UINT32(0u, st.total.splits);
+        if (split) {
+            TEST_ASSERT_EQUAL_UINT32(0u, st.total.births);
+        } else {
+            TEST_ASSERT_TRUE(st.total.births >= 1u);
+        }
+    }
+#else
+    TEST_IGNORE_MESSAGE("no split in this build");
+#endif
+}
+
 /* Under the IMM each model weighs the range rate against its own
  * prediction (ALGORITHMS.md §3.2, §14.2): a seeded track moving radially
  * at 20 from the sensor, one frame later a detection on its predicted
@@ -757,11 +956,14 @@ int main(void)
     RUN_TEST(test_bad_polar_detections_are_counted);
     RUN_TEST(test_refusals);
     RUN_TEST(test_range_rate_update_is_the_ekf);
+    RUN_TEST(test_range_rate_step_on_a_block);
     RUN_TEST(test_range_rate_gates_and_weighs);
     RUN_TEST(test_birth_takes_the_radial_velocity);
     RUN_TEST(test_range_rate_lowers_the_velocity_error);
     RUN_TEST(test_imm_takes_polar_detections);
     RUN_TEST(test_imm_models_weigh_the_range_rate);
+    RUN_TEST(test_split_takes_range_rates);
+    RUN_TEST(test_split_holds_a_gated_position_with_another_range_rate);
     RUN_TEST(test_polar_order_and_cap);
     RUN_TEST(test_range_rate_needs_its_sigma);
 #else

@@ -9,7 +9,8 @@
  * Properties: joint event probabilities sum to 1, symmetric positive
  * definite covariances, the stacked update with PD = PG = 1 and one
  * measurement per target equals two independent Kalman updates
- * (kalman.c), the decoupling boundary. */
+ * (kalman.c), the decoupling boundary; with range rates (polar, §3.2)
+ * their factors and EKF steps against the formulas in double. */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -242,7 +243,7 @@ static void test_just_split_reference(void)
     mtt_real bn[5], lik = MTT_R(0.0);
     int j;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl,
                                             bn, &lik));
     for (j = 0; j < 5; ++j) {
         TEST_ASSERT_EQUAL_INT(ref5_cluster[j], cl[j]);
@@ -265,9 +266,9 @@ static void test_just_split_refuses(void)
     mtt_real bn[5] = {MTT_R(-1.0)}, lik = MTT_R(-1.0);
     prior1(P);
     /* one measurement: no split; n out of range; V not positive */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 3, XP, P, R, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 1, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 3, XP, P, R, NULL, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, B5, MTT_R(0.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(7, cl[0]);
     TV_ASSERT_REAL(-1.0, lik);
 }
@@ -287,7 +288,7 @@ static void test_just_split_two(void)
     int h, i, k;
     double n1, n2;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 2, Z5, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(1, cl[0]);
     TEST_ASSERT_EQUAL_INT(0, cl[1]);
     TV_ASSERT_REAL(1.0, bn[0]);
@@ -340,12 +341,12 @@ static void test_known_split_reference(void)
     mtt_real bn[5], lik = MTT_R(0.0), lk = MTT_R(0.0);
     int c, i, k;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl,
                                             bn, &lik));
     for (c = 0; c < 3; ++c) {
         memcpy(xs, xs0, sizeof xs);
         memcpy(Ps, Ps0, sizeof Ps);
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, (mtt_real)ref_known[c].dv,
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, cl, bn, (mtt_real)ref_known[c].dv,
                                                  MTT_R(1.0), (uint8_t)ref_known[c].n_off, (mtt_real)ref5_V,
                                                  xs, Ps, &lk));
         TV_ASSERT_REAL(ref_known[c].lik, lk);
@@ -361,16 +362,16 @@ static void test_known_split_reference(void)
         }
     }
     /* refused: no speed, no offset, more offsets than the bound, one cluster */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(0.0), MTT_R(1.0), 1u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, cl, bn, MTT_R(0.0), MTT_R(1.0), 1u,
                                               (mtt_real)ref5_V, xs, Ps, &lk));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 0u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 0u,
                                               (mtt_real)ref5_V, xs, Ps, &lk));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0),
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0),
                                               (uint8_t)(MTT_SPLIT_KNOWN_MAX_OFFSETS + 1u), (mtt_real)ref5_V,
                                               xs, Ps, &lk));
     {
         const uint8_t one[5] = {0, 0, 0, 0, 0};
-        TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, 5, Z5, one, bn, MTT_R(5.0), MTT_R(1.0),
+        TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, one, bn, MTT_R(5.0), MTT_R(1.0),
                                                   1u, (mtt_real)ref5_V, xs, Ps, &lk));
     }
 }
@@ -384,7 +385,7 @@ static void test_split_events_reference(void)
     double sum = 0.0;
     int e, t, j, j1, j2, found;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 4, Z6, PD6, PG6, GAMMA,
                                                   (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     /* every event of the brute-force enumeration, and no other */
@@ -426,7 +427,7 @@ static void test_split_events_parametric(void)
     double sum = 0.0;
     int e;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
                                                   MTT_R(2e-4), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     for (e = 0; e < 13; ++e) {
@@ -438,7 +439,7 @@ static void test_split_events_parametric(void)
     TV_ASSERT_REAL(1.0, sum);
     TV_ASSERT_REAL(ref6p_lik, as.lik);
     /* neither a clutter density nor a volume: refused */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(0.0),
                                                    MTT_R(0.0), &as));
 }
 
@@ -448,10 +449,10 @@ static void test_split_update_reference(void)
     mtt_split_state xs;
     mtt_split_assoc as;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 4, Z6, PD6, PG6, GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 4, Z6, PD6, PG6, GAMMA,
                                                   (mtt_real)ref6_V, MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, NULL, Z6, xs, Ps));
     TV_ASSERT_VEC(ref6_xs, xs, 8);
     assert_cov8(ref6_Ps, Ps, "Ps");
     assert_psd(Ps, 8);
@@ -472,13 +473,13 @@ static void check_independent(const mtt_real *const rj[2], mtt_real z[2][2], mtt
     memcpy(xps, XPS, sizeof XPS);
     xps[4] += MTT_R(60.0);
     prior_s(Pps, 0.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, NULL, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
                                                   MTT_R(2000.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta[0][0]);
     TV_ASSERT_REAL(1.0, as.beta[1][1]);
     TEST_ASSERT_TRUE(as.beta0 == MTT_R(0.0));
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, z, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, NULL, z, xs, Ps));
     for (t = 0; t < 2; ++t) {
         const int o = 4 * t;
         const mtt_real *Rt = (rj != NULL) ? rj[t] : R;
@@ -518,11 +519,11 @@ static void test_split_no_measurement(void)
     mtt_split_assoc as;
     int i, k;
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 0, Z6, PD6, PG6, GAMMA, MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(1.0, as.beta0);
     TV_ASSERT_REAL((1.0 - 0.9 * 0.99) * (1.0 - 0.9 * 0.99), as.lik);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, NULL, NULL, Z6, xs, Ps));
     for (i = 0; i < 8; ++i) {
         TV_ASSERT_REAL(XPS[i], xs[i]);
         for (k = 0; k < 8; ++k) {
@@ -530,7 +531,7 @@ static void test_split_no_measurement(void)
         }
     }
     /* PD = PG = 1 and nothing gated: every event weighs 0 -> refused */
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, 0, Z6, MTT_R(1.0), MTT_R(1.0), GAMMA,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, NULL, NULL, 0, Z6, MTT_R(1.0), MTT_R(1.0), GAMMA,
                                                   MTT_R(100.0), MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(-1, mtt_split_joint(&as));
 }
@@ -630,7 +631,7 @@ static void test_separate(void)
     int i, k;
     /* the model-5 result: parent = half 1 (largest beta), child = half 2 */
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_separate(&wk, 4, xs, Ps, x1, P1, x2, P2));
     for (i = 0; i < 4; ++i) {
         TV_ASSERT_REAL(ref5_xs[i], x1[i]);
@@ -675,7 +676,7 @@ static void test_own_r_equal_is_the_shared_form(void)
     mtt_real bn[5], lik = MTT_R(0.0), lk = MTT_R(0.0);
     int j, i, k;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl, bn,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, NULL, 5, Z5, B5, (mtt_real)ref5_V, xs0, Ps0, cl, bn,
                                             &lik));
     for (j = 0; j < 5; ++j) {
         TEST_ASSERT_EQUAL_INT(ref5_cluster[j], cl[j]);
@@ -686,7 +687,7 @@ static void test_own_r_equal_is_the_shared_form(void)
     TV_ASSERT_REAL(ref5_lik, lik);
     memcpy(xs, xs0, sizeof xs);
     memcpy(Ps, Ps0, sizeof Ps);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, 5, Z5, cl, bn, (mtt_real)ref_known[0].dv,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, NULL, 5, Z5, cl, bn, (mtt_real)ref_known[0].dv,
                                              MTT_R(1.0), (uint8_t)ref_known[0].n_off, (mtt_real)ref5_V, xs, Ps,
                                              &lk));
     TV_ASSERT_REAL(ref_known[0].lik, lk);
@@ -697,29 +698,30 @@ static void test_own_r_equal_is_the_shared_form(void)
         }
     }
     prior_s(Pps, 1.0);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rj, 4, Z6, PD6, PG6, GAMMA, (mtt_real)ref6_V,
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rj, NULL, 4, Z6, PD6, PG6, GAMMA, (mtt_real)ref6_V,
                                                   MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     TV_ASSERT_REAL(ref6_lik, as.lik);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, rj, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, XPS, Pps, R, rj, NULL, Z6, xs, Ps));
     TV_ASSERT_VEC(ref6_xs, xs, 8);
     assert_cov8(ref6_Ps, Ps, "Ps6 own");
     assert_psd(Ps, 8);
 }
 
-/* The Kalman update of (XP, PP) with z of noise Rr, in double: x, P, A =
+/* The Kalman update of (xp, P) with z of noise Rr, in double: x, P, A =
  * I - K H and N(z; H xp, S). */
-static double kalman_d(const double Rr[3], const mtt_real z[2], double x[4], double Pu[4][4], double A[4][4])
+static double kalman_gen_d(const double xp[4], double Pp[4][4], const double Rr[3], const mtt_real z[2],
+                           double x[4], double Pu[4][4], double A[4][4])
 {
-    const double s0 = PP[0][0] + Rr[0], s1 = PP[0][1] + Rr[1], s2 = PP[1][1] + Rr[2];
-    const double det = s0 * s2 - s1 * s1, nx = (double)z[0] - (double)XP[0], ny = (double)z[1] - (double)XP[1];
+    const double s0 = Pp[0][0] + Rr[0], s1 = Pp[0][1] + Rr[1], s2 = Pp[1][1] + Rr[2];
+    const double det = s0 * s2 - s1 * s1, nx = (double)z[0] - xp[0], ny = (double)z[1] - xp[1];
     const double si[3] = {s2 / det, -s1 / det, s0 / det};
     double K[4][2], T[4][4];
     int i, k, l;
     for (i = 0; i < 4; ++i) {
-        K[i][0] = PP[i][0] * si[0] + PP[i][1] * si[1];
-        K[i][1] = PP[i][0] * si[1] + PP[i][1] * si[2];
-        x[i] = (double)XP[i] + K[i][0] * nx + K[i][1] * ny;
+        K[i][0] = Pp[i][0] * si[0] + Pp[i][1] * si[1];
+        K[i][1] = Pp[i][0] * si[1] + Pp[i][1] * si[2];
+        x[i] = xp[i] + K[i][0] * nx + K[i][1] * ny;
         for (k = 0; k < 4; ++k) {
             A[i][k] = (i == k ? 1.0 : 0.0) - (k == 0 ? K[i][0] : 0.0) - (k == 1 ? K[i][1] : 0.0);
         }
@@ -728,7 +730,7 @@ static double kalman_d(const double Rr[3], const mtt_real z[2], double x[4], dou
         for (k = 0; k < 4; ++k) {
             T[i][k] = 0.0;
             for (l = 0; l < 4; ++l) {
-                T[i][k] += A[i][l] * PP[l][k];
+                T[i][k] += A[i][l] * Pp[l][k];
             }
         }
     }
@@ -741,6 +743,15 @@ static double kalman_d(const double Rr[3], const mtt_real z[2], double x[4], dou
         }
     }
     return exp(-0.5 * (si[0] * nx * nx + 2.0 * si[1] * nx * ny + si[2] * ny * ny)) / (2.0 * 3.14159265358979323846 * sqrt(det));
+}
+
+/* kalman_gen_d of (XP, PP). */
+static double kalman_d(const double Rr[3], const mtt_real z[2], double x[4], double Pu[4][4], double A[4][4])
+{
+    const double xp[4] = {(double)XP[0], (double)XP[1], (double)XP[2], (double)XP[3]};
+    double Pp[4][4];
+    memcpy(Pp, PP, sizeof Pp);
+    return kalman_gen_d(xp, Pp, Rr, z, x, Pu, A);
 }
 
 /* Model 5 with two measurements, the child's with an own R 25 times R:
@@ -763,7 +774,7 @@ static void test_own_r_just_two_hand(void)
     double x[2][4], Pu[2][4][4], A[2][4][4], g[2], e_own, e_eq;
     int h, i, k, l, q;
     prior1(P);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, 2, z, b, (mtt_real)V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, NULL, 2, z, b, (mtt_real)V, xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_INT(0, cl[0]);
     TEST_ASSERT_EQUAL_INT(1, cl[1]);
     for (h = 0; h < 2; ++h) {
@@ -790,7 +801,7 @@ static void test_own_r_just_two_hand(void)
     TV_ASSERT_REAL(V * g[0] * V * g[1], lik);
     assert_psd(Ps, 8);
     /* against R for both: the child half ends farther from its measurement */
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, req, 2, z, b, (mtt_real)V, xq, Pq, cl, bn, &lik_eq));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, req, NULL, 2, z, b, (mtt_real)V, xq, Pq, cl, bn, &lik_eq));
     e_own = hypot((double)xs[4] - (double)z[1][0], (double)xs[5] - (double)z[1][1]);
     e_eq = hypot((double)xq[4] - (double)z[1][0], (double)xq[5] - (double)z[1][1]);
     TEST_ASSERT_TRUE(e_own > e_eq + 3.0);
@@ -817,6 +828,296 @@ static void test_own_r_split_update_independent(void)
     TEST_ASSERT_TRUE(Ps[4][4] > Pq[4][4]);
 }
 
+/* ---- range rates (ALGORITHMS.md §3.2, §14.3): the formulas in double ---- */
+
+static const mtt_real SENS[2] = {MTT_R(-200.0), MTT_R(300.0)};
+#define RR_SIGMA 0.5
+#define RR_VMAX 40.0
+
+/* h = e . v (e the unit vector from SENS to the position) and its
+ * Jacobian H over x, y, vx, vy, in double. */
+static double rdot_hd(const double x[4], double H[4])
+{
+    const double dx = x[0] - (double)SENS[0], dy = x[1] - (double)SENS[1], r = hypot(dx, dy);
+    const double ux = dx / r, uy = dy / r, h = ux * x[2] + uy * x[3];
+    H[0] = (x[2] - ux * h) / r;
+    H[1] = (x[3] - uy * h) / r;
+    H[2] = ux;
+    H[3] = uy;
+    return h;
+}
+
+/* The scalar EKF step at x: K = P H' / (H P H' + s^2), x += K (rr - h(x)),
+ * P = (I - K H) P (I - K H)' + K s^2 K'; M = I - K H. */
+static void ekf_rdot_d(double x[4], double P[4][4], double rr, double M[4][4])
+{
+    double H[4], PH[4], K[4], T[4][4], s = RR_SIGMA * RR_SIGMA, h = rdot_hd(x, H);
+    int i, k, l;
+    for (i = 0; i < 4; ++i) {
+        PH[i] = 0.0;
+        for (k = 0; k < 4; ++k) {
+            PH[i] += P[i][k] * H[k];
+        }
+    }
+    for (k = 0; k < 4; ++k) {
+        s += H[k] * PH[k];
+    }
+    for (i = 0; i < 4; ++i) {
+        K[i] = PH[i] / s;
+        x[i] += K[i] * (rr - h);
+        for (k = 0; k < 4; ++k) {
+            M[i][k] = (i == k ? 1.0 : 0.0) - K[i] * H[k];
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            T[i][k] = 0.0;
+            for (l = 0; l < 4; ++l) {
+                T[i][k] += M[i][l] * P[l][k];
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            P[i][k] = K[i] * RR_SIGMA * RR_SIGMA * K[k];
+            for (l = 0; l < 4; ++l) {
+                P[i][k] += T[i][l] * M[k][l];
+            }
+        }
+    }
+}
+
+/* The factor 2 vmax N(nu'; 0, s') of a range rate rr against (xp, P)
+ * with a detection at z of noise Rr: nu' = rr - h - C S^-1 nu, s' = H P H'
+ * + s^2 - C S^-1 C', C = H P_pos, S = P_pos + Rr; *nu2 = nu'^2 / s'. */
+static double rdot_factor_d(const double xp[4], const double P[4][4], const double Rr[3], const mtt_real z[2],
+                            double rr, double *nu2)
+{
+    const double s0 = P[0][0] + Rr[0], s1 = P[0][1] + Rr[1], s2 = P[1][1] + Rr[2], det = s0 * s2 - s1 * s1;
+    const double nx = (double)z[0] - xp[0], ny = (double)z[1] - xp[1];
+    double H[4], C[2], a0, a1, nu, s = RR_SIGMA * RR_SIGMA, h = rdot_hd(xp, H);
+    int i, k;
+    for (i = 0; i < 2; ++i) {
+        C[i] = 0.0;
+        for (k = 0; k < 4; ++k) {
+            C[i] += H[k] * P[k][i];
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            s += H[i] * P[i][k] * H[k];
+        }
+    }
+    a0 = (s2 * C[0] - s1 * C[1]) / det;
+    a1 = (s0 * C[1] - s1 * C[0]) / det;
+    nu = rr - h - (a0 * nx + a1 * ny);
+    s -= a0 * C[0] + a1 * C[1];
+    *nu2 = nu * nu / s;
+    return 2.0 * RR_VMAX * exp(-0.5 * nu * nu / s) / sqrt(2.0 * 3.14159265358979323846 * s);
+}
+
+static mtt_split_rdot rdot_set(const mtt_real *const *rr)
+{
+    mtt_split_rdot rd;
+    rd.rr = rr;
+    rd.sensor = SENS;
+    rd.gamma = GAMMA;
+    rd.vmax = MTT_R(RR_VMAX);
+    return rd;
+}
+
+/* Model 5 with two measurements that have range rates: each half is the
+ * Kalman update with its measurement, then the scalar EKF step of its
+ * range rate at that state; the cross covariance (M_1 A_1) PP (M_2 A_2)';
+ * the likelihood V N_1 f_1 V N_2 f_2, f the range rate's factor (all in
+ * double above). */
+static void test_rdot_just_two_hand(void)
+{
+    const double Rd[3] = {9.0, 1.5, 12.0}, xp[4] = {100.0, 50.0, 10.0, -5.0};
+    const mtt_real *rj[2] = {R, R};
+    const mtt_real b[2] = {MTT_R(0.6), MTT_R(0.4)};
+    const double V = 500.0;
+    mtt_real z[2][2] = {{MTT_R(104.0), MTT_R(48.0)}, {MTT_R(93.0), MTT_R(57.0)}};
+    mtt_real rrv[2][2], P[MTT_MAX_STATE][MTT_MAX_STATE], bn[2], lik = MTT_R(0.0);
+    const mtt_real *rr[2] = {rrv[0], rrv[1]};
+    mtt_split_rdot rd = rdot_set(rr);
+    mtt_split_state xs;
+    mtt_split_cov Ps;
+    uint8_t cl[2];
+    double x[2][4], Pu[2][4][4], A[2][4][4], M[4][4], MA[2][4][4], g[2], f[2], H[4], nu2, h0;
+    int c, i, k, l, q;
+    h0 = rdot_hd(xp, H);
+    rrv[0][0] = (mtt_real)(h0 + 1.5); /* inside the gate, off the prediction */
+    rrv[1][0] = (mtt_real)(h0 - 2.0);
+    rrv[0][1] = rrv[1][1] = (mtt_real)(RR_SIGMA * RR_SIGMA);
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, &rd, 2, z, b, (mtt_real)V, xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, cl[0]);
+    TEST_ASSERT_EQUAL_INT(1, cl[1]);
+    for (c = 0; c < 2; ++c) {
+        g[c] = kalman_d(Rd, z[c], x[c], Pu[c], A[c]);
+        f[c] = rdot_factor_d(xp, PP, Rd, z[c], (double)rrv[c][0], &nu2);
+        TEST_ASSERT_TRUE(nu2 > 0.01 && nu2 < (double)GAMMA);
+        ekf_rdot_d(x[c], Pu[c], (double)rrv[c][0], M);
+        for (i = 0; i < 4; ++i) {
+            for (k = 0; k < 4; ++k) {
+                MA[c][i][k] = 0.0;
+                for (l = 0; l < 4; ++l) {
+                    MA[c][i][k] += M[i][l] * A[c][l][k];
+                }
+            }
+        }
+        for (i = 0; i < 4; ++i) {
+            TV_ASSERT_REAL(x[c][i], xs[4 * c + i]);
+            for (k = 0; k < 4; ++k) {
+                TV_ASSERT_REAL(Pu[c][i][k], Ps[4 * c + i][4 * c + k]);
+            }
+        }
+    }
+    for (i = 0; i < 4; ++i) {
+        for (k = 0; k < 4; ++k) {
+            double v = 0.0;
+            for (l = 0; l < 4; ++l) {
+                for (q = 0; q < 4; ++q) {
+                    v += MA[0][i][l] * PP[l][q] * MA[1][k][q];
+                }
+            }
+            TEST_ASSERT_TRUE(fabs(v - (double)Ps[i][4 + k]) <= 1e-4 * (1.0 + fabs(v)));
+        }
+    }
+    TV_ASSERT_REAL(V * g[0] * f[0] * V * g[1] * f[1], lik);
+    assert_psd(Ps, 8);
+}
+
+/* Model 6's event factors: two detections at target 1's predicted
+ * position, one whose range rate is target 1's predicted radial velocity,
+ * one 8 sigma_rdot off, and one far outside the range rate's gate.  The
+ * factor ratio is exp(nu'^2 / (2 s')) (nu = 0: nu' = rr - h), from the
+ * formulas in double; the third is not feasible for target 1.  Target 2
+ * is 60 away (outside every gate): the association weights follow. */
+static void test_rdot_events_weigh_the_matching_range_rate(void)
+{
+    const double Rd[3] = {9.0, 1.5, 12.0}, xp[4] = {100.0, 50.0, 10.0, -5.0};
+    const mtt_real *rj[3] = {R, R, R};
+    mtt_real z[3][2] = {{MTT_R(100.0), MTT_R(50.0)}, {MTT_R(100.0), MTT_R(50.0)}, {MTT_R(100.0), MTT_R(50.0)}};
+    mtt_real rrv[3][2];
+    const mtt_real *rr[3] = {rrv[0], rrv[1], rrv[2]};
+    mtt_split_rdot rd = rdot_set(rr);
+    mtt_split_cov Pps;
+    mtt_split_state xps;
+    mtt_split_assoc as, as0;
+    double H[4], h, f0, f1, nu2;
+    int j;
+    memcpy(xps, XPS, sizeof XPS);
+    xps[4] += MTT_R(60.0);
+    prior_s(Pps, 0.0);
+    h = rdot_hd(xp, H);
+    for (j = 0; j < 3; ++j) {
+        rrv[j][1] = (mtt_real)(RR_SIGMA * RR_SIGMA);
+    }
+    rrv[0][0] = (mtt_real)h;
+    rrv[1][0] = (mtt_real)(h + 8.0 * RR_SIGMA);
+    rrv[2][0] = (mtt_real)(h + 200.0);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, &rd, 3, z, PD6, PG6, GAMMA, MTT_R(0.0),
+                                                  MTT_R(1e-3), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, NULL, 3, z, PD6, PG6, GAMMA, MTT_R(0.0),
+                                                  MTT_R(1e-3), &as0));
+    f0 = rdot_factor_d(xp, PP, Rd, z[0], (double)rrv[0][0], &nu2);
+    f1 = rdot_factor_d(xp, PP, Rd, z[1], (double)rrv[1][0], &nu2);
+    TEST_ASSERT_TRUE(nu2 > 1.0 && nu2 < (double)GAMMA); /* several sigma off, inside the gate */
+    TV_ASSERT_REAL(f0 * (double)as0.a[0][0], as.a[0][0]);
+    TV_ASSERT_REAL(f0 / f1, (double)as.a[0][0] / (double)as.a[0][1]);
+    TEST_ASSERT_TRUE(f0 / f1 > 1.5);
+    TEST_ASSERT_TRUE(as0.a[0][2] > MTT_R(0.0));
+    TEST_ASSERT_TRUE(as.a[0][2] == MTT_R(0.0)); /* outside the range rate's gate */
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+    TV_ASSERT_REAL(f0 / f1, (double)as.beta[0][0] / (double)as.beta[0][1]);
+    TEST_ASSERT_TRUE(as.beta[0][2] == MTT_R(0.0));
+}
+
+/* Model 6 with PD = PG = 1, no cross covariance and one detection with a
+ * range rate in each target's gate (check_independent's single event):
+ * each target's block is its Kalman update, then the scalar EKF step of
+ * its detection's range rate (K = P H' / (H P H' + s^2), in double); its
+ * radial velocity moves toward the measured range rate. */
+static void test_rdot_split_update_ekf_step(void)
+{
+    const double Rd[3] = {9.0, 1.5, 12.0};
+    const mtt_real *rj[2] = {R, R};
+    mtt_real z[2][2] = {{MTT_R(103.0), MTT_R(49.0)}, {MTT_R(174.0), MTT_R(45.0)}};
+    mtt_real rrv[2][2];
+    const mtt_real *rr[2] = {rrv[0], rrv[1]};
+    mtt_split_rdot rd = rdot_set(rr);
+    mtt_split_cov Pps, Ps;
+    mtt_split_state xps, xs;
+    mtt_split_assoc as;
+    double xp[2][4], P[2][4][4], x[4], Pu[4][4], A[4][4], M[4][4], H[4], h_pos;
+    int t, i, k;
+    memcpy(xps, XPS, sizeof XPS);
+    xps[4] += MTT_R(60.0);
+    prior_s(Pps, 0.0);
+    for (t = 0; t < 2; ++t) {
+        for (i = 0; i < 4; ++i) {
+            xp[t][i] = (double)xps[4 * t + i];
+            for (k = 0; k < 4; ++k) {
+                P[t][i][k] = (double)Pps[4 * t + i][4 * t + k];
+            }
+        }
+        rrv[t][0] = (mtt_real)(rdot_hd(xp[t], H) + ((t == 0) ? 2.0 : -1.5));
+        rrv[t][1] = (mtt_real)(RR_SIGMA * RR_SIGMA);
+    }
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, rj, &rd, 2, z, MTT_R(1.0), MTT_R(1.0), GAMMA,
+                                                  MTT_R(2000.0), MTT_R(0.0), &as));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
+    TV_ASSERT_REAL(1.0, as.beta[0][0]);
+    TV_ASSERT_REAL(1.0, as.beta[1][1]);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, rj, &rd, z, xs, Ps));
+    for (t = 0; t < 2; ++t) {
+        (void)kalman_gen_d(xp[t], P[t], Rd, z[t], x, Pu, A);
+        h_pos = rdot_hd(x, H);
+        ekf_rdot_d(x, Pu, (double)rrv[t][0], M);
+        for (i = 0; i < 4; ++i) {
+            TV_ASSERT_REAL(x[i], xs[4 * t + i]);
+            for (k = 0; k < 4; ++k) {
+                TV_ASSERT_REAL(Pu[i][k], Ps[4 * t + i][4 * t + k]);
+                TEST_ASSERT_TRUE(fabs((double)Ps[i][4 + k]) <= 1e-4);
+            }
+        }
+        {
+            const double hx[4] = {(double)xs[4 * t], (double)xs[4 * t + 1], (double)xs[4 * t + 2],
+                                  (double)xs[4 * t + 3]};
+            TEST_ASSERT_TRUE(fabs(rdot_hd(hx, H) - (double)rrv[t][0]) < 0.5 * fabs(h_pos - (double)rrv[t][0]));
+        }
+    }
+    assert_psd(Ps, 8);
+}
+
+/* The known-speed child with range rates: none (every rr NULL) is the
+ * form without; range rates far outside their gate leave no likelihood. */
+static void test_rdot_known(void)
+{
+    const mtt_real *rj[5] = {R, R, R, R, R}, *none[5] = {NULL, NULL, NULL, NULL, NULL};
+    mtt_real rrv[2] = {MTT_R(500.0), MTT_R(RR_SIGMA * RR_SIGMA)};
+    const mtt_real *far[5] = {rrv, rrv, rrv, rrv, rrv};
+    mtt_split_rdot rn = rdot_set(none), rf = rdot_set(far);
+    mtt_real P[MTT_MAX_STATE][MTT_MAX_STATE], bn[5], lik = MTT_R(0.0), l0 = MTT_R(0.0), l1 = MTT_R(-1.0);
+    mtt_split_state xs;
+    mtt_split_cov Ps;
+    uint8_t cl[5];
+    prior1(P);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+                                             MTT_R(1000.0), xs, Ps, &l0));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, &rn, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+                                             MTT_R(1000.0), xs, Ps, &l1));
+    TEST_ASSERT_TRUE(l0 > MTT_R(0.0) && l1 == l0);
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_known(&wk, 4, XP, P, R, rj, &rf, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+                                             MTT_R(1000.0), xs, Ps, &l1));
+    TEST_ASSERT_TRUE(l1 == MTT_R(0.0));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, rj, &rf, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_TRUE(lik == MTT_R(0.0));
+}
+
 /* An R that makes S not positive definite: refused, nothing written. */
 static void test_own_r_not_positive_refused(void)
 {
@@ -830,25 +1131,25 @@ static void test_own_r_not_positive_refused(void)
     uint8_t cl[5];
     prior1(P);
     xs[0] = MTT_R(-3.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, rb, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_just(&wk, 4, XP, P, R, rb, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
     TEST_ASSERT_EQUAL_FLOAT(-7.0f, (float)lik);
     TEST_ASSERT_EQUAL_FLOAT(-3.0f, (float)xs[0]);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, XP, P, R, NULL, NULL, 5, Z5, B5, MTT_R(1000.0), xs, Ps, cl, bn, &lik));
     /* a child-cluster measurement (Z5[4] is the parent's: ref5_cluster) and a parent's */
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rb, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rb, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
                                               MTT_R(1000.0), xs, Ps, &lik));
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rc, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_known(&wk, 4, XP, P, R, rc, NULL, 5, Z5, cl, bn, MTT_R(5.0), MTT_R(1.0), 1u,
                                               MTT_R(1000.0), xs, Ps, &lik));
     prior_s(Pps, 1.0);
     as.m = 77u;
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, rx, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_assoc_init(4, XPS, Pps, R, rx, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
                                                    MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_UINT16(77u, as.m);
-    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rg, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
+    TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, XPS, Pps, R, rg, NULL, 4, Z6, PD6, PG6, GAMMA, MTT_R(100.0),
                                                   MTT_R(0.0), &as));
     TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
     xs[0] = MTT_R(-3.0);
-    TEST_ASSERT_EQUAL_INT(-1, mtt_split_update(&wk, &as, XPS, Pps, R, rx, Z6, xs, Ps));
+    TEST_ASSERT_EQUAL_INT(-1, mtt_split_update(&wk, &as, XPS, Pps, R, rx, NULL, Z6, xs, Ps));
     TEST_ASSERT_EQUAL_FLOAT(-3.0f, (float)xs[0]);
 }
 #endif
@@ -888,7 +1189,7 @@ static void test_split_random_properties(void)
             z[i][1] = xps[t + 1] + (mtt_real)urand(-6.0, 6.0);
             b[i] = (mtt_real)urand(0.0, 1.0);
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, NULL, m, z, pd, PG6, GAMMA, MTT_R(500.0),
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_assoc_init(4, xps, Pps, R, NULL, NULL, m, z, pd, PG6, GAMMA, MTT_R(500.0),
                                                       MTT_R(0.0), &as));
         TEST_ASSERT_EQUAL_INT(0, mtt_split_joint(&as));
         for (j1 = -1; j1 < (int16_t)m; ++j1) {
@@ -904,7 +1205,7 @@ static void test_split_random_properties(void)
             }
             TV_ASSERT_REAL(1.0, s);
         }
-        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, NULL, z, xs, Ps));
+        TEST_ASSERT_EQUAL_INT(0, mtt_split_update(&wk, &as, xps, Pps, R, NULL, NULL, z, xs, Ps));
         assert_psd(Ps, 8);
         if (m >= 2u) {
             for (i = 0; i < 4; ++i) {
@@ -912,7 +1213,7 @@ static void test_split_random_properties(void)
                     P[i][k] = Pps[i][k];
                 }
             }
-            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, xps, P, R, NULL, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
+            TEST_ASSERT_EQUAL_INT(0, mtt_split_just(&wk, 4, xps, P, R, NULL, NULL, m, z, b, MTT_R(500.0), xs, Ps, cl, bn, &lik));
             assert_psd(Ps, 8);
             TEST_ASSERT_TRUE(lik >= MTT_R(0.0));
         }
@@ -942,6 +1243,10 @@ int main(void)
     RUN_TEST(test_own_r_just_two_hand);
     RUN_TEST(test_own_r_split_update_independent);
     RUN_TEST(test_own_r_not_positive_refused);
+    RUN_TEST(test_rdot_just_two_hand);
+    RUN_TEST(test_rdot_events_weigh_the_matching_range_rate);
+    RUN_TEST(test_rdot_split_update_ekf_step);
+    RUN_TEST(test_rdot_known);
 #endif
     return UNITY_END();
 }

@@ -219,7 +219,7 @@ typedef struct mtt_params {
                                                    not given */
     int split;                      /**< nonzero: split-target detection (ALGORITHMS.md §14.3); needs
                                          motion = imm, a cv entry in imm_models and MTT_WITH_SPLIT; takes
-                                         a covariance per detection and polar detections (no range rate) */
+                                         a covariance per detection and polar detections (and their range rates) */
     mtt_real split_p25;             /**< per scan: cv -> "just split" */
     mtt_real split_p52;             /**< "just split" -> cv (no second target); the rest -> "split" */
     mtt_real split_p62;             /**< per scan: "split" -> cv (the two targets recombine) */

@@ -143,6 +143,7 @@ typedef struct mtt_split_work {
     mtt_split_cov Am[2];                 /* model 5: each half's weighted mean of I - W_j H */
     mtt_split_state xe;                  /* one detection's (event's) updated state */
     mtt_split_state da;                  /* the mean correction */
+    mtt_split_cov Mr;                    /* a range rate's EKF step: I - K H (§3.2) */
 #endif
 } mtt_split_work;
 
@@ -155,6 +156,8 @@ typedef struct mtt_split_scratch {
 #if MTT_WITH_MEAS_COV
     const mtt_real *rz[MTT_MAX_SPLIT_MEAS]; /* their R: own, or meas_sigma's (§3.1) */
     uint16_t n_own;                      /* how many of them have their own R */
+    const mtt_real *rr[MTT_MAX_SPLIT_MEAS]; /* their range rates and variances, or NULL (§3.2) */
+    uint16_t n_rdot;                     /* how many of them have one */
 #endif
     uint16_t owner[MTT_MAX_MEAS];        /* 1 + the confirmed track that holds measurement j, 0 */
     uint8_t reported[MTT_MAX_MEAS];      /* 1 when owner[j] reports measurement j */

@@ -278,8 +278,7 @@ class Tracker:
         with non-finite coordinates or negative amplitudes, and for a ``cov``
         row that is not a covariance; the tracker is then unchanged.  A ``cov``
         where the library has no covariance per detection (a build without
-        MTT_WITH_MEAS_COV), and a polar range rate with ``split``, raise
-        ValueError too.
+        MTT_WITH_MEAS_COV) raises ValueError too.
         """
         try:
             t = float(time)
@@ -296,9 +295,6 @@ class Tracker:
         st = self._core.step(t, z.tobytes(), c, 1 if polar else 0)
         if polar and st == _core.ERR_PARAM:
             raise ValueError("a detection has a range rate but the settings' range_rate_sigma is 0")
-        if polar and st == _core.ERR_UNSUPPORTED:
-            raise ValueError("a detection has a range rate, which split = true does not take "
-                             "(ALGORITHMS.md section 14.3)")
         if st == _core.ERR_UNSUPPORTED and c is not None:
             raise ValueError("a covariance per detection is not available here: the library was built "
                              "without MTT_WITH_MEAS_COV")

@@ -181,13 +181,11 @@ mtt_status mtt_tracker_step_polar(mtt_tracker *trk, mtt_real time, const mtt_pol
     if (trk->par.measurement != MTT_MEASUREMENT_POLAR) {
         return MTT_ERR_UNSUPPORTED; /* polar detections need polar settings (§3.2) */
     }
-    if (!(trk->par.range_rate_sigma > MTT_ZERO) || (MTT_WITH_SPLIT && trk->par.split)) {
+    if (!(trk->par.range_rate_sigma > MTT_ZERO)) {
         size_t i;
         for (i = 0; i < n; ++i) {
             if (det[i].has_range_rate) {
-                /* a range rate without its sigma (§3.2); the split modes
-                 * take none (§14.3) */
-                return (MTT_WITH_SPLIT && trk->par.split) ? MTT_ERR_UNSUPPORTED : MTT_ERR_PARAM;
+                return MTT_ERR_PARAM; /* a range rate without its sigma (§3.2) */
             }
         }
     }

@@ -48,14 +48,25 @@ mtt_real mtt_polar_range(const mtt_tracker *trk, const mtt_real *xp);
 /* The R a track's S is formed with: trk->R, or under polar the converted
  * covariance at its predicted position xp (written into R). */
 const mtt_real *mtt_polar_track_r(const mtt_tracker *trk, const mtt_real *xp, mtt_real R[3]);
-/* A detection's range rate against a prediction xp, Pp (a CV track's, or
- * one IMM model's, rows of MTT_MAX_STATE from &P[0][0]; §3.2): 1 when it
- * has none, 0 when its innovation given the position's is outside gamma,
- * else N(nu; 0, s) over the clutter's 1 / (2 vmax). */
+/* A range rate rr (rr[0], variance rr[1]; NULL: none) against a
+ * prediction xp (x y vx vy), Pp (its rows of stride st), S = the position's
+ * innovation covariance and (nx, ny) its innovation (§3.2): 1 without
+ * one, 0 when its innovation given the position's is outside gamma, else
+ * N(nu; 0, s) over the clutter's 1 / (2 vmax). */
+mtt_real mtt_polar_rdot_f(const mtt_real sensor[2], mtt_real gamma, mtt_real vmax, const mtt_real *xp,
+                          const mtt_real *Pp, int st, const mtt_real S[3], mtt_real nx, mtt_real ny,
+                          const mtt_real rr[2]);
+/* mtt_polar_rdot_f of a detection against a prediction xp, Pp (a CV
+ * track's, or one IMM model's, rows of MTT_MAX_STATE from &P[0][0]). */
 mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_real S[3],
                             const mtt_mstore *ms);
-/* The extended Kalman update of x (n states, x y vx vy first) with the
- * range rate rr[0] of variance rr[1], linearised at x, Joseph form. */
+/* The extended Kalman update of x (n <= 2 MTT_MAX_STATE states; P, M, T
+ * rows of stride st >= n) with the range rate rr[0] of variance rr[1], the
+ * target's x y vx vy at components o..o+3, linearised at x, Joseph form;
+ * M receives I - K H, T is scratch.  0, or -1 (nothing done). */
+int mtt_polar_rdot_step(int n, int o, int st, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x,
+                        mtt_real *P, mtt_real *M, mtt_real *T);
+/* mtt_polar_rdot_step of x (n <= MTT_MAX_STATE states, x y vx vy first). */
 void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P);
 #endif
 #if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)

@@ -90,16 +90,17 @@ static int rdot_h(const mtt_real sensor[2], const mtt_real *x, mtt_real *h, mtt_
     return 0;
 }
 
-/* Pp's element (i, k): rows of MTT_MAX_STATE */
-#define PP(i, k) Pp[(i) * MTT_MAX_STATE + (k)]
+/* Pp's element (i, k): rows of stride st */
+#define PP(i, k) Pp[(i) * st + (k)]
 
-mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_real S[3],
-                            const mtt_mstore *ms)
+mtt_real mtt_polar_rdot_f(const mtt_real sensor[2], mtt_real gamma, mtt_real vmax, const mtt_real *xp,
+                          const mtt_real *Pp, int st, const mtt_real S[3], mtt_real nx, mtt_real ny,
+                          const mtt_real rr[2])
 {
     const mtt_real S0 = S[0], S1 = S[1], S2 = S[2], det = S0 * S2 - S1 * S1;
     mtt_real h, H[4], A[4], a0, a1, nu, s;
     int i, k;
-    if (!ms->has_rdot || rdot_h(trk->par.sensor_xy, xp, &h, H) != 0) {
+    if (rr == NULL || rdot_h(sensor, xp, &h, H) != 0) {
         return MTT_R(1.0);
     }
     /* A = P H' over x, y, vx, vy: C = A[0..1] is the range rate's covariance
@@ -110,7 +111,7 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mt
             A[i] += PP(i, k) * H[k];
         }
     }
-    s = H[0] * A[0] + H[1] * A[1] + H[2] * A[2] + H[3] * A[3] + ms->rr[1];
+    s = H[0] * A[0] + H[1] * A[1] + H[2] * A[2] + H[3] * A[3] + rr[1];
     if (!(det > MTT_R(0.0))) {
         return MTT_R(1.0);
     }
@@ -118,54 +119,66 @@ mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mt
      * variance s - C S^-1 C' (the sequential form of the 3-vector's d^2) */
     a0 = (S2 * A[0] - S1 * A[1]) / det;
     a1 = (S0 * A[1] - S1 * A[0]) / det;
-    nu = ms->rr[0] - h - (a0 * (ms->x - xp[0]) + a1 * (ms->y - xp[1]));
+    nu = rr[0] - h - (a0 * nx + a1 * ny);
     s -= a0 * A[0] + a1 * A[1];
     if (!(s > MTT_R(0.0))) {
         return MTT_R(1.0);
     }
-    if (!(nu * nu <= trk->gamma * s)) {
+    if (!(nu * nu <= gamma * s)) {
         return MTT_R(0.0);
     }
     /* [CHOICE] clutter range rates uniform on [-vmax, vmax]: the ratio of
      * N(nu; 0, s) to that density (ALGORITHMS.md §3.2) */
-    return MTT_R(2.0) * trk->par.vmax * mtt_exp(MTT_R(-0.5) * nu * nu / s) / mtt_sqrt(MTT_R(2.0) * MTT_PI * s);
+    return MTT_R(2.0) * vmax * mtt_exp(MTT_R(-0.5) * nu * nu / s) / mtt_sqrt(MTT_R(2.0) * MTT_PI * s);
+}
+
+mtt_real mtt_polar_rdot_lik(const mtt_tracker *trk, const mtt_real *xp, const mtt_real *Pp, const mtt_real S[3],
+                            const mtt_mstore *ms)
+{
+    return mtt_polar_rdot_f(trk->par.sensor_xy, trk->gamma, trk->par.vmax, xp, Pp, MTT_MAX_STATE, S, ms->x - xp[0],
+                            ms->y - xp[1], ms->has_rdot ? ms->rr : NULL);
 }
 #undef PP
 
-void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P)
+/* P's, M's and T's element (i, k): rows of stride st; up to two targets'
+ * states (the split modes' stacked state, §14.3) */
+#define AT(X, i, k) X[(i) * st + (k)]
+#define RDOT_N (2 * MTT_MAX_STATE)
+
+int mtt_polar_rdot_step(int n, int o, int st, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x,
+                        mtt_real *P, mtt_real *M, mtt_real *T)
 {
-    mtt_real h, H[4], A[MTT_MAX_STATE], K[MTT_MAX_STATE], M[MTT_MAX_STATE][MTT_MAX_STATE];
-    mtt_real T[MTT_MAX_STATE][MTT_MAX_STATE], s = rr[1], nu;
+    mtt_real h, H[4], A[RDOT_N], K[RDOT_N], s = rr[1], nu;
     int i, k, l;
-    if (n < 4 || n > MTT_MAX_STATE || rdot_h(sensor, x, &h, H) != 0) {
-        return;
+    if (n < o + 4 || n > RDOT_N || n > st || rdot_h(sensor, x + o, &h, H) != 0) {
+        return -1;
     }
     for (i = 0; i < n; ++i) {
         A[i] = MTT_R(0.0);
         for (k = 0; k < 4; ++k) {
-            A[i] += P[i][k] * H[k];
+            A[i] += AT(P, i, o + k) * H[k];
         }
     }
     for (k = 0; k < 4; ++k) {
-        s += H[k] * A[k];
+        s += H[k] * A[o + k];
     }
     if (!(s > MTT_R(0.0)) || !mtt_isfinite(s)) {
-        return;
+        return -1;
     }
     nu = rr[0] - h;
     for (i = 0; i < n; ++i) {
         K[i] = A[i] / s;
         x[i] += K[i] * nu;
         for (k = 0; k < n; ++k) {
-            M[i][k] = ((i == k) ? MTT_R(1.0) : MTT_R(0.0)) - ((k < 4) ? K[i] * H[k] : MTT_R(0.0));
+            AT(M, i, k) = ((i == k) ? MTT_R(1.0) : MTT_R(0.0)) - ((k >= o && k < o + 4) ? K[i] * H[k - o] : MTT_R(0.0));
         }
     }
     /* Joseph form (ALGORITHMS.md §3): P = M P M' + K var K' */
     for (i = 0; i < n; ++i) {
         for (k = 0; k < n; ++k) {
-            T[i][k] = MTT_R(0.0);
+            AT(T, i, k) = MTT_R(0.0);
             for (l = 0; l < n; ++l) {
-                T[i][k] += M[i][l] * P[l][k];
+                AT(T, i, k) += AT(M, i, l) * AT(P, l, k);
             }
         }
     }
@@ -173,12 +186,24 @@ void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2]
         for (k = i; k < n; ++k) {
             mtt_real v = K[i] * rr[1] * K[k];
             for (l = 0; l < n; ++l) {
-                v += T[i][l] * M[k][l];
+                v += AT(T, i, l) * AT(M, k, l);
             }
-            P[i][k] = v;
-            P[k][i] = v;
+            AT(P, i, k) = v;
+            AT(P, k, i) = v;
         }
     }
+    return 0;
+}
+#undef AT
+#undef RDOT_N
+
+void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2], mtt_real *x, mtt_cov P)
+{
+    mtt_real M[MTT_MAX_STATE][MTT_MAX_STATE], T[MTT_MAX_STATE][MTT_MAX_STATE];
+    if (n < 4 || n > MTT_MAX_STATE) {
+        return;
+    }
+    (void)mtt_polar_rdot_step(n, 0, MTT_MAX_STATE, sensor, rr, x, &P[0][0], &M[0][0], &T[0][0]);
 }
 
 #endif /* MTT_WITH_POLAR */

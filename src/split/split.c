@@ -32,7 +32,11 @@
  * its gate and likelihood, and an update that is the mixture of the
  * single-detection (model 6: single-event) updates, each the Joseph form
  * with its own R and gain, plus their spread (the forms above when the R_j
- * are equal).  Only with MTT_WITH_MEAS_COV. */
+ * are equal).  Only with MTT_WITH_MEAS_COV.  Their range rates (rd, polar
+ * detections, ALGORITHMS.md §3.2): mtt_polar_rdot_f's factor in the gate
+ * and likelihood of the detection's target, and the EKF step of that
+ * target's block (mtt_polar_rdot_step) at the end of each single-detection
+ * (single-event) update. */
 #include "mtt_internal.h"
 
 #if MTT_WITH_SPLIT
@@ -250,19 +254,62 @@ static void mix_clear(mtt_split_work *wk, int N, mtt_real Am[][NS])
     }
 }
 
+/* The range-rate factor of measurement j (1 without rd or its range rate)
+ * against a target's prediction xo, Po (rows of stride st), S its S_j and
+ * (nx, ny) its position innovation. */
+static mtt_real rdot_f(const mtt_split_rdot *rd, uint16_t j, const mtt_real *xo, const mtt_real *Po, int st,
+                       const mtt_real S[3], mtt_real nx, mtt_real ny)
+{
+    return (rd == NULL) ? MTT_R(1.0)
+                        : mtt_polar_rdot_f(rd->sensor, rd->gamma, rd->vmax, xo, Po, st, S, nx, ny, rd->rr[j]);
+}
+
+/* The EKF steps of a term's range rates on (wk->xe, wk->Pe): target t's
+ * detection jt[t] (-1: none; its block at t N / 2, rd NULL: none); with am
+ * each step's I - K H also left-multiplies wk->A (the term's map of the
+ * prior error, for model 5's cross covariance). */
+static void rdot_steps(mtt_split_work *wk, int N, const mtt_split_rdot *rd, const int16_t jt[2], int am)
+{
+    int t, i, k, l;
+    for (t = 0; t < 2 && rd != NULL; ++t) {
+        const mtt_real *rr = (jt[t] >= 0) ? rd->rr[jt[t]] : NULL;
+        if (rr == NULL || mtt_polar_rdot_step(N, t * (N / 2), NS, rd->sensor, rr, wk->xe, &wk->Pe[0][0],
+                                              &wk->Mr[0][0], &wk->AP[0][0]) != 0 || !am) {
+            continue;
+        }
+        for (i = 0; i < N; ++i) {
+            for (k = 0; k < N; ++k) {
+                mtt_real v = MTT_R(0.0);
+                for (l = 0; l < N; ++l) {
+                    v += wk->Mr[i][l] * wk->A[l][k];
+                }
+                wk->AP[i][k] = v;
+            }
+        }
+        for (i = 0; i < N; ++i) {
+            for (k = 0; k < N; ++k) {
+                wk->A[i][k] = wk->AP[i][k];
+            }
+        }
+    }
+}
+
 /* One term of weight w: the Kalman update of (xp, Pp) with the q-vector
- * innovation nu of noise Rq (x_e, P_e, d = x_e - xp).  Pass 0 adds w d to
- * wk->da and (Am not NULL) w (I - W H) to Am; pass 1, with da complete,
- * w (P_e + (d - da)(d - da)') to wk->Pa.  -1 when S is not positive
- * definite. */
+ * innovation nu of noise Rq, then its range rates' steps (rdot_steps; x_e,
+ * P_e, d = x_e - xp).  Pass 0 adds w d to wk->da and (Am not NULL) w (the
+ * map of the prior error: I - W H, times the steps' I - K H) to Am; pass
+ * 1, with da complete, w (P_e + (d - da)(d - da)') to wk->Pa.  -1 when S
+ * is not positive definite. */
 static int mix_term(mtt_split_work *wk, int N, int q, const int sel[], const mtt_real xp[], mtt_real Pp[][NS],
-                    mtt_real Rq[][QMAX], const mtt_real nu[], mtt_real w, int pass, mtt_real Am[][NS])
+                    mtt_real Rq[][QMAX], const mtt_real nu[], const mtt_split_rdot *rd, const int16_t jt[2],
+                    mtt_real w, int pass, mtt_real Am[][NS])
 {
     mtt_real none[QMAX][QMAX] = {{MTT_R(0.0)}};
     int i, k;
     if (mixed_update(wk, N, q, sel, xp, Pp, Rq, MTT_R(0.0), nu, none, wk->xe, wk->Pe, NULL) != 0) {
         return -1;
     }
+    rdot_steps(wk, N, rd, jt, pass == 0 && Am != NULL);
     for (i = 0; i < N; ++i) {
         const mtt_real di = wk->xe[i] - xp[i];
         for (k = 0; k < N; ++k) {
@@ -301,11 +348,12 @@ static void mix_finish(const mtt_split_work *wk, int N, const mtt_real xp[], mtt
 }
 
 /* A half of model 5 (and mtt_split_known's child) with the detections'
- * own R: the measurements j of cluster h, weights w[j], innovations
- * nu[j]; Am (may be NULL) the weighted mean of I - W_j H. */
+ * own R and range rates: the measurements j of cluster h, weights w[j],
+ * innovations nu[j]; Am (may be NULL) the weighted mean of the maps I -
+ * W_j H (times the range rate's I - K_j H). */
 static int mix_half(mtt_split_work *wk, int n, const mtt_real xp[], mtt_real Pp[][NS], const mtt_real *const Rj[],
-                    uint16_t m, const uint8_t cl[], uint8_t h, const mtt_real w[], mtt_real nu[][2],
-                    mtt_real x[], mtt_real P[][NS], mtt_real Am[][NS])
+                    const mtt_split_rdot *rd, uint16_t m, const uint8_t cl[], uint8_t h, const mtt_real w[],
+                    mtt_real nu[][2], mtt_real x[], mtt_real P[][NS], mtt_real Am[][NS])
 {
     static const int sel[2] = {0, 1};
     mtt_real Rq[QMAX][QMAX] = {{MTT_R(0.0)}};
@@ -315,8 +363,9 @@ static int mix_half(mtt_split_work *wk, int n, const mtt_real xp[], mtt_real Pp[
     for (pass = 0; pass < 2; ++pass) {
         for (j = 0u; j < m; ++j) {
             if (cl[j] == h) {
+                const int16_t jt[2] = {(int16_t)j, -1};
                 rq_block(Rj[j], Rq, 0);
-                if (mix_term(wk, n, 2, sel, xp, Pp, Rq, nu[j], w[j], pass, Am) != 0) {
+                if (mix_term(wk, n, 2, sel, xp, Pp, Rq, nu[j], rd, jt, w[j], pass, Am) != 0) {
                     return -1;
                 }
             }
@@ -416,8 +465,9 @@ int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE]
 /* ---- model 5: just split ---- */
 
 int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                   const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], const mtt_real beta[],
-                   mtt_real vg, mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[],
+                   const mtt_real R[3], const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m,
+                   mtt_real z[][2], const mtt_real beta[], mtt_real vg, mtt_split_state xs, mtt_split_cov Ps,
+                   uint8_t cluster[],
                    mtt_real beta_n[], mtt_real *lik)
 {
     mtt_real(*Pq)[NS] = wk->Pq;
@@ -480,12 +530,14 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
         bs[cl[j]] += beta[j];
 #if MTT_WITH_MEAS_COV
         if (Rj != NULL) {
-            /* its own S_j (§3.1); the clusters stay on the track's S */
+            /* its own S_j (§3.1) and range rate (§3.2); the clusters stay
+             * on the track's S */
             mtt_real Sj[3], Sij[3], detj;
             if (innov2(Pq, 0, Rj[j], Sj, Sij, &detj) != 0) {
                 return -1;
             }
-            gs[cl[j]] += gauss2(quad2(Sij, nu[j][0], nu[j][1]), detj);
+            gs[cl[j]] += gauss2(quad2(Sij, nu[j][0], nu[j][1]), detj) *
+                         rdot_f(rd, j, xp, &Pq[0][0], NS, Sj, nu[j][0], nu[j][1]);
             continue;
         }
 #endif
@@ -493,6 +545,7 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
     }
 #if !MTT_WITH_MEAS_COV
     (void)Rj;
+    (void)rd;
 #endif
     for (h = 0; h < 2; ++h) {
         mtt_real nub[QMAX] = {MTT_R(0.0)}, sp[QMAX][QMAX] = {{MTT_R(0.0)}};
@@ -505,7 +558,7 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
         }
 #if MTT_WITH_MEAS_COV
         if (Rj != NULL) {
-            if (mix_half(wk, n, xp, Pq, Rj, m, cl, (uint8_t)h, bn, nu, xh[h], Ph[h], wk->Am[h]) != 0) {
+            if (mix_half(wk, n, xp, Pq, Rj, rd, m, cl, (uint8_t)h, bn, nu, xh[h], Ph[h], wk->Am[h]) != 0) {
                 return -1;
             }
             continue;
@@ -556,8 +609,8 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
 /* ---- model 6: split ---- */
 
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
-                         const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
-                         mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
+                         const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m, mtt_real z[][2],
+                         mtt_real pd, mtt_real pg, mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as)
 {
     mtt_real S[3], Si[2][3], det[2];
     uint16_t j;
@@ -578,6 +631,7 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
     }
 #else
     (void)Rj;
+    (void)rd;
 #endif
     for (t = 0; t < 2; ++t) {
         if (innov2(Pps, t * (int)n, R, S, Si[t], &det[t]) != 0) {
@@ -588,19 +642,22 @@ int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps
         const int o = t * (int)n;
         for (j = 0u; j < m; ++j) {
             const mtt_real *sit = Si[t];
-            mtt_real dt = det[t], d2, g;
+            mtt_real dt = det[t], d2, g, f = MTT_R(1.0);
 #if MTT_WITH_MEAS_COV
             mtt_real sij[3];
             if (Rj != NULL) {
                 (void)innov2(Pps, o, Rj[j], S, sij, &dt); /* its own S_tj (§3.1): checked above */
                 sit = sij;
+                /* its range rate at target t's prediction (§3.2) */
+                f = rdot_f(rd, j, &xps[o], &Pps[o][o], NS, S, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
             }
 #endif
             d2 = quad2(sit, z[j][0] - xps[o], z[j][1] - xps[o + 1]);
             /* PD V N: the detection factor of [S3] eq. 14 times V (the
              * ratio to V^-m), or PD N / lambda with a known clutter
-             * density; 0 outside the target's gate (not feasible). */
-            g = (lam > MTT_R(0.0)) ? gauss2(d2, dt) / lam : vg * gauss2(d2, dt);
+             * density (times a range rate's factor); 0 outside the
+             * target's gate (not feasible, a range rate's included). */
+            g = ((lam > MTT_R(0.0)) ? gauss2(d2, dt) / lam : vg * gauss2(d2, dt)) * f;
             as->a[t][j] = (d2 <= gamma) ? pd * g : MTT_R(0.0);
             as->nu[t][j][0] = z[j][0] - xps[o];
             as->nu[t][j][1] = z[j][1] - xps[o + 1];
@@ -688,10 +745,12 @@ int mtt_split_joint(mtt_split_assoc *as)
 /* Model 6's update with the detections' own R: the mixture over the
  * events theta != theta_0 of the stacked Kalman updates with R^s(theta) =
  * blockdiag(R_j1, R_j2) (an undetected target's block R, its innovation 0,
- * as in the form with one R), and theta_0's prediction (beta0). */
+ * as in the form with one R), each followed by the EKF steps of its
+ * detections' range rates on their targets' blocks, and theta_0's
+ * prediction (beta0). */
 static int mix_events(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps, mtt_split_cov Pps,
-                      const mtt_real R[3], const mtt_real *const Rj[], mtt_real z[][2], mtt_split_state xs,
-                      mtt_split_cov Ps)
+                      const mtt_real R[3], const mtt_real *const Rj[], const mtt_split_rdot *rd, mtt_real z[][2],
+                      mtt_split_state xs, mtt_split_cov Ps)
 {
     const int16_t m = (int16_t)as->m;
     const int n = (int)as->n;
@@ -704,6 +763,7 @@ static int mix_events(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_s
         for (j1 = -1; j1 < m; ++j1) {
             for (j2 = -1; j2 < m; ++j2) {
                 const mtt_real p = mtt_split_event_weight(as, j1, j2) / as->lik;
+                const int16_t jt[2] = {j1, j2};
                 mtt_real nu[QMAX];
                 if (!(p > MTT_R(0.0)) || (j1 < 0 && j2 < 0)) {
                     continue;
@@ -714,7 +774,7 @@ static int mix_events(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_s
                 nu[1] = (j1 >= 0) ? z[j1][1] - xps[1] : MTT_R(0.0);
                 nu[2] = (j2 >= 0) ? z[j2][0] - xps[n] : MTT_R(0.0);
                 nu[3] = (j2 >= 0) ? z[j2][1] - xps[n + 1] : MTT_R(0.0);
-                if (mix_term(wk, 2 * n, QMAX, sel, xps, Pps, Rq, nu, p, pass, NULL) != 0) {
+                if (mix_term(wk, 2 * n, QMAX, sel, xps, Pps, Rq, nu, rd, jt, p, pass, NULL) != 0) {
                     return -1;
                 }
             }
@@ -726,8 +786,8 @@ static int mix_events(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_s
 #endif
 
 int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps,
-                     mtt_split_cov Pps, const mtt_real R[3], const mtt_real *const Rj[], mtt_real z[][2],
-                     mtt_split_state xs, mtt_split_cov Ps)
+                     mtt_split_cov Pps, const mtt_real R[3], const mtt_real *const Rj[],
+                     const mtt_split_rdot *rd, mtt_real z[][2], mtt_split_state xs, mtt_split_cov Ps)
 {
     const int16_t m = (int16_t)as->m;
     const int n = (int)as->n;
@@ -741,10 +801,11 @@ int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_sp
     }
 #if MTT_WITH_MEAS_COV
     if (Rj != NULL) {
-        return mix_events(wk, as, xps, Pps, R, Rj, z, xs, Ps);
+        return mix_events(wk, as, xps, Pps, R, Rj, rd, z, xs, Ps);
     }
 #else
     (void)Rj;
+    (void)rd;
 #endif
     for (a = 0; a < QMAX; ++a) {
         zh[a] = xps[sel[a]];
@@ -836,8 +897,9 @@ void mtt_split_impulse_q(mtt_real dt, mtt_real dv, int across, mtt_real vx, mtt_
 /* ---- model 5's child half for a split of known speed ---- */
 
 int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                    const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], const uint8_t cluster[],
-                    const mtt_real beta_n[], mtt_real dv, mtt_real dt, uint8_t n_off, mtt_real vg,
+                    const mtt_real R[3], const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m,
+                    mtt_real z[][2], const uint8_t cluster[], const mtt_real beta_n[], mtt_real dv, mtt_real dt,
+                    uint8_t n_off, mtt_real vg,
                     mtt_split_state xs, mtt_split_cov Ps, mtt_real *lik)
 {
     mtt_real(*Pk)[NS] = wk->Pq; /* the child's prior */
@@ -919,8 +981,9 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
     Sai[2] = Sa[0] / deta;
 #if MTT_WITH_MEAS_COV
     if (Rj != NULL) {
-        /* the detections' own R (§3.1): each its own S_j on both priors,
-         * the child half the mixture of its single-detection updates */
+        /* the detections' own R (§3.1) and range rates (§3.2): each its
+         * own S_j on both priors, the child half the mixture of its
+         * single-detection updates */
         for (j = 0u; j < m; ++j) {
             mtt_real d2, pj, S[3];
             wk->nu[j][0] = z[j][0] - xk[0];
@@ -931,20 +994,22 @@ int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real
                                    &pj, S) != 0) {
                     return -1;
                 }
-                g[0] += pj;
+                g[0] += pj * rdot_f(rd, j, xp, &Pp[0][0], MTT_MAX_STATE, S, z[j][0] - xp[0], z[j][1] - xp[1]);
             } else {
                 if (innov2(Pk, 0, Rj[j], Sb, Sbi, &detb) != 0) {
                     return -1;
                 }
-                g[1] += gauss2(quad2(Sbi, wk->nu[j][0], wk->nu[j][1]), detb);
+                g[1] += gauss2(quad2(Sbi, wk->nu[j][0], wk->nu[j][1]), detb) *
+                        rdot_f(rd, j, xk, &Pk[0][0], NS, Sb, wk->nu[j][0], wk->nu[j][1]);
             }
         }
-        if (mix_half(wk, n, xk, Pk, Rj, m, cluster, 1u, wk->bn, wk->nu, wk->xh[0], wk->Ph[0], NULL) != 0) {
+        if (mix_half(wk, n, xk, Pk, Rj, rd, m, cluster, 1u, wk->bn, wk->nu, wk->xh[0], wk->Ph[0], NULL) != 0) {
             return -1;
         }
     } else
 #else
     (void)Rj;
+    (void)rd;
 #endif
     {
         for (j = 0u; j < m; ++j) {

@@ -18,8 +18,21 @@
  * predicted position); Rj (NULL: R for every measurement) each
  * measurement's own (ALGORITHMS.md §3.1, MTT_WITH_MEAS_COV): its S_j in
  * the gates and likelihoods, the mixture of single-detection updates (the
- * clusters of model 5 stay on the track's S). */
+ * clusters of model 5 stay on the track's S); rd (NULL: none) their range
+ * rates, taken with Rj. */
 #if MTT_WITH_SPLIT
+/* The validated set's range rates (polar, ALGORITHMS.md §3.2): rr[j]
+ * measurement j's range rate and its variance, or NULL.  A range rate
+ * multiplies its detection's gate and likelihood by mtt_polar_rdot_f at
+ * its target's prediction (model 6: that target's block), and each
+ * single-detection (single-event) update ends with its EKF step on that
+ * target's block (mtt_polar_rdot_step). */
+typedef struct mtt_split_rdot {
+    const mtt_real *const *rr;
+    const mtt_real *sensor; /* sensor_xy */
+    mtt_real gamma;         /* the range rate's gate threshold */
+    mtt_real vmax;          /* clutter range rates uniform on [-vmax, vmax] */
+} mtt_split_rdot;
 /* chi-square 0.99 quantile, 2 degrees of freedom: -2 ln 0.01 ([S3] eq. 27) */
 #define MTT_SPLIT_CHI2_99 MTT_R(9.2103403719761836)
 /* mtt_split_state, mtt_split_cov, mtt_split_assoc, mtt_split_work: mtt/state.h
@@ -41,8 +54,8 @@ int mtt_split_predict(mtt_split_work *wk, uint8_t n, mtt_real F[][MTT_MAX_STATE]
  * vg = V, the validation volume (1/lambda for a known clutter density
  * lambda: the m_i - 1 others are clutter of density lambda). */
 int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                   const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2],
-                   const mtt_real beta[],
+                   const mtt_real R[3], const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m,
+                   mtt_real z[][2], const mtt_real beta[],
                    mtt_real vg, mtt_split_state xs, mtt_split_cov Ps, uint8_t cluster[],
                    mtt_real beta_n[], mtt_real *lik);
 
@@ -52,7 +65,7 @@ int mtt_split_just(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real 
  * detection factor is PD N / lam, no factorials; lik is the ratio to the
  * all-clutter density, the scale of the IPDA L of ALGORITHMS.md §6). */
 int mtt_split_assoc_init(uint8_t n, const mtt_split_state xps, mtt_split_cov Pps, const mtt_real R[3],
-                         const mtt_real *const Rj[], uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
+                         const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m, mtt_real z[][2], mtt_real pd, mtt_real pg,
                          mtt_real gamma, mtt_real vg, mtt_real lam, mtt_split_assoc *as);
 /* Unnormalised weight of the joint event (j1, j2) (measurement index of
  * target 1 and 2, -1 = undetected): (phi!/m!) prod PD V N prod (1 - PD PG);
@@ -63,8 +76,8 @@ int mtt_split_joint(mtt_split_assoc *as);
 /* Coupled update of the stacked state (ALGORITHMS.md §14.3, corrected
  * bracket of [S3] eq. 25), after mtt_split_joint. */
 int mtt_split_update(mtt_split_work *wk, const mtt_split_assoc *as, const mtt_split_state xps,
-                     mtt_split_cov Pps, const mtt_real R[3], const mtt_real *const Rj[], mtt_real z[][2],
-                     mtt_split_state xs, mtt_split_cov Ps);
+                     mtt_split_cov Pps, const mtt_real R[3], const mtt_real *const Rj[],
+                     const mtt_split_rdot *rd, mtt_real z[][2], mtt_split_state xs, mtt_split_cov Ps);
 /* Model 5's velocity impulse over dt (ALGORITHMS.md §14.3 [CHOICE]): a
  * velocity change of standard deviation dv, per axis the blocks position
  * dv^2 dt^2 / 2, cross dv^2 dt / 2, velocity dv^2; with across only across
@@ -90,8 +103,8 @@ int mtt_split_normal(mtt_real vx, mtt_real vy, mtt_real *nx, mtt_real *ny);
 #define MTT_SPLIT_KNOWN_SD MTT_R(0.15)
 #define MTT_SPLIT_KNOWN_MAX_OFFSETS 4u
 int mtt_split_known(mtt_split_work *wk, uint8_t n, const mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE],
-                    const mtt_real R[3], const mtt_real *const Rj[], uint16_t m, mtt_real z[][2],
-                    const uint8_t cluster[],
+                    const mtt_real R[3], const mtt_real *const Rj[], const mtt_split_rdot *rd, uint16_t m,
+                    mtt_real z[][2], const uint8_t cluster[],
                     const mtt_real beta_n[], mtt_real dv, mtt_real dt, uint8_t n_off, mtt_real vg,
                     mtt_split_state xs, mtt_split_cov Ps, mtt_real *lik);
 /* Decoupling test [S3] eq. 27 on a stacked prediction: *d2 = (z1 - z2)'

@@ -73,7 +73,10 @@
  * the validated sets carry each measurement's R (own, or meas_sigma's),
  * which split.c takes when one of them has its own; the windows widen as
  * the gate's (mtt_gate_own_widen), and the track's R is the polar one at
- * the predicted position.  The reported estimate of a track stays
+ * the predicted position; their range rates go with them (split.c), and
+ * a detection with one in a confirmed track's position gate is left to
+ * the split modes, not to initiation, even outside the track's range-rate
+ * gate (hold_rdot).  The reported estimate of a track stays
  * the single-target IMM's (the split modes enter it at decoupling). */
 #include <string.h>
 
@@ -116,6 +119,26 @@ static const mtt_real *const *set_r(const mtt_tracker *trk)
     return (trk->split_scr.n_own > 0u) ? trk->split_scr.rz : NULL;
 #else
     (void)trk;
+    return NULL;
+#endif
+}
+
+/* The validated set's range rates for split.c (ALGORITHMS.md §3.2), in
+ * rd: NULL when none has one. */
+static const mtt_split_rdot *set_rd(const mtt_tracker *trk, mtt_split_rdot *rd)
+{
+#if MTT_WITH_MEAS_COV
+    if (trk->split_scr.n_rdot == 0u) {
+        return NULL;
+    }
+    rd->rr = trk->split_scr.rr;
+    rd->sensor = trk->par.sensor_xy;
+    rd->gamma = trk->gamma;
+    rd->vmax = trk->par.vmax;
+    return rd;
+#else
+    (void)trk;
+    (void)rd;
     return NULL;
 #endif
 }
@@ -204,6 +227,7 @@ static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], 
     int t;
 #if MTT_WITH_MEAS_COV
     sc->n_own = 0;
+    sc->n_rdot = 0;
 #endif
     for (t = 0; t < nt; ++t) {
         wo[t][0] = w[t][0];
@@ -225,6 +249,8 @@ static uint16_t gather(mtt_tracker *trk, uint16_t ti, int nt, mtt_real c[2][2], 
 #if MTT_WITH_MEAS_COV
             sc->rz[m] = mtt_meas_r(trk, ms);
             sc->n_own = (uint16_t)(sc->n_own + ms->has_R);
+            sc->rr[m] = ms->has_rdot ? ms->rr : NULL;
+            sc->n_rdot = (uint16_t)(sc->n_rdot + ms->has_rdot);
 #endif
             ++m;
         }
@@ -263,6 +289,8 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     mtt_real(*Q)[MTT_MAX_STATE] = sc->Q6;
     mtt_real d2, Rb[3];
     const mtt_real *R;
+    const mtt_split_rdot *rd;
+    mtt_split_rdot rdb;
     uint16_t m;
     int a;
     *dec = 0;
@@ -279,10 +307,11 @@ static mtt_real model6(mtt_tracker *trk, uint16_t ti, const mtt_split_slot *sl, 
     }
     m = split_candidates(trk, ti, sc->xp, sc->Pp);
     R = track_r(trk, sc->xp, Rb); /* polar: at the parent's predicted position */
-    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, R, set_r(trk), m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
+    rd = set_rd(trk, &rdb);
+    if (mtt_split_assoc_init(N1, sc->xp, sc->Pp, R, set_r(trk), rd, m, sc->z, p->pd, p->pg, trk->gamma, tf->vg,
                              tf->lambda, &sc->as) != 0 ||
         mtt_split_joint(&sc->as) != 0 ||
-        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, R, set_r(trk), sc->z, sc->x0, sc->P0) != 0) {
+        mtt_split_update(&sc->wk, &sc->as, sc->xp, sc->Pp, R, set_r(trk), rd, sc->z, sc->x0, sc->P0) != 0) {
         return MTT_R(0.0);
     }
     /* [CHOICE] on the updated stacked state, on P_11 + P_22 unless
@@ -318,9 +347,10 @@ static void impulse_to_child(mtt_tracker *trk, uint16_t ti, uint16_t m)
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t cm = mtt_params_cv_model(&trk->par);
     mtt_real lik, Rb[3];
+    mtt_split_rdot rdb;
     int a, b;
-    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], track_r(trk, tf->xpm[cm], Rb), set_r(trk), m,
-                       sc->z, sc->beta,
+    if (mtt_split_just(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], track_r(trk, tf->xpm[cm], Rb), set_r(trk),
+                       set_rd(trk, &rdb), m, sc->z, sc->beta,
                        MTT_R(1.0) / tf->lambda, sc->xp, sc->Pp, sc->cluster, sc->beta_n, &lik) != 0) {
         return; /* the impulse then stays in both halves */
     }
@@ -392,6 +422,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_real(*P5)[MTT_MAX_STATE] = sc->P5p; /* Q_s, then P̄_cv + Q_s (scratch: not the stack) */
     mtt_real K[MTT_MAX_STATE][2];
     mtt_real S[3], Si[3], det, c[2][2], w[2][2], lik = MTT_R(0.0), Rb[3];
+    mtt_split_rdot rdb;
     const mtt_real *R = track_r(trk, tf->xpm[cm], Rb); /* polar: at the cv prediction */
     const int known = p->split_known_speed && p->split_dv > MTT_R(0.0);
     int late = 0; /* the late look of split_known_speed */
@@ -428,11 +459,14 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     for (j = 0; j < m; ++j) {
 #if MTT_WITH_MEAS_COV
         if (set_r(trk) != NULL) {
-            /* N(z_j; ẑ_5, S_5j) with its own R (§3.1) */
+            /* N(z_j; ẑ_5, S_5j) with its own R (§3.1), times its range
+             * rate's factor (§3.2) */
             mtt_real d2, Sj[3];
             if (mtt_meas_gauss(P5[0], P5[1], sc->rz[j], MTT_R(1.0), sc->z[j][0] - c[0][0], sc->z[j][1] - c[0][1],
                                &d2, &sc->beta[j], Sj) != 0) {
                 sc->beta[j] = MTT_R(0.0);
+            } else if (sc->rr[j] != NULL) {
+                sc->beta[j] *= mtt_polar_rdot_lik(trk, tf->xpm[cm], P5[0], Sj, &trk->meas[sc->zi[j]]);
             }
             continue;
         }
@@ -442,7 +476,7 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (late && m >= 2u) {
         late_centres(trk, ti, m, Si, dt, nx, ny);
     }
-    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, R, set_r(trk), m, sc->z, sc->beta,
+    if (m < 2u || mtt_split_just(&sc->wk, N1, tf->xpm[cm], P5, R, set_r(trk), set_rd(trk, &rdb), m, sc->z, sc->beta,
                                  MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, sc->cluster, sc->beta_n,
                                  &lik) != 0) {
         return MTT_R(0.0);
@@ -453,7 +487,8 @@ static mtt_real model5(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     if (known) {
         /* the child's half at the known speed; on failure the impulse's stays */
         mtt_real lk;
-        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], R, set_r(trk), m, sc->z, sc->cluster,
+        if (mtt_split_known(&sc->wk, N1, tf->xpm[cm], tf->Ppm[cm], R, set_r(trk), set_rd(trk, &rdb), m, sc->z,
+                            sc->cluster,
                             sc->beta_n, p->split_dv, dt, late ? KNOWN_LATE_OFFSETS : 1u,
                             MTT_R(1.0) / tf->lambda, sc->x5, sc->P5, &lk) == 0) {
             lik = lk;
@@ -519,6 +554,32 @@ static int decouple(mtt_tracker *trk, uint16_t ti, mtt_real ps, mtt_real dt)
     trk->stats.last.splits++;
     return 0;
 }
+
+#if MTT_WITH_MEAS_COV
+/* [CHOICE] A detection with a range rate whose position is in confirmed
+ * track ti's gate (any model's, on its own S_j) is left to ti's split
+ * modes, not to initiation: without its range rate the gate would have
+ * taken it (marked used), with it the range-rate gate drops the split's
+ * child, which initiation would then start as a second child beside the
+ * one the split modes decouple (ALGORITHMS.md §14.3). */
+static void hold_rdot(mtt_tracker *trk, uint16_t ti)
+{
+    const mtt_track_frame *tf = &trk->tf[ti];
+    uint16_t j;
+    uint8_t k;
+    for (j = 0; j < trk->n_meas; ++j) {
+        mtt_mstore *ms = &trk->meas[j];
+        for (k = 0; k < trk->par.imm_n_models && ms->has_rdot && !ms->used; ++k) {
+            mtt_real d2, p, S[3];
+            if (mtt_meas_gauss(tf->Ppm[k][0], tf->Ppm[k][1], ms->R, trk->par.pg, ms->x - tf->xpm[k][0],
+                               ms->y - tf->xpm[k][1], &d2, &p, S) == 0 &&
+                d2 <= trk->gamma) {
+                ms->used = 1;
+            }
+        }
+    }
+}
+#endif
 
 /* The split modes of one confirmed IMM track after its update. */
 static void split_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -618,6 +679,9 @@ void mtt_split_frame(mtt_tracker *trk, mtt_real dt)
             continue;
         }
         split_track(trk, i, dt);
+#if MTT_WITH_MEAS_COV
+        hold_rdot(trk, i);
+#endif
     }
 }
 

@@ -92,7 +92,7 @@ run_config() {
       # Host-tool checks of the full settings table (every key, the IMM
       # keys, a run with split, docs/FORMATS.md's and CONFIGURATION.md's tables) and the
       # baseline-mode refusal case describe the default build, not this one.
-      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|cli\.polar_.*|cli\.det_polar_bad_range|cli\.det_polar_bearing|cli\.det_polar_range_rate|cli\.det_polar_split_range_rate|cli\.det_cartesian_polar_settings|cli\.cov_valid|docs\.settings_table|docs\.configuration)$'
+      exclude='^(symbols\.no_malloc_no_stdio|package\.consumer|cli\.cfg_unsupported_association|cli\.list_settings|cli\.cfg_imm_.*|cli\.cfg_split_valid|cli\.polar_.*|cli\.det_polar_bad_range|cli\.det_polar_bearing|cli\.det_polar_range_rate|cli\.det_cartesian_polar_settings|cli\.cov_valid|docs\.settings_table|docs\.configuration)$'
       what="host-float-small: float, configs/firmware.h"
       ;;
   esac

@@ -389,13 +389,6 @@ static int run(const options *o)
         rc = EXIT_INPUT;
         goto done;
     }
-    if (det.has_range_rate && settings.params.split) {
-        mtt_io_error_key(o->config, "split",
-                         "split = true takes no range rates (docs/ALGORITHMS.md §14.3): %s has a range_rate "
-                         "column; drop it or set \"split\": false", o->detections);
-        rc = EXIT_INPUT;
-        goto done;
-    }
     if (det.has_range_rate && !(settings.params.range_rate_sigma > 0)) {
         mtt_io_error_key(o->config, "range_rate_sigma",
                          "missing: %s has range rates, which need their standard deviation (length/time)",

@@ -135,21 +135,21 @@ def test_polar_step_with_range_rate():
     assert no_sigma.time is None
 
 
-def test_split_takes_polar_but_no_range_rate():
-    """split = true tracks polar detections (ALGORITHMS.md section 14.3) and refuses range rates."""
+def test_split_takes_polar_and_range_rates():
+    """split = true tracks polar detections and their range rates (ALGORITHMS.md sections 3.2, 14.3)."""
     s = dict(SETTINGS_RR, motion="imm", split=True,
              imm_models=[{"model": "cv", "process_psd": 1.0}, {"model": "ca", "process_psd": 50.0}],
              imm_transition=[[0.95, 0.05], [0.1, 0.9]], imm_initial=[0.9, 0.1])
     zs, truth = scene()
-    trk = mtt.Tracker(s)
-    for k, z in enumerate(zs):
-        conf = [t for t in trk.step(float(k), z) if t.confirmed]
-    assert len(conf) == 1
-    assert np.hypot(*(conf[0].state[:2] - truth[-1])) < 30.0
     zr, _ = scene_rr()
-    with pytest.raises(ValueError, match="split = true does not take"):
-        trk.step(100.0, zr[0])
-    assert trk.time == 39.0
+    for scans in (zs, zr):
+        trk = mtt.Tracker(s)
+        for k, z in enumerate(scans):
+            conf = [t for t in trk.step(float(k), z) if t.confirmed]
+        assert len(conf) == 1
+        assert np.hypot(*(conf[0].state[:2] - truth[-1])) < 30.0
+        if scans is zr:
+            assert np.hypot(*(conf[0].state[2:4] - (80.0, 10.0))) < 3.0  # the velocity, m/s
 
 
 def test_stonesoup_takes_bearing_range_rate_detections():

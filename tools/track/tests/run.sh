@@ -414,9 +414,15 @@ polar_split_modes)
              $1 == 14 && $3 == 0 && $c >= 0.9 { ok = 1 } END { exit !ok }' "$out" ||
         fail "track 0 without P(split) >= 0.9 at scan 14"
     ;;
-det_polar_split_range_rate)
-    expect_fail 2 "polar_split.json: key 'split': split = true takes no range rates" \
-        "$data/polar_split.json" "$data/polar_rr.det.csv" ;;
+polar_split_range_rate)
+    # the split modes take the range rates too (polar_split_rr.det.csv): the
+    # child splits off track 0 and is confirmed near (129, 67) at scan 29
+    rm -f "$out"
+    run --config "$data/polar_split_rr.json" --detections "$data/polar_split_rr.det.csv" --tracks "$out"
+    [ "$rc" -eq 0 ] || fail "exit code $rc, expected 0"
+    awk -F, '$1 == 29 && $4 == "confirmed" && $NF == "0" && ($5 - 129) ^ 2 + ($6 - 67) ^ 2 < 4 { ok = 1 }
+             END { exit !ok }' "$out" || fail "no child of track 0 confirmed near (129, 67) at scan 29"
+    ;;
 det_polar_cartesian_settings)
     # the header names the form, the settings must agree
     expect_fail 2 "polar.det.csv:3: field 'range': the header is the polar (range,bearing) form but" \
