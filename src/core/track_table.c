@@ -55,23 +55,13 @@ int mtt_track_append(mtt_tracker *trk, const mtt_state x, mtt_cov P, mtt_real ex
 
 /* Delete (numerically invalid, merged away, existence below the terminate
  * threshold, lost), then confirm, then compact in place, keeping the order. */
-/* γ R_kk: the measurement's own gate along k (0: x, 2: y), a variance;
- * R is meas_sigma's, under polar the converted one at the track. */
-static mtt_real noise_gate(const mtt_tracker *trk, const mtt_track *t, int k)
+/* γ R_kk: the measurement's own gate along k (0: x, 2: y), a variance. */
+static mtt_real noise_gate(const mtt_tracker *trk, const mtt_real R[3], int k)
 {
-#if MTT_WITH_POLAR
-    mtt_real Rb[3];
-    const mtt_real *R = mtt_polar_track_r(trk, t->x, Rb);
-#else
-    const mtt_real *R = trk->R;
-    (void)t;
-#endif
 #ifdef MTT_REAL_FIXED
-    {
-        const mtt_real Sk[MTT_SYM_SLOTS] = {R[0], R[1], R[2], -MTT_FX_VAR_FRAC};
-        const mtt_pos w = MTT_GATE_WIDTH(trk->gamma, Sk, k); /* sqrt(γ R_kk), rounded up */
-        return MTT_VAR_OF(w);
-    }
+    const mtt_real Sk[MTT_SYM_SLOTS] = {R[0], R[1], R[2], -MTT_FX_VAR_FRAC};
+    const mtt_pos w = MTT_GATE_WIDTH(trk->gamma, Sk, k); /* sqrt(γ R_kk), rounded up */
+    return MTT_VAR_OF(w);
 #else
     return trk->gamma * R[k];
 #endif
@@ -79,21 +69,29 @@ static mtt_real noise_gate(const mtt_tracker *trk, const mtt_track *t, int k)
 
 /* Lost (ALGORITHMS.md §12.4 [CHOICE]): a track's position variance along x
  * or y beyond (vmax ΔT)^2 + γ R, the farthest a target flies between frames
- * and the measurement's own gate, ΔT the longer of this frame's interval
- * and the last one's (interleaved sensors).  Its gate then reaches beyond
- * the two-point start's, clutter keeps it alive, and a new start does
- * better.  Not for a track born this frame (no update yet), nor with
- * terminate_threshold 0 (never delete). */
+ * and the measurement's own gate (R meas_sigma's, under polar the converted
+ * one at the track), ΔT the longer of this frame's interval and the last
+ * one's (interleaved sensors).  Its gate then reaches beyond the two-point
+ * start's, clutter keeps it alive, and a new start does better.  Not for a
+ * track born this frame (no update yet), nor with terminate_threshold 0
+ * (never delete). */
 static int lost(const mtt_tracker *trk, const mtt_track *t, mtt_real dt)
 {
     const mtt_real r = MTT_MUL_T((dt > trk->dt_last) ? dt : trk->dt_last, trk->par.vmax);
+    const mtt_real *R = trk->R;
     mtt_real r2;
+#if MTT_WITH_POLAR
+    mtt_real Rb[3];
+#endif
     if (!(r > MTT_ZERO) || !(trk->par.terminate_threshold > MTT_ZERO)) {
         return 0;
     }
+#if MTT_WITH_POLAR
+    R = mtt_polar_track_r(trk, t->x, Rb);
+#endif
     r2 = MTT_VAR_OF(r);
-    return MTT_COV_VIEW(t->P, 0, 0) > MTT_ADDS(r2, noise_gate(trk, t, 0)) ||
-           MTT_COV_VIEW(t->P, 1, 1) > MTT_ADDS(r2, noise_gate(trk, t, 2));
+    return MTT_COV_VIEW(t->P, 0, 0) > MTT_ADDS(r2, noise_gate(trk, R, 0)) ||
+           MTT_COV_VIEW(t->P, 1, 1) > MTT_ADDS(r2, noise_gate(trk, R, 2));
 }
 
 void mtt_track_manage(mtt_tracker *trk, mtt_real dt)
