@@ -78,10 +78,12 @@ static mtt_real noise_gate(const mtt_tracker *trk, const mtt_real R[3], int k)
 static int lost(const mtt_tracker *trk, const mtt_track *t, mtt_real dt)
 {
     const mtt_real r = MTT_MUL_T((dt > trk->dt_last) ? dt : trk->dt_last, trk->par.vmax);
-    const mtt_real *R = trk->R;
     mtt_real r2;
 #if MTT_WITH_POLAR
     mtt_real Rb[3];
+    const mtt_real *R;
+#else
+    const mtt_real *R = trk->R;
 #endif
     if (!(r > MTT_ZERO) || !(trk->par.terminate_threshold > MTT_ZERO)) {
         return 0;
