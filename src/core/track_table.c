@@ -68,37 +68,46 @@ static mtt_real noise_gate(const mtt_tracker *trk, const mtt_real R[3], int k)
 }
 
 /* Lost (ALGORITHMS.md §12.4 [CHOICE]): a track's position variance along x
- * or y beyond (vmax ΔT)^2 + γ R, the farthest a target flies between frames
- * and the measurement's own gate (R meas_sigma's, under polar the converted
- * one at the track), ΔT the longer of this frame's interval and the last
- * one's (interleaved sensors).  Its gate then reaches beyond the two-point
- * start's, clutter keeps it alive, and a new start does better.  Not for a
- * track born this frame (no update yet), nor with terminate_threshold 0
- * (never delete). */
-static int lost(const mtt_tracker *trk, const mtt_track *t, mtt_real dt)
+ * or y beyond b = (vmax ΔT)^2 + γ R, the farthest a target flies between
+ * frames and the measurement's own gate, ΔT the longer of this frame's
+ * interval and the last one's (interleaved sensors).  Its gate then
+ * reaches beyond the two-point start's, clutter keeps it alive, and a new
+ * start does better.  b is the frame's, from meas_sigma's R; under polar
+ * it is formed at each track with its converted R. */
+static void lost_bound(const mtt_tracker *trk, const mtt_real R[3], mtt_real r2, mtt_real b[2])
 {
-    const mtt_real r = MTT_MUL_T((dt > trk->dt_last) ? dt : trk->dt_last, trk->par.vmax);
-    mtt_real r2;
+    b[0] = MTT_ADDS(r2, noise_gate(trk, R, 0));
+    b[1] = MTT_ADDS(r2, noise_gate(trk, R, 2));
+}
+
+static int lost(const mtt_tracker *trk, const mtt_track *t, mtt_real r2, const mtt_real b0[2])
+{
+    const mtt_real *b = b0;
 #if MTT_WITH_POLAR
-    mtt_real Rb[3];
-    const mtt_real *R;
-#else
-    const mtt_real *R = trk->R;
-#endif
-    if (!(r > MTT_ZERO) || !(trk->par.terminate_threshold > MTT_ZERO)) {
-        return 0;
+    mtt_real Rb[3], bp[2];
+    if (trk->par.measurement == MTT_MEASUREMENT_POLAR) {
+        lost_bound(trk, mtt_polar_track_r(trk, t->x, Rb), r2, bp);
+        b = bp;
     }
-#if MTT_WITH_POLAR
-    R = mtt_polar_track_r(trk, t->x, Rb);
+#else
+    (void)trk;
+    (void)r2;
 #endif
-    r2 = MTT_VAR_OF(r);
-    return MTT_COV_VIEW(t->P, 0, 0) > MTT_ADDS(r2, noise_gate(trk, R, 0)) ||
-           MTT_COV_VIEW(t->P, 1, 1) > MTT_ADDS(r2, noise_gate(trk, R, 2));
+    return MTT_COV_VIEW(t->P, 0, 0) > b[0] || MTT_COV_VIEW(t->P, 1, 1) > b[1];
 }
 
 void mtt_track_manage(mtt_tracker *trk, mtt_real dt)
 {
+    /* the lost test's bound, once per frame; none for a track born this
+     * frame (no update yet), nor with terminate_threshold 0 (never delete) */
+    const mtt_real r = MTT_MUL_T((dt > trk->dt_last) ? dt : trk->dt_last, trk->par.vmax);
+    const int check = (r > MTT_ZERO) && (trk->par.terminate_threshold > MTT_ZERO);
+    mtt_real r2 = MTT_ZERO, b[2] = {MTT_ZERO, MTT_ZERO};
     uint16_t i, n = 0;
+    if (check) {
+        r2 = MTT_VAR_OF(r);
+        lost_bound(trk, trk->R, r2, b);
+    }
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track *t = &trk->tracks[i];
         if (!t->born && !trk->tf[i].valid) {
@@ -108,7 +117,7 @@ void mtt_track_manage(mtt_tracker *trk, mtt_real dt)
         if (t->dead) {
             continue; /* merged away, counted in merges */
         }
-        if (t->existence < trk->par.terminate_threshold || (!t->born && lost(trk, t, dt))) {
+        if (t->existence < trk->par.terminate_threshold || (check && !t->born && lost(trk, t, r2, b))) {
             trk->stats.last.deletions++;
             continue;
         }
