@@ -230,6 +230,14 @@ static int cov_fields(const mtt_io_csv *c, int empty_row, mtt_meas_cov *r, unsig
     r->r_xx = (mtt_real)v[0];
     r->r_xy = (mtt_real)v[1];
     r->r_yy = (mtt_real)v[2];
+    if (!(r->r_xx > 0) || !(r->r_yy > 0)) { /* a variance below mtt_real's smallest (fuzz: 3e-93 in float) */
+        k = r->r_xx > 0 ? COL_RYY : COL_RXX;
+        mtt_io_error_at(c->path, c->line, col_names(c)[k],
+                        "'%s' is 0 in this build's mtt_real (" MTT_IO_REAL_NAME "): a variance must be > 0",
+                        c->fields[k]);
+        memset(r, 0, sizeof *r);
+        return MTT_IO_EINPUT;
+    }
 #endif
     return MTT_IO_OK;
 }
