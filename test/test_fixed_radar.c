@@ -253,6 +253,74 @@ static void test_motion_from_max_accel(void)
     TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_check(&p, &bad));
 }
 
+#if MTT_WITH_IMM
+/* The derived IMM (ALGORITHMS.md §2.2) in fixed point against its formulas
+ * in double, for a as the position format holds it: a steady cv model with
+ * (a/10)^2 dT and a manoeuvring one with a^2 dT (one rounding each: 1/2
+ * unit of Q4, plus a/10's rounding, 2^-10 relative at most), rates 1/tau = a / vmax out of the manoeuvre and a
+ * tenth of it in, Pi(dT) = the two-state chain's closed form (exp within
+ * 8 units of Q30, the quotient 1/2 unit). */
+static void pi_expect(double a, double vmax, double dt, double Pi[2][2])
+{
+    const double l10 = a / vmax, l01 = 0.1 * l10, sr = l01 + l10, g = 1.0 - exp(-sr * dt);
+    Pi[0][1] = l01 / sr * g;
+    Pi[0][0] = 1.0 - Pi[0][1];
+    Pi[1][0] = l10 / sr * g;
+    Pi[1][1] = 1.0 - Pi[1][0];
+}
+
+static void test_imm_from_max_accel(void)
+{
+    const double a = pos_d(pos(9.81)), dt = 4.7, ulp = 0x1p-30 * 16.0; /* a as the build holds it */
+    const double lv[2] = {0.01 * a * a, a * a};
+    double Pi[2][2];
+    mtt_params p, r;
+    mtt_meas m;
+    int i, j;
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.process_psd = 0;
+    p.motion = MTT_MOTION_AUTO;
+    p.max_accel = pos(a);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT(MTT_MOTION_IMM, r.motion);
+    TEST_ASSERT_EQUAL_UINT8(2u, r.imm_n_models);
+    pi_expect(a, 350.0, 1.0, Pi);
+    for (j = 0; j < 2; ++j) {
+        TEST_ASSERT_EQUAL_INT(MTT_MODEL_CV, r.imm_model[j]);
+        TEST_ASSERT_DOUBLE_WITHIN(lv[j] * 0x1p-10 + 0x1p-5, lv[j], mtt_fx_to_double(r.imm_psd[j], MTT_FX_VAR_FRAC));
+        for (i = 0; i < 2; ++i) {
+            TEST_ASSERT_DOUBLE_WITHIN(1e-6 + ulp, Pi[i][j], mtt_fx_to_double(r.imm_transition[i][j], MTT_FX_PROB_FRAC));
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    m = sim_meas(pos(1000.0), pos(2000.0), MTT_ZERO, 0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(100.0), &m, 1));
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME(100.0 + dt), &m, 1));
+    pi_expect(a, 350.0, mtt_fx_to_double(MTT_TIME(dt), MTT_FX_T_FRAC), Pi);
+    for (j = 0; j < 2; ++j) {
+        TEST_ASSERT_DOUBLE_WITHIN(lv[j] * dt * 0x1p-10 + 0x1p-4, lv[j] * dt,
+                                  mtt_fx_to_double(trk.par.imm_psd[j], MTT_FX_VAR_FRAC));
+        for (i = 0; i < 2; ++i) {
+            TEST_ASSERT_DOUBLE_WITHIN(1e-6 + ulp, Pi[i][j],
+                                      mtt_fx_to_double(trk.par.imm_transition[i][j], MTT_FX_PROB_FRAC));
+        }
+    }
+    /* a steady level below the format's unit is one unit ((0.25/10)^2 = 6.25e-4 m^2: 0.01 units) */
+    p.max_accel = pos(0.25);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_params_resolve(&p, &r));
+    TEST_ASSERT_EQUAL_INT32(1, r.imm_psd[0]);
+    /* ca and ct are float only */
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.motion = MTT_MOTION_IMM;
+    p.imm_model[1] = MTT_MODEL_CA;
+    {
+        const char *bad = NULL;
+        TEST_ASSERT_EQUAL_INT(MTT_ERR_UNSUPPORTED, mtt_params_check(&p, &bad));
+        TEST_ASSERT_EQUAL_STRING("imm_models", bad);
+    }
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -262,5 +330,8 @@ int main(void)
     RUN_TEST(test_target_at_400_km_tracked);
     RUN_TEST(test_full_scan_fits);
     RUN_TEST(test_motion_from_max_accel);
+#if MTT_WITH_IMM
+    RUN_TEST(test_imm_from_max_accel);
+#endif
     return UNITY_END();
 }

@@ -248,6 +248,9 @@ static void test_tv3_gate_frame(void)
     trk.par.pg = MTT_P(0.99);
     trk.par.clutter_density = DENS;
     trk.gamma = mtt_gate_gamma(trk.par.pg);
+#ifdef MTT_REAL_FIXED
+    mtt_fx_gate_consts(trk.gamma, trk.par.pg, trk.par.clutter_density, trk.gc); /* as mtt_tracker_init */
+#endif
     memset(Pp, 0, sizeof Pp);
     for (i = 0; i < 4; ++i) {
 #ifdef MTT_REAL_FIXED

@@ -14,10 +14,12 @@
 #endif
 
 /* The fixed-point build (MTT_REAL_FIXED, docs/FIXED_POINT.md) covers the
- * firmware configuration: lm-ihpda, ihpda, lm-ipda, ipda with CV motion.
- * The IMM, the baselines, lm-ihpda's contest variant and the split models
- * default to 0 there (their settings report MTT_ERR_UNSUPPORTED, as in any
- * build without them) and cannot be switched on (checked below). */
+ * firmware configuration: lm-ihpda, ihpda, lm-ipda, ipda with CV motion,
+ * and with MTT_WITH_IMM 1 an IMM of cv models (the real-target default,
+ * ALGORITHMS.md §2.2; ca and ct stay float).  The IMM defaults to 0 there;
+ * the baselines, lm-ihpda's contest variant and the split models are 0
+ * (their settings report MTT_ERR_UNSUPPORTED, as in any build without
+ * them) and cannot be switched on (checked below). */
 #ifdef MTT_REAL_FIXED
 #ifndef MTT_WITH_IMM
 #define MTT_WITH_IMM 0
@@ -100,9 +102,10 @@
  * constant-velocity model needs 4 (x, y, vx, vy), constant acceleration 6
  * (x, y, vx, vy, ax, ay), the coordinated turn 5 (x, y, vx, vy, omega).
  * Every model's first four components are [x y vx vy] (the common subspace
- * of the IMM mixing, ALGORITHMS.md §14.1). */
+ * of the IMM mixing, ALGORITHMS.md §14.1).  The fixed-point IMM has cv
+ * models only: 4. */
 #ifndef MTT_MAX_STATE
-#if MTT_WITH_IMM
+#if MTT_WITH_IMM && !defined(MTT_REAL_FIXED)
 #define MTT_MAX_STATE 6
 #else
 #define MTT_MAX_STATE 4
@@ -161,8 +164,14 @@
 #if MTT_WITH_IMM && MTT_MAX_MODELS < 2
 #error "MTT_WITH_IMM needs MTT_MAX_MODELS >= 2"
 #endif
-#if MTT_WITH_IMM && MTT_MAX_STATE < 6
+#if MTT_WITH_IMM && MTT_MAX_STATE < 6 && !defined(MTT_REAL_FIXED)
 #error "MTT_WITH_IMM needs MTT_MAX_STATE >= 6 (the constant-acceleration model)"
+#endif
+/* The ca and ct models (src/imm/motion_ca.c, motion_ct.c): float and double. */
+#if MTT_WITH_IMM && !defined(MTT_REAL_FIXED)
+#define MTT_WITH_IMM_CACT 1
+#else
+#define MTT_WITH_IMM_CACT 0
 #endif
 #if MTT_WITH_BASELINES != 0 && MTT_WITH_BASELINES != 1
 #error "MTT_WITH_BASELINES must be 0 or 1"
@@ -253,8 +262,8 @@
 #define MTT_WITH_POLAR 0
 #endif
 
-#if defined(MTT_REAL_FIXED) && (MTT_WITH_IMM || MTT_WITH_BASELINES || MTT_WITH_CONTEST || MTT_WITH_SPLIT)
-#error "MTT_REAL_FIXED covers the firmware configuration: MTT_WITH_IMM, MTT_WITH_BASELINES, MTT_WITH_CONTEST and MTT_WITH_SPLIT must be 0"
+#if defined(MTT_REAL_FIXED) && (MTT_WITH_BASELINES || MTT_WITH_CONTEST || MTT_WITH_SPLIT)
+#error "MTT_REAL_FIXED covers the firmware configuration: MTT_WITH_BASELINES, MTT_WITH_CONTEST and MTT_WITH_SPLIT must be 0"
 #endif
 
 #endif /* MTT_CONFIG_H */

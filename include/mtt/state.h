@@ -37,7 +37,7 @@ typedef struct mtt_track {
      * estimate; these the model-conditioned ones and the mode probabilities. */
     mtt_real mu[MTT_MAX_MODELS];
     mtt_real xm[MTT_MAX_MODELS][MTT_MAX_STATE];
-    mtt_real Pm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real Pm[MTT_MAX_MODELS][MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE]; /* mtt_cov each */
 #endif
 #if MTT_WITH_SPLIT
     /* split = true (ALGORITHMS.md §14.3, src/split/split_track.c) */
@@ -76,12 +76,16 @@ typedef struct mtt_track_frame {
      * probability c̄_j and the model's own prediction and innovation. */
     mtt_real cbar[MTT_MAX_MODELS];
     mtt_real xpm[MTT_MAX_MODELS][MTT_MAX_STATE];
-    mtt_real Ppm[MTT_MAX_MODELS][MTT_MAX_STATE][MTT_MAX_STATE];
+    mtt_real Ppm[MTT_MAX_MODELS][MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE]; /* mtt_cov each */
     mtt_real Km[MTT_MAX_MODELS][MTT_MAX_STATE][2];
-    mtt_real Sim[MTT_MAX_MODELS][3];
-    mtt_real peakm[MTT_MAX_MODELS]; /* N(0; 0, S_j) / PG */
+    mtt_real Sim[MTT_MAX_MODELS][MTT_SYM_SLOTS];
+    mtt_real peakm[MTT_MAX_MODELS]; /* N(0; 0, S_j) / PG (fixed point: its ratio to lambda, Q16) */
     mtt_real vgm;                   /* largest model gate area: the union's (ALGORITHMS.md §14.2) */
     mtt_real wm[MTT_MAX_MODELS][2]; /* gate half-widths sqrt(gamma S_j) */
+#ifdef MTT_REAL_FIXED
+    mtt_real vgj[MTT_MAX_MODELS];   /* lambda V_G of each model's gate (Q MTT_FX_GATE_FRAC) */
+    int32_t hld[MTT_MAX_MODELS];    /* ln sqrt(det S_j), Q24: the model weights (src/imm/imm_track.c) */
+#endif
 #endif
 } mtt_track_frame;
 
@@ -298,7 +302,7 @@ typedef struct mtt_manoeuvre {
     uint8_t bits;                   /* MTT_DERIVE_*: which of par's values follow dT */
     mtt_real cv;                    /* process_psd = cv dT (cv = a^2) */
     mtt_real dv;                    /* split_dv = dv dT (dv = a) */
-    mtt_real imm[MTT_MAX_MODELS];   /* imm_psd[j] = imm[j] dT */
+    mtt_real imm[MTT_MAX_MODELS];   /* imm_psd[j] = imm[j] dT (fixed point: the acceleration, imm_psd its square dT) */
     mtt_real rate[2];               /* switching rates 0 -> 1, 1 -> 0 of the two-model chain */
 } mtt_manoeuvre;
 
@@ -308,6 +312,9 @@ typedef struct mtt_tracker {
     mtt_params par;                 /* resolved (ALGORITHMS.md §2.2); the derived values at this frame's dT */
     mtt_manoeuvre lv;               /* the levels of the derived motion */
     mtt_real gamma;                 /* gate threshold from pg */
+#ifdef MTT_REAL_FIXED
+    int32_t gc[4];                  /* the gate's factors of gamma, pg and lambda (src/assoc/gate.c) */
+#endif
     mtt_real R[3];                  /* measurement covariance (sym) */
     mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */
     mtt_real time;

@@ -258,7 +258,7 @@ static mtt_d2 own_d2(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_msto
     if (ms->has_R) {
         mtt_d2 d2;
         *p = MTT_ZERO;
-        return (mtt_meas_gauss_fx(tf->Pp, ms->R, NULL, dx, dy, &d2, NULL) == 0) ? d2 : MTT_FX_MAX;
+        return (mtt_meas_gauss_fx(tf->Pp, ms->R, NULL, dx, dy, &d2, NULL, NULL) == 0) ? d2 : MTT_FX_MAX;
     }
 #elif MTT_WITH_MEAS_COV
     if (ms->has_R) {
@@ -282,7 +282,7 @@ static mtt_ratio own_p(const mtt_tracker *trk, mtt_track_frame *tf, const mtt_ms
     (void)p;
     if (ms->has_R) {
         mtt_ratio pf = 0;
-        (void)mtt_meas_gauss_fx(tf->Pp, ms->R, gc, MTT_SUBS(ms->x, tf->xp[0]), MTT_SUBS(ms->y, tf->xp[1]), &d2, &pf);
+        (void)mtt_meas_gauss_fx(tf->Pp, ms->R, gc, MTT_SUBS(ms->x, tf->xp[0]), MTT_SUBS(ms->y, tf->xp[1]), &d2, &pf, NULL);
         return pf;
     }
 #elif MTT_WITH_MEAS_COV
@@ -405,17 +405,13 @@ void mtt_gate_frame(mtt_tracker *trk)
     uint16_t i, j, k;
     int resort = 0;
 #ifdef MTT_REAL_FIXED
-    int32_t gc[4];
+    const int32_t *gc = trk->gc; /* one gamma for every track: no adaptive JPDA in the fixed build */
 #endif
 #if MTT_WITH_IMM
     const int imm = trk->par.motion == MTT_MOTION_IMM;
 #endif
 
     trk->n_pairs = 0;
-#ifdef MTT_REAL_FIXED
-    /* one gamma for every track: no adaptive JPDA in the fixed build */
-    mtt_fx_gate_consts(trk->gamma, trk->par.pg, trk->par.clutter_density, gc);
-#endif
 
     for (i = 0; i < trk->n_tracks; ++i) {
         mtt_track_frame *tf = &tfs[i];

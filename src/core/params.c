@@ -38,9 +38,9 @@ void mtt_params_imm_pi_default(mtt_params *p)
     uint8_t i, j;
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         for (j = 0; j < MTT_MAX_MODELS; ++j) {
-            mtt_real v = MTT_R(0.0);
+            mtt_real v = MTT_ZERO;
             if (i < r && j < r) {
-                v = (r == 1u) ? MTT_R(1.0) : ((i == j) ? MTT_R(0.99) : MTT_R(0.01) / (mtt_real)(r - 1u));
+                v = (r == 1u) ? MTT_P(1.0) : ((i == j) ? MTT_P(0.99) : MTT_P(0.01) / (mtt_real)(r - 1u));
             }
             p->imm_transition[i][j] = v;
         }
@@ -64,7 +64,7 @@ static void imm_default(mtt_params *p)
     uint8_t i;
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         p->imm_model[i] = (i == 1u) ? MTT_MODEL_CA : MTT_MODEL_CV;
-        p->imm_psd[i] = MTT_R(0.0);
+        p->imm_psd[i] = MTT_ZERO;
     }
     mtt_params_imm_reset(p, (MTT_MAX_MODELS >= 2) ? 2u : 1u);
 }
@@ -75,10 +75,15 @@ static void imm_default(mtt_params *p)
  * 1e-4 (the decimals of a settings file), every slot beyond them 0 (so a
  * matrix or list of another size than imm_models is caught).  The element
  * ranges are the table's rules.  Returns the bad key or NULL. */
+#ifdef MTT_REAL_FIXED
+#define TURN_PSD_MAX (MTT_FX_MAX - 1)
+#else
+#define TURN_PSD_MAX MTT_REAL_MAX
+#endif
 static const char *check_imm(const mtt_params *p)
 {
-    const mtt_real tol = MTT_R(1e-4);
-    mtt_real s0 = MTT_R(0.0);
+    const mtt_prob tol = MTT_P(1e-4);
+    mtt_prob s0 = MTT_ZERO;
     uint8_t i, j, r = p->imm_n_models;
     if (p->motion == MTT_MOTION_CV && r == 1u) {
         return NULL; /* a build without IMM (MTT_MAX_MODELS 1): nothing to check */
@@ -87,33 +92,33 @@ static const char *check_imm(const mtt_params *p)
         return "imm_models";
     }
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
-        mtt_real s = MTT_R(0.0);
+        mtt_prob s = MTT_ZERO;
         if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CT)) {
             return "imm_models";
         }
-        if (i < r && !(p->imm_psd[i] > MTT_R(0.0))) {
+        if (i < r && !(p->imm_psd[i] > MTT_ZERO)) {
             return "imm_models"; /* a model's psd 0: imm_models given only in part */
         }
         /* the turn-rate noise: > 0 (and finite) for ct, 0 for the others */
-        if (i < r && ((p->imm_model[i] == MTT_MODEL_CT) ? !(p->imm_turn_psd[i] > MTT_R(0.0) && p->imm_turn_psd[i] <= MTT_REAL_MAX)
-                                                        : p->imm_turn_psd[i] != MTT_R(0.0))) {
+        if (i < r && ((p->imm_model[i] == MTT_MODEL_CT) ? !(p->imm_turn_psd[i] > MTT_ZERO && p->imm_turn_psd[i] <= TURN_PSD_MAX)
+                                                        : p->imm_turn_psd[i] != MTT_ZERO)) {
             return "imm_models";
         }
         for (j = 0; j < MTT_MAX_MODELS; ++j) {
-            if ((i >= r || j >= r) && p->imm_transition[i][j] != MTT_R(0.0)) {
+            if ((i >= r || j >= r) && p->imm_transition[i][j] != MTT_ZERO) {
                 return "imm_transition";
             }
-            s += p->imm_transition[i][j];
+            s = MTT_ADDS(s, p->imm_transition[i][j]);
         }
-        if (i < r && !(mtt_fabs(s - MTT_R(1.0)) <= tol)) {
+        if (i < r && !(MTT_ABS(MTT_SUB(s, MTT_P(1.0))) <= tol)) {
             return "imm_transition";
         }
-        if (i >= r && p->imm_initial[i] != MTT_R(0.0)) {
+        if (i >= r && p->imm_initial[i] != MTT_ZERO) {
             return "imm_initial";
         }
-        s0 += p->imm_initial[i];
+        s0 = MTT_ADDS(s0, p->imm_initial[i]);
     }
-    if (!(mtt_fabs(s0 - MTT_R(1.0)) <= tol)) {
+    if (!(MTT_ABS(MTT_SUB(s0, MTT_P(1.0))) <= tol)) {
         return "imm_initial";
     }
     return NULL;
@@ -301,13 +306,20 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
             bad = rules[k].name;
         }
     }
+#ifdef MTT_REAL_FIXED
+    if (bad == NULL && mtt_manoeuvre_derived(p) && !var_fits(p->max_accel)) {
+        /* the derived level q = a^2 dT: a^2 must be a variance of its format
+         * (docs/FIXED_POINT.md §3) */
+        bad = "max_accel";
+    }
+#endif
     if (bad == NULL) {
         /* the cross rules on the keys as the tracker resolves them (ALGORITHMS.md §2.2) */
         mtt_manoeuvre lv;
         *q = *p;
         mtt_manoeuvre_resolve(q, &lv);
 #if MTT_WITH_IMM
-        bad = check_imm(q);
+        bad = (bad != NULL) ? bad : check_imm(q);
         if (bad == NULL && q->motion == MTT_MOTION_IMM && !mtt_modes[q->association].imm) {
 #else
         if (q->motion == MTT_MOTION_IMM) {
@@ -315,6 +327,14 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
             bad = "motion"; /* IMM left out of the build, or a mode without IMM (ALGORITHMS.md §14.2) */
             st = MTT_ERR_UNSUPPORTED;
         }
+#if MTT_WITH_IMM && !MTT_WITH_IMM_CACT
+        for (k = 0; bad == NULL && q->motion == MTT_MOTION_IMM && k < q->imm_n_models; ++k) {
+            if (q->imm_model[k] != MTT_MODEL_CV) {
+                bad = "imm_models"; /* ca and ct: float only (docs/FIXED_POINT.md §5) */
+                st = MTT_ERR_UNSUPPORTED;
+            }
+        }
+#endif
         if (bad == NULL && q->split &&
             (!MTT_WITH_SPLIT || q->motion != MTT_MOTION_IMM || mtt_params_cv_model(q) >= q->imm_n_models)) {
             bad = "split"; /* the split modes are IMM modes built on a cv model (ALGORITHMS.md §14.3) */
@@ -328,12 +348,6 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
         st = MTT_ERR_UNSUPPORTED;
     }
 #ifdef MTT_REAL_FIXED
-    if (bad == NULL && mtt_manoeuvre_derived(p) && !var_fits(p->max_accel)) {
-        /* the derived level q = a^2 dT: a^2 must be a variance of its format
-         * (docs/FIXED_POINT.md §3) */
-        bad = "max_accel";
-        st = MTT_ERR_PARAM;
-    }
     if (bad == NULL && !(p->clutter_density > 0)) {
         /* the fixed-point build holds densities relative to lambda
          * (docs/FIXED_POINT.md §2): the estimated density (0) has no

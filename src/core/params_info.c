@@ -136,6 +136,7 @@ static void set_int(mtt_params *p, const info_row *r, int value)
 }
 
 #if MTT_WITH_IMM
+static int to_real(double v, int frac, mtt_real *out);
 /* imm_models: v = r, then (model, psd, turn psd) per slot; slots from r on keep
  * their values.  A new r resets imm_transition and imm_initial to not given
  * (so a settings file that sets only imm_models is valid).  Every psd 0 is
@@ -145,6 +146,11 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
 {
     mtt_params q = *p;
     size_t k, m;
+#ifdef MTT_REAL_FIXED
+    const int frac = r->frac; /* the variance format */
+#else
+    const int frac = 0;
+#endif
     if (!(v[0] >= 2.0 && v[0] <= (double)MTT_MAX_MODELS && v[0] == (double)(int)v[0])) {
         return MTT_ERR_PARAM;
     }
@@ -161,9 +167,10 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
             return MTT_ERR_PARAM; /* the first slot not given, this one given */
         }
         q.imm_model[k] = (mtt_model_kind)(int)kind;
-        q.imm_psd[k] = (mtt_real)psd;
-        q.imm_turn_psd[k] = (mtt_real)turn;
-        if (v[2] != 0.0 && !(q.imm_psd[k] > MTT_R(0.0))) {
+        if (!to_real(psd, frac, &q.imm_psd[k]) || !to_real(turn, frac, &q.imm_turn_psd[k])) {
+            return MTT_ERR_PARAM; /* beyond the format of mtt_real */
+        }
+        if (v[2] != 0.0 && !(q.imm_psd[k] > MTT_ZERO)) {
             return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
         }
     }
@@ -172,7 +179,7 @@ static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
     }
     for (k = 0; k < m; ++k) {
         /* turn psd: > 0 (not rounded to 0) for ct, 0 for the others */
-        if ((q.imm_model[k] == MTT_MODEL_CT) != (q.imm_turn_psd[k] > MTT_R(0.0))) {
+        if ((q.imm_model[k] == MTT_MODEL_CT) != (q.imm_turn_psd[k] > MTT_ZERO)) {
             return MTT_ERR_PARAM;
         }
     }
@@ -263,9 +270,9 @@ mtt_status mtt_params_get_checked(const mtt_params *p, const char *key, double *
             const int used = k < p->imm_n_models;
             double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
             s[0] = used ? (double)p->imm_model[k] : 0.0;
-            s[1] = used ? (double)p->imm_psd[k] : 0.0;
+            s[1] = used ? FROM_REAL(p->imm_psd[k], r) : 0.0;
 #if MTT_WITH_IMM
-            s[2] = used ? (double)p->imm_turn_psd[k] : 0.0;
+            s[2] = used ? FROM_REAL(p->imm_turn_psd[k], r) : 0.0;
 #else
             s[2] = 0.0;
 #endif

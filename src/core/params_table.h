@@ -231,6 +231,9 @@ extern const char *const mtt_model_names[3];
 #define MTT_FX_FRAC_nnjpda_threshold MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_adaptive_jpda_distance MTT_FX_RATIO_FRAC
 #define MTT_FX_FRAC_adaptive_jpda_shrink MTT_FX_RATIO_FRAC
+#define MTT_FX_FRAC_imm_psd MTT_FX_VAR_FRAC
+#define MTT_FX_FRAC_imm_transition MTT_FX_PROB_FRAC
+#define MTT_FX_FRAC_imm_initial MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_p25 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_p52 MTT_FX_PROB_FRAC
 #define MTT_FX_FRAC_split_p62 MTT_FX_PROB_FRAC

@@ -196,7 +196,7 @@ mtt_status mtt_tracker_add_track(mtt_tracker *trk, const mtt_real x[4], const mt
     if (trk->par.motion == MTT_MOTION_IMM) {
         /* [CHOICE] ALGORITHMS.md §14.2: a seeded track's CA acceleration
          * variance is q_CA times one time unit (no interval is known) */
-        mtt_imm_seed_track(trk, (uint16_t)idx, MTT_R(1.0));
+        mtt_imm_seed_track(trk, (uint16_t)idx, MTT_TIME(1.0));
     }
 #endif
     if (id != NULL) {

@@ -60,6 +60,9 @@ static void setup(mtt_tracker *trk, const mtt_params *p, mtt_real gamma, mtt_cyc
     trk->par.cycle_counter = fn;
     trk->par.cycle_ctx = ctx;
     trk->gamma = gamma;
+#ifdef MTT_REAL_FIXED
+    mtt_fx_gate_consts(gamma, p->pg, p->clutter_density, trk->gc); /* one gamma and lambda per run */
+#endif
     trk->R[0] = MTT_VAR_OF(p->meas_sigma[0]);
     trk->R[1] = MTT_ZERO;
     /* polar (ALGORITHMS.md §3.2): every detection has its own R and every

@@ -72,10 +72,11 @@ void mtt_polar_rdot_update(int n, const mtt_real sensor[2], const mtt_real rr[2]
 #if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
 /* A detection with covariance R against the prediction Pp (a block):
  * d2 = nu' S^-1 nu (Q24), and when gc (mtt_fx_gate_consts) is not NULL
- * p = N(nu; 0, S) / (PG lambda) (Q16), S = Pp_pos + R; -1 when S is not
+ * p = N(nu; 0, S) / (PG lambda) (Q16), when hl is not NULL ln sqrt(det S)
+ * (Q24, the IMM's model weights), S = Pp_pos + R; -1 when S is not
  * positive definite. */
 int mtt_meas_gauss_fx(mtt_cov Pp, const mtt_real R[3], const int32_t *gc, mtt_pos nx, mtt_pos ny, mtt_d2 *d2,
-                      mtt_ratio *p);
+                      mtt_ratio *p, int32_t *hl);
 #elif MTT_WITH_MEAS_COV
 /* A detection with covariance R against a prediction whose covariance has
  * the rows p0, p1 (ALGORITHMS.md §3.1): d2 = nu' S^-1 nu and p = N(nu; 0,

@@ -586,7 +586,7 @@ void mtt_kalman_pda_n(int n, const mtt_state xp, mtt_cov Pp, mtt_real K[][2], co
 
 #if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
 int mtt_meas_gauss_fx(mtt_cov Pp, const mtt_real R[3], const int32_t *gc, mtt_pos nx, mtt_pos ny, mtt_d2 *d2,
-                      mtt_ratio *p)
+                      mtt_ratio *p, int32_t *hl)
 {
     mtt_real S[MTT_SYM_SLOTS], Si[MTT_SYM_SLOTS], det;
     mtt_ratio peak;
@@ -594,6 +594,13 @@ int mtt_meas_gauss_fx(mtt_cov Pp, const mtt_real R[3], const int32_t *gc, mtt_po
         return -1;
     }
     *d2 = MTT_MAHAL2(Si, nx, ny);
+#if MTT_WITH_IMM
+    if (hl != NULL) {
+        *hl = mtt_fx_half_ln_det(det, S);
+    }
+#else
+    (void)hl;
+#endif
     if (gc != NULL) {
         (void)mtt_fx_gate_area_peak_c(gc, det, S, &peak); /* the track's own area stays its tf->vg */
         *p = MTT_GATE_LIK(peak, *d2);

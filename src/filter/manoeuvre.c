@@ -14,11 +14,12 @@
  *        1/τ, entering it at rate 1/(10 τ)): Π(ΔT) in closed form
  *   split_dv = a ΔT
  *
- * Explicit keys override each piece.  The fixed-point build (no IMM, no
- * split) derives the CV level only: a in the position format, a² in the
- * variance format (MTT_VAR_OF; mtt_params_check refuses an a whose square
- * does not fit it) and q = a² ΔT per frame with ΔT in Q16 frames, saturated
- * (docs/FIXED_POINT.md §3). */
+ * Explicit keys override each piece.  The fixed-point build (no split)
+ * has a in the position format, a² in the variance format (MTT_VAR_OF;
+ * mtt_params_check refuses an a whose square does not fit it) and q = a² ΔT
+ * per frame with ΔT in Q16 frames, saturated; the IMM's levels are formed
+ * from the accelerations with one rounding (var_dt), the rates in Q30 per
+ * T0 and Π(ΔT) from mtt_fx_exp_neg (docs/FIXED_POINT.md §3). */
 #include <string.h>
 
 #include "mtt_internal.h"
@@ -53,6 +54,40 @@ static int all_zero(const mtt_real *v, size_t n)
     return 1;
 }
 
+#ifdef MTT_REAL_FIXED
+/* Π(dt) of the two-state chain with rates l01 (0 -> 1) and l10 (1 -> 0),
+ * Q30 per T0 (dt Q16 frames): Π01 = (l01 / s)(1 - e^(-s dt)), s = l01 + l10,
+ * formed as the share l01 / s times the Q30 complement (no 1 / s that may
+ * not fit); s dt beyond the kernel's 256 is the stationary chain. */
+static void switch_matrix(mtt_real l01, mtt_real l10, mtt_real dt, mtt_real Pi[][MTT_MAX_MODELS])
+{
+    const int32_t s = mtt_fx_add(l01, l10);
+    /* s dt in Q24: Q30 x Q16 >> 22 */
+    const int32_t y = mtt_fx_mul(s, dt, MTT_FX_PROB_FRAC + MTT_FX_T_FRAC - MTT_FX_D2_FRAC);
+    const int32_t g = MTT_P(1.0) - ((y >= 0 && y < MTT_FX_MAX) ? mtt_fx_exp_neg_q30((uint32_t)y) : 0);
+    Pi[0][1] = (s > 0) ? MTT_MUL_PP(mtt_fx_div(l01, s, MTT_FX_PROB_FRAC), g) : 0;
+    Pi[0][0] = MTT_P(1.0) - Pi[0][1];
+    Pi[1][0] = (s > 0) ? MTT_MUL_PP(mtt_fx_div(l10, s, MTT_FX_PROB_FRAC), g) : 0;
+    Pi[1][1] = MTT_P(1.0) - Pi[1][0];
+}
+
+/* round(b² dt) in the variance format for an acceleration b (position
+ * format) and dt (Q16 frames): b² with VAR_G guard bits, then one more
+ * rounding with dt, so that a small level (a steady model's (a/10)² ΔT of
+ * a few units) is not rounded twice; a b² beyond the guarded format goes
+ * the plain way (MTT_VAR_OF, then MTT_MUL_T). */
+#define VAR_G ((2 * MTT_FX_POS_FRAC - MTT_FX_VAR_FRAC < 8) ? 2 * MTT_FX_POS_FRAC - MTT_FX_VAR_FRAC : 8)
+static mtt_real var_dt(mtt_pos b, mtt_real dt)
+{
+#if 2 * MTT_FX_POS_FRAC - MTT_FX_VAR_FRAC > 0
+    const int32_t f = mtt_fx_mul(b, b, 2 * MTT_FX_POS_FRAC - MTT_FX_VAR_FRAC - VAR_G);
+    if (f < (MTT_FX_MAX >> 1)) {
+        return mtt_fx_mul(f, dt, MTT_FX_T_FRAC + VAR_G);
+    }
+#endif
+    return MTT_MUL_T(dt, MTT_VAR_OF(b));
+}
+#else
 /* Π(dt) of the two-state chain with rates l01 (0 -> 1) and l10 (1 -> 0). */
 static void switch_matrix(mtt_real l01, mtt_real l10, mtt_real dt, mtt_real Pi[][MTT_MAX_MODELS])
 {
@@ -63,6 +98,7 @@ static void switch_matrix(mtt_real l01, mtt_real l10, mtt_real dt, mtt_real Pi[]
     Pi[1][0] = l10 * f;
     Pi[1][1] = MTT_R(1.0) - Pi[1][0];
 }
+#endif
 #endif
 
 void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
@@ -103,13 +139,26 @@ void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
         if (all_zero(p->imm_psd, MTT_MAX_MODELS)) {
             if (derive && MTT_MAX_MODELS >= 2) {
                 /* two cv models, steady and manoeuvring (§2.2) */
+#ifdef MTT_REAL_FIXED
+                /* the accelerations; the levels var_dt of them each frame */
+                const mtt_pos as = MTT_MUL_PP(MTT_P(STEADY_FRACTION), p->max_accel);
+#else
                 const mtt_real as = MTT_R(STEADY_FRACTION) * p->max_accel;
+#endif
                 p->imm_n_models = 2u;
                 memset(p->imm_turn_psd, 0, sizeof p->imm_turn_psd);
                 for (j = 0; j < MTT_MAX_MODELS; ++j) {
                     p->imm_model[j] = MTT_MODEL_CV;
+#ifdef MTT_REAL_FIXED
+                    lv->imm[j] = (j == 0u) ? as : p->max_accel;
+                    /* at ΔT = 1 until the first frame; a level below the
+                     * format's resolution is its unit (docs/FIXED_POINT.md §5) */
+                    p->imm_psd[j] = var_dt(lv->imm[j], MTT_TIME(1.0));
+                    p->imm_psd[j] = (p->imm_psd[j] > 0) ? p->imm_psd[j] : 1;
+#else
                     lv->imm[j] = (j == 0u) ? as * as : lv->cv;
                     p->imm_psd[j] = lv->imm[j];
+#endif
                 }
                 lv->bits |= MTT_DERIVE_MODELS;
             } else {
@@ -119,23 +168,32 @@ void mtt_manoeuvre_resolve(mtt_params *p, mtt_manoeuvre *lv)
                 if (derive) {
                     lv->bits |= MTT_DERIVE_MODELS; /* followed the derived process_psd */
                     for (j = 0; j < MTT_MAX_MODELS; ++j) {
+#ifdef MTT_REAL_FIXED
+                        lv->imm[j] = p->max_accel; /* the acceleration: var_dt */
+#else
                         lv->imm[j] = lv->cv;
+#endif
                     }
                 }
             }
         }
         if (all_zero(&p->imm_transition[0][0], (size_t)MTT_MAX_MODELS * (size_t)MTT_MAX_MODELS)) {
             if (derive && p->imm_n_models == 2u && (lv->bits & MTT_DERIVE_MODELS)) {
+#ifdef MTT_REAL_FIXED
+                lv->rate[1] = (p->vmax > 0) ? mtt_fx_div(p->max_accel, p->vmax, MTT_FX_PROB_FRAC) : MTT_FX_MAX; /* Q30 per T0 */
+                lv->rate[0] = MTT_MUL_PP(MTT_P(ENTER_OVER_LEAVE), lv->rate[1]);
+#else
                 lv->rate[1] = p->max_accel / p->vmax; /* 1/τ: leaving the manoeuvre */
                 lv->rate[0] = MTT_R(ENTER_OVER_LEAVE) * lv->rate[1];
+#endif
                 lv->bits |= MTT_DERIVE_PI;
-                switch_matrix(lv->rate[0], lv->rate[1], MTT_R(1.0), p->imm_transition);
+                switch_matrix(lv->rate[0], lv->rate[1], MTT_TIME(1.0), p->imm_transition);
             } else {
                 mtt_params_imm_pi_default(p);
             }
         }
         if (all_zero(p->imm_initial, MTT_MAX_MODELS)) {
-            p->imm_initial[0] = MTT_R(1.0);
+            p->imm_initial[0] = MTT_P(1.0);
         }
     }
 #endif
@@ -152,16 +210,20 @@ void mtt_manoeuvre_frame(mtt_tracker *trk, mtt_real dt)
     if (lv->bits & MTT_DERIVE_DV) {
         p->split_dv = lv->dv * dt;
     }
+#endif
 #if MTT_WITH_IMM
     if (lv->bits & MTT_DERIVE_MODELS) {
         uint8_t j;
         for (j = 0; j < p->imm_n_models; ++j) {
+#ifdef MTT_REAL_FIXED
+            p->imm_psd[j] = var_dt(lv->imm[j], dt);
+#else
             p->imm_psd[j] = lv->imm[j] * dt;
+#endif
         }
     }
     if (lv->bits & MTT_DERIVE_PI) {
         switch_matrix(lv->rate[0], lv->rate[1], dt, p->imm_transition);
     }
-#endif
 #endif
 }

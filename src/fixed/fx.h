@@ -48,6 +48,9 @@ int32_t mtt_fx_shift(int32_t v, int s);
 int mtt_fx_top_exp(int e, uint32_t u, int top);
 /* |OR| of n values: its bit length is that of the largest |value|. */
 uint32_t mtt_fx_or_abs(const int32_t *v, int n);
+/* ln sqrt(det S) in Q24 for det S > 0 a mantissa at MTT_DET_E(S)
+ * (MTT_FX_MAX for det <= 0): the IMM's model weights (imm_track.c). */
+int32_t mtt_fx_half_ln_det(int32_t det, const int32_t S[MTT_SYM_SLOTS]);
 /* v > 0 in Q frac as m 2^e with m in [2^29, 2^30]. */
 int32_t mtt_fx_unpack(int32_t v, int frac, int *e);
 #endif

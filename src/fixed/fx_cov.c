@@ -5,7 +5,8 @@
  * row of mtt_cov (MTT_COV_E).  Renormalisation, the headroom of the
  * prediction, the alignment of two blocks to one exponent, and the process
  * noise Q(dt) of the CV model (ALGORITHMS.md §2) as mantissas and an
- * exponent.  Compiled only in the fixed-point build. */
+ * exponent, and ln sqrt(det S) for the IMM's model weights (§14.2).
+ * Compiled only in the fixed-point build. */
 #include "mtt_internal.h"
 
 #ifdef MTT_REAL_FIXED
@@ -297,5 +298,17 @@ int mtt_fx_top_exp(int e, uint32_t u, int top)
 {
     return e + (32 - mtt_fx_clz(u)) - top;
 }
+
+#if MTT_WITH_IMM
+int32_t mtt_fx_half_ln_det(int32_t det, const int32_t S[MTT_SYM_SLOTS])
+{
+    /* (ln m)/2 from Q25 to Q24, plus e ln(2)/2: |e| < 300 keeps it below 2^31 */
+    if (!(det > 0)) {
+        return MTT_FX_MAX;
+    }
+    return mtt_fx_add(MTT_FX_RSHIFT(mtt_fx_ln((uint32_t)det, 0), 2),
+                      MTT_DET_E(S) * MTT_FX_CONST(0.34657359027997264, MTT_FX_D2_FRAC));
+}
+#endif
 
 #endif /* MTT_REAL_FIXED */

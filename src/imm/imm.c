@@ -44,20 +44,79 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
         return -1;
     }
     for (j = 0; j < r; ++j) {
-        mtt_real c = MTT_R(0.0);
+        mtt_prob c = MTT_ZERO;
         for (i = 0; i < r; ++i) {
-            c += Pi[i][j] * mu[i];
+            c = MTT_ADDS(c, MTT_MUL_PP(Pi[i][j], mu[i]));
         }
         cbar[j] = c;
         for (i = 0; i < r; ++i) {
             /* c̄_j = 0: no model can be in mode j; let model j start from
              * its own estimate (its weight μ_j will be 0 anyway). */
-            mix[i][j] = (c > MTT_R(0.0)) ? Pi[i][j] * mu[i] / c : ((i == j) ? MTT_R(1.0) : MTT_R(0.0));
+            mix[i][j] = (c > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(Pi[i][j], mu[i]), c) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
         }
     }
     return 0;
 }
 
+#ifdef MTT_REAL_FIXED
+/* The mixture below in block floating point (docs/FIXED_POINT.md §2):
+ * Po = Σ_i w_i P_i + Σ_i w_i d_i d_i', d_i = x_i - xo (the same matrix as
+ * the float text's, written as a sum of PSD terms, which keeps it PSD in
+ * integer arithmetic).  Each w_i P_i has its block's exponent e_i (below
+ * 2^28), their sum meets at the largest; the d_i are on 28 bits together
+ * (exponent E_B, each product below 2^26, the weighted sum too); the two
+ * sums meet at E = max(e_max, E_B - 2), each below 2^28 there, before one
+ * renormalisation.  Positions stay in the position format. */
+#define MULQ(a, b) mtt_fx_mulq30((a), (b))
+static void mixture4(uint8_t r, uint8_t ref, const mtt_prob w[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[],
+                     mtt_real xo[], mtt_real Po[][MTT_MAX_STATE])
+{
+    int32_t d[MTT_MAX_MODELS][MTT_IMM_COMMON], s[MTT_IMM_COMMON] = {0};
+    const mtt_real *xr = x[ref];
+    uint32_t u = 0u;
+    int E = -1000, EB = 0, sh = 0;
+    uint8_t i, a, b;
+    for (i = 0; i < r; ++i) {
+        E = (MTT_COV_E(P[i]) > E) ? MTT_COV_E(P[i]) : E;
+        for (a = 0; a < MTT_IMM_COMMON; ++a) {
+            d[i][a] = MTT_SUBS(x[i][a], xr[a]);
+            s[a] = MTT_ADDS(s[a], MULQ(w[i], d[i][a]));
+        }
+    }
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        xo[a] = MTT_ADDS(xr[a], s[a]);
+        for (i = 0; i < r; ++i) {
+            d[i][a] = MTT_SUBS(d[i][a], s[a]); /* x_i - xo */
+            u |= (uint32_t)MTT_ABS(d[i][a]);
+        }
+    }
+    if (u != 0u) {
+        sh = 28 - (32 - mtt_fx_clz(u));
+        EB = 30 - 2 * (MTT_FX_POS_FRAC + sh);
+        E = (EB - 2 > E) ? EB - 2 : E;
+        for (i = 0; i < r; ++i) {
+            for (a = 0; a < MTT_IMM_COMMON; ++a) {
+                d[i][a] = mtt_fx_shift(d[i][a], sh);
+            }
+        }
+    }
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
+        for (b = a; b < MTT_IMM_COMMON; ++b) {
+            int32_t v = 0, sp = 0;
+            for (i = 0; i < r; ++i) {
+                v += mtt_fx_shift(MULQ(w[i], P[i][a][b]), MTT_COV_E(P[i]) - E);
+                sp += (u != 0u) ? MULQ(MULQ(w[i], d[i][a]), d[i][b]) : 0;
+            }
+            v += (u != 0u) ? mtt_fx_shift(sp, EB - E) : 0;
+            Po[a][b] = v;
+            Po[b][a] = v;
+        }
+    }
+    MTT_COV_E(Po) = E;
+    MTT_COV_NORM(Po);
+}
+#undef MULQ
+#else
 /* Moment-matched mixture of the common parts of r models with weights w
  * (Σ w = 1), as differences to model ref (see the header):
  *   D_i = x_i - x_ref,  s = Σ_{i≠ref} w_i D_i,  xo = x_ref + s,
@@ -66,9 +125,8 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
  * Σ_i w_i d_i s' = 0 and D_ref = 0, so only the other models contribute,
  * one product each.  Only the upper triangle is formed, then mirrored:
  * symmetric by construction.  xo, Po may be rows of a larger state. */
-static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MTT_MAX_STATE],
-                     mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xo[],
-                     mtt_real Po[][MTT_MAX_STATE])
+static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[],
+                     mtt_real xo[], mtt_real Po[][MTT_MAX_STATE])
 {
     mtt_real D[MTT_MAX_MODELS][MTT_IMM_COMMON], s[MTT_IMM_COMMON] = {MTT_R(0.0)};
     mtt_real(*Pr)[MTT_MAX_STATE] = P[ref];
@@ -109,12 +167,15 @@ static void mixture4(uint8_t r, uint8_t ref, const mtt_real w[], mtt_real x[][MT
         }
     }
 }
+#endif
 
-int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
-                mtt_real x[][MTT_MAX_STATE], mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE],
-                mtt_real x0[][MTT_MAX_STATE], mtt_real P0[][MTT_MAX_STATE][MTT_MAX_STATE])
+int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS], mtt_real x[][MTT_MAX_STATE],
+                mtt_cov P[], mtt_real x0[][MTT_MAX_STATE], mtt_cov P0[])
 {
-    uint8_t i, j, a, b;
+    uint8_t i, j;
+#if MTT_WITH_IMM_CACT
+    uint8_t a, b;
+#endif
     if (r < 1u || r > MTT_MAX_MODELS) {
         return -1;
     }
@@ -130,6 +191,7 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
         }
         /* Common part: the mixture with reference model j. */
         mixture4(r, j, w, x, P, x0[j], P0[j]);
+#if MTT_WITH_IMM_CACT
         /* Extras of model j: own mean and block, cross terms scaled by
          * μ_{j|j} (P[j] is symmetric: every stage writes it mirrored). */
         for (a = MTT_IMM_COMMON; a < n[j]; ++a) {
@@ -145,12 +207,13 @@ int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
                 P0[j][b][a] = pa[b];
             }
         }
+#endif
     }
     return 0;
 }
 
-int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
-                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE])
+int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[], mtt_real xc[],
+                    mtt_real Pc[][MTT_MAX_STATE])
 {
     if (r < 1u || r > MTT_MAX_MODELS) {
         return -1;
@@ -162,61 +225,70 @@ int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
 mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[], const mtt_real p[],
                           mtt_real *pd_mix)
 {
-    mtt_real w = MTT_R(0.0), s = MTT_R(0.0);
+    mtt_prob w = MTT_ZERO;
+    mtt_ratio s = MTT_ZERO;
     uint8_t j;
     if (r > MTT_MAX_MODELS) {
         r = 0; /* out of range: PD* = 0, p* = 0 */
     }
     for (j = 0; j < r; ++j) {
-        w += cbar[j] * pd[j];
-        s += cbar[j] * pd[j] * p[j];
+        w = MTT_ADDS(w, MTT_MUL_PP(cbar[j], pd[j]));
+        s = MTT_ADDS(s, MTT_MUL_RP(MTT_MUL_PP(cbar[j], pd[j]), p[j]));
     }
     *pd_mix = w;
-    return (w > MTT_R(0.0)) ? s / w : MTT_R(0.0);
+    return (w > MTT_ZERO) ? MTT_DIV_RP(s, w) : MTT_ZERO;
 }
 
 int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
 {
-    mtt_real E0 = MTT_R(0.0), sum = MTT_R(0.0);
+    mtt_prob E0 = MTT_ZERO, sum = MTT_ZERO;
     uint16_t i;
     uint8_t j;
     if (r < 1u || r > MTT_MAX_MODELS || m > MTT_MAX_GATED) {
         return -1;
     }
     for (j = 0; j < r; ++j) {
-        E0 += cbar[j] * e0[j];
-        mu[j] = MTT_R(0.0);
+        E0 = MTT_ADDS(E0, MTT_MUL_PP(cbar[j], e0[j]));
+        mu[j] = MTT_ZERO;
     }
     /* Joint P(θ_0, M_j) = β_0 c̄_j e0_j / Σ_k c̄_k e0_k, kept in beta0_j
-     * until μ_j is known; the same for P(θ_i, M_j) in beta_j. */
+     * until μ_j is known; the same for P(θ_i, M_j) in beta_j.  (Fixed
+     * point: e0 and e are Q30, each row's largest 1: imm_track.c.) */
     for (j = 0; j < r; ++j) {
-        mtt_real v = (E0 > MTT_R(0.0)) ? beta0 * cbar[j] * e0[j] / E0 : MTT_R(0.0);
+        mtt_prob v = (E0 > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), E0) : MTT_ZERO;
         beta0_j[j] = v;
-        mu[j] += v;
+        mu[j] = MTT_ADDS(mu[j], v);
     }
     for (i = 0; i < m; ++i) {
-        mtt_real Ei = MTT_R(0.0);
+        mtt_prob Ei = MTT_ZERO;
         for (j = 0; j < r; ++j) {
-            Ei += cbar[j] * e[i][j];
+            Ei = MTT_ADDS(Ei, MTT_MUL_PP(cbar[j], e[i][j]));
         }
         for (j = 0; j < r; ++j) {
-            mtt_real v = (Ei > MTT_R(0.0)) ? beta[i] * cbar[j] * e[i][j] / Ei : MTT_R(0.0);
+            mtt_prob v = (Ei > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(MTT_MUL_PP(beta[i], cbar[j]), e[i][j]), Ei) : MTT_ZERO;
             beta_j[j][i] = v;
-            mu[j] += v;
+            mu[j] = MTT_ADDS(mu[j], v);
         }
     }
     for (j = 0; j < r; ++j) {
-        sum += mu[j];
+        sum = MTT_ADDS(sum, mu[j]);
     }
     for (j = 0; j < r; ++j) {
-        if (mu[j] > MTT_R(0.0)) {
+        if (mu[j] > MTT_ZERO) {
+#ifdef MTT_REAL_FIXED
+            beta0_j[j] = MTT_DIV_P(beta0_j[j], mu[j]);
+            for (i = 0; i < m; ++i) {
+                beta_j[j][i] = MTT_DIV_P(beta_j[j][i], mu[j]);
+            }
+#else
             const mtt_real inv = MTT_R(1.0) / mu[j];
             beta0_j[j] *= inv;
             for (i = 0; i < m; ++i) {
                 beta_j[j][i] *= inv;
             }
+#endif
         } else {
             /* A model of no weight: any valid distribution; take the track's. */
             beta0_j[j] = beta0;
@@ -228,7 +300,7 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
     /* Σ_j μ_j = β_0 + Σ_i β_i = 1 in exact arithmetic; renormalise the
      * round-off (and a β_0 that no model can explain, e0 = 0). */
     for (j = 0; j < r; ++j) {
-        mu[j] = (sum > MTT_R(0.0)) ? mu[j] / sum : cbar[j];
+        mu[j] = (sum > MTT_ZERO) ? MTT_DIV_P(mu[j], sum) : cbar[j];
     }
     return 0;
 }

@@ -8,8 +8,9 @@
 /* ==== IMM (ALGORITHMS.md §14): imm.c, motion_ca.c, motion_ct.c ==========
  * Built with MTT_WITH_IMM (include/mtt/config.h).  Plain functions over
  * arrays; model j has n[j] components, the first four [x y vx vy] (the
- * common subspace).  Matrices of r models: mtt_real P[r][MTT_MAX_STATE]
- * [MTT_MAX_STATE]; transition Pi[i][j] = P(mode j at k | mode i at k-1). */
+ * common subspace).  Matrices of r models: mtt_cov P[r] (fixed point:
+ * each with its block exponent); transition Pi[i][j] = P(mode j at k |
+ * mode i at k-1).  The fixed-point build has cv models only (n = 4). */
 #define MTT_IMM_COMMON 4
 #if MTT_WITH_IMM
 /* c̄_j = Σ_i Pi[i][j] μ_i and mix[i][j] = μ_{i|j} (§14.1); a mode with
@@ -20,14 +21,13 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
  * keep their own mean and block, their cross-covariance with the common
  * part is scaled by μ_{j|j}: see imm.c).  Returns 0, or -1 on r or n[] out
  * of range (nothing written). */
-int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS],
-                mtt_real x[][MTT_MAX_STATE], mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE],
-                mtt_real x0[][MTT_MAX_STATE], mtt_real P0[][MTT_MAX_STATE][MTT_MAX_STATE]);
+int mtt_imm_mix(uint8_t r, const uint8_t n[], mtt_real mix[][MTT_MAX_MODELS], mtt_real x[][MTT_MAX_STATE],
+                mtt_cov P[], mtt_real x0[][MTT_MAX_STATE], mtt_cov P0[]);
 /* Combined 4-D estimate Σ μ_j x_j,c and its covariance with the spread
  * term (§14.1), into the leading 4 entries of xc and 4 x 4 block of Pc;
  * the extras are not part of it.  Returns 0 or -1 (r). */
-int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
-                    mtt_real P[][MTT_MAX_STATE][MTT_MAX_STATE], mtt_real xc[], mtt_real Pc[][MTT_MAX_STATE]);
+int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[], mtt_real xc[],
+                    mtt_real Pc[][MTT_MAX_STATE]);
 /* Model-mixed detection probability PD* = Σ c̄_j PD_j (into *pd_mix) and
  * model-mixed likelihood of one measurement p* = Σ c̄_j PD_j p_j / PD*
  * (p_j: its gate-normalised likelihood under model j; 0 when PD* = 0 or
@@ -47,6 +47,7 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
 int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED]);
+#if MTT_WITH_IMM_CACT
 /* motion_ca.c: nearly constant acceleration, [x y vx vy ax ay], white-noise
  * jerk of PSD q (length^2/time^5).  Per axis [p v a] (3x3), and the full
  * 6x6 F and Q in the top-left of MTT_MAX_STATE-sized storage. */
@@ -66,6 +67,7 @@ void mtt_ct_q(mtt_real dt, mtt_real sw, mtt_real sw_turn, mtt_real Q[][MTT_MAX_S
  * construction); in place (xp = x, Pp = P) allowed. */
 void mtt_ct_predict(mtt_real dt, mtt_real sw, mtt_real sw_turn, const mtt_real x[], mtt_real P[][MTT_MAX_STATE],
                     mtt_real xp[], mtt_real Pp[][MTT_MAX_STATE]);
+#endif
 /* imm_track.c: the IMM stages of track ti (motion = imm). */
 /* Mixing, every model's prediction and innovation, the combined
  * prediction in tf.xp/Pp/S/Si/K; returns 1 when every S is valid. */

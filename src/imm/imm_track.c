@@ -18,17 +18,37 @@
  * gate kept lost tracks alive on clutter.  With one PD the
  * "no measurement" factor (1 - PD PG for the PDA modes, C_s for the IHPDA
  * modes) is the same for every model and cancels in the apportionment, so
- * e0_j = 1 and e_ij = p_i^j. */
+ * e0_j = 1 and e_ij = p_i^j.
+ *
+ * Fixed point (docs/FIXED_POINT.md §5): cv models only; the gate's ratios
+ * p_i^j / lambda saturate near a converged track, so the apportionment
+ * takes e_ij from the log-likelihoods instead: y_ij = d_ij^2 / 2 +
+ * ln sqrt(det S_ij) and e_ij = exp(-(y_ij - min_k y_ik)) in Q30, the same
+ * ratios over j with the largest 1. */
 #include <string.h>
 
 #include "mtt_internal.h"
 
 #if MTT_WITH_IMM
 
+#ifdef MTT_REAL_FIXED
+#define D2_NONE MTT_FX_MAX
+/* the IHPDA L of a candidate (ihpda.c holds lambda_j L_j in fixed point) */
+#define CAND_L(L, c) MTT_DIV_R((L), (c).lam)
+#else
+#define D2_NONE MTT_REAL_MAX
+#define CAND_L(L, c) (L)
+#endif
+
 /* State size of a model kind. */
 static uint8_t model_n(mtt_model_kind k)
 {
+#if MTT_WITH_IMM_CACT
     return (k == MTT_MODEL_CA) ? (uint8_t)MTT_CA_N : ((k == MTT_MODEL_CT) ? (uint8_t)MTT_CT_N : (uint8_t)MTT_STATE_N);
+#else
+    (void)k; /* cv only (mtt_params_check) */
+    return (uint8_t)MTT_STATE_N;
+#endif
 }
 
 /* xp = F x, Pp = F P F' + Q of model j (ALGORITHMS.md §2 for CV, §14.1
@@ -36,7 +56,13 @@ static uint8_t model_n(mtt_model_kind k)
 static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real s, const mtt_state x,
                           mtt_cov P, mtt_state xp, mtt_cov Pp)
 {
+#if MTT_WITH_CONTEST
     const mtt_real q = s * p->imm_psd[j]; /* the track's scale of the noise (ALGORITHMS.md §2.1) */
+#else
+    const mtt_real q = p->imm_psd[j];
+    (void)s;
+#endif
+#if MTT_WITH_IMM_CACT
     if (p->imm_model[j] == MTT_MODEL_CV) {
         mtt_kalman_predict(dt, q, x, P, xp, Pp);
     } else if (p->imm_model[j] == MTT_MODEL_CA) {
@@ -44,7 +70,11 @@ static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real 
     } else {
         mtt_ct_predict(dt, q, p->imm_turn_psd[j], x, P, xp, Pp);
     }
+#else
+    mtt_kalman_predict(dt, q, x, P, xp, Pp);
+#endif
 }
+
 
 int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
@@ -52,20 +82,20 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
     mtt_track *t = &trk->tracks[ti];
     mtt_track_frame *tf = &trk->tf[ti];
     const uint8_t r = p->imm_n_models;
-    mtt_real mix[MTT_MAX_MODELS][MTT_MAX_MODELS], S[3];
+    mtt_real mix[MTT_MAX_MODELS][MTT_MAX_MODELS], S[MTT_SYM_SLOTS];
     uint8_t n[MTT_MAX_MODELS], j, a;
     int ok = 1;
     for (j = 0; j < r; ++j) {
         n[j] = model_n(p->imm_model[j]);
     }
-    if (dt > MTT_R(0.0)) {
+    if (dt > MTT_ZERO) {
         (void)mtt_imm_mix_weights(r, (mtt_real(*)[MTT_MAX_MODELS])p->imm_transition, t->mu, tf->cbar, mix);
         /* mixed starts x_0j, P_0j, parked in xpm / Ppm, then predicted */
         (void)mtt_imm_mix(r, n, mix, t->xm, t->Pm, tf->xpm, tf->Ppm);
 #if MTT_WITH_CONTEST
         const mtt_real s = mtt_adapt_imm_scale(trk, t);
 #else
-        const mtt_real s = MTT_R(1.0);
+        const mtt_real s = MTT_RATIO(1.0);
 #endif
         for (j = 0; j < r; ++j) {
             model_predict(p, j, dt, s, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
@@ -78,10 +108,10 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
             memcpy(tf->Ppm[j], t->Pm[j], sizeof tf->Ppm[j]);
         }
     }
-    tf->vgm = MTT_R(0.0);
+    tf->vgm = MTT_ZERO;
     for (j = 0; j < r && ok; ++j) {
-        mtt_real det = MTT_R(0.0), Si[3], vg;
-#if MTT_WITH_MEAS_COV
+        mtt_real det = MTT_ZERO, Si[MTT_SYM_SLOTS], vg;
+#if MTT_WITH_POLAR
         mtt_real Rt[3]; /* polar: R at the model's predicted position (ALGORITHMS.md §3.2) */
         ok = mtt_state_finite(tf->xpm[j]) &&
              mtt_kalman_innov_n(n[j], tf->Ppm[j], mtt_polar_track_r(trk, tf->xpm[j], Rt), S, Si, &det,
@@ -92,10 +122,16 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 #endif
         if (ok) {
             memcpy(tf->Sim[j], Si, sizeof Si);
+#ifdef MTT_REAL_FIXED
+            vg = mtt_fx_gate_area_peak_c(trk->gc, det, S, &tf->peakm[j]); /* lambda V_G, p / lambda */
+            tf->vgj[j] = vg;
+            tf->hld[j] = mtt_fx_half_ln_det(det, S);
+#else
             tf->peakm[j] = mtt_gate_likelihood(MTT_R(0.0), det, p->pg);
-            tf->wm[j][0] = mtt_sqrt(trk->gamma * S[0]);
-            tf->wm[j][1] = mtt_sqrt(trk->gamma * S[2]);
             vg = mtt_gate_volume(trk->gamma, det);
+#endif
+            tf->wm[j][0] = MTT_GATE_WIDTH(trk->gamma, S, 0);
+            tf->wm[j][1] = MTT_GATE_WIDTH(trk->gamma, S, 2);
             tf->vgm = (vg > tf->vgm) ? vg : tf->vgm;
             if (j == 0u) {
                 /* the single-filter fields, read by gate.c before its IMM branch */
@@ -111,11 +147,12 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
      * gate uses every model's own S (ALGORITHMS.md §14.2). */
     memset(tf->xp, 0, sizeof tf->xp);
     for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        mtt_real d = MTT_R(0.0);
+        mtt_pos d = MTT_ZERO;
         for (j = 1; j < r; ++j) {
-            d += tf->cbar[j] * (tf->xpm[j][a] - tf->xpm[0][a]);
+            /* (fixed point: the Q30 product keeps the position's format) */
+            d = MTT_ADDS(d, MTT_MUL_PP(tf->cbar[j], MTT_SUBS(tf->xpm[j][a], tf->xpm[0][a])));
         }
-        tf->xp[a] = tf->xpm[0][a] + d;
+        tf->xp[a] = MTT_ADDS(tf->xpm[0][a], d);
     }
     return ok && mtt_state_finite(tf->xp);
 }
@@ -123,11 +160,11 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_real *wy)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
-    mtt_real ax = MTT_R(0.0), ay = MTT_R(0.0);
+    mtt_pos ax = MTT_ZERO, ay = MTT_ZERO;
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
-        const mtt_real hx = mtt_fabs(tf->xpm[j][0] - tf->xp[0]) + tf->wm[j][0];
-        const mtt_real hy = mtt_fabs(tf->xpm[j][1] - tf->xp[1]) + tf->wm[j][1];
+        const mtt_pos hx = MTT_ADDS(MTT_ABS(MTT_SUBS(tf->xpm[j][0], tf->xp[0])), tf->wm[j][0]);
+        const mtt_pos hy = MTT_ADDS(MTT_ABS(MTT_SUBS(tf->xpm[j][1], tf->xp[1])), tf->wm[j][1]);
         ax = (hx > ax) ? hx : ax;
         ay = (hy > ay) ? hy : ay;
     }
@@ -138,23 +175,34 @@ void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_
 mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uint8_t j, const mtt_mstore *ms,
                           mtt_real *p)
 {
-    const mtt_real nx = ms->x - tf->xpm[j][0], ny = ms->y - tf->xpm[j][1];
-    mtt_real d2;
-#if MTT_WITH_MEAS_COV
+    const mtt_pos nx = MTT_SUBS(ms->x, tf->xpm[j][0]), ny = MTT_SUBS(ms->y, tf->xpm[j][1]);
+    mtt_d2 d2;
+#if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
     if (ms->has_R) {
         /* its own R and range rate against this model's prediction (§3.1, §3.2) */
         return mtt_gate_own(trk, tf->xpm[j], &tf->Ppm[j][0][0], ms, p);
     }
+#elif MTT_WITH_MEAS_COV
+    if (ms->has_R) {
+        /* its own R against this model's prediction (§3.1) */
+        *p = MTT_ZERO;
+        return (mtt_meas_gauss_fx((mtt_real(*)[MTT_MAX_STATE])tf->Ppm[j], ms->R, trk->gc, nx, ny, &d2, p, NULL) == 0)
+                   ? d2
+                   : D2_NONE;
+    }
+#else
+    (void)trk;
 #endif
     d2 = mtt_mahal2(tf->Sim[j], nx, ny);
-    *p = tf->peakm[j] * mtt_exp(MTT_R(-0.5) * d2);
+    *p = MTT_GATE_LIK(tf->peakm[j], d2);
     return d2;
 }
 
 mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
-    mtt_real best = MTT_REAL_MAX, p;
+    mtt_d2 best = D2_NONE;
+    mtt_real p;
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
         const mtt_real d2 = mtt_imm_model_d2(trk, tf, j, ms, &p);
@@ -163,6 +211,42 @@ mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *
     return best;
 }
 
+#ifdef MTT_REAL_FIXED
+/* y_j = d_j^2 / 2 + ln sqrt(det S_j) of measurement z under model j (Q24,
+ * saturated; with its own R, S_j is Pp_j's position block plus that R). */
+static int32_t model_y(const mtt_track_frame *tf, uint8_t j, const mtt_mstore *ms)
+{
+    const mtt_pos nx = MTT_SUBS(ms->x, tf->xpm[j][0]), ny = MTT_SUBS(ms->y, tf->xpm[j][1]);
+    int32_t hl = tf->hld[j];
+    mtt_d2 d2;
+#if MTT_WITH_MEAS_COV
+    if (ms->has_R) {
+        if (mtt_meas_gauss_fx((mtt_real(*)[MTT_MAX_STATE])tf->Ppm[j], ms->R, NULL, nx, ny, &d2, NULL, &hl) != 0) {
+            return MTT_FX_MAX;
+        }
+    } else
+#endif
+    {
+        d2 = mtt_mahal2(tf->Sim[j], nx, ny);
+    }
+    return mtt_fx_add((int32_t)(((uint32_t)d2 + 1u) >> 1), hl);
+}
+
+/* e_j = exp(-(y_j - min_k y_k)) in Q30 (see the header). */
+static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms,
+                              mtt_real pj[])
+{
+    int32_t y[MTT_MAX_MODELS], ymin = MTT_FX_MAX;
+    uint8_t j;
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        y[j] = model_y(tf, j, ms);
+        ymin = (y[j] < ymin) ? y[j] : ymin;
+    }
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        pj[j] = mtt_fx_exp_neg_q30((uint32_t)mtt_fx_sub(y[j], ymin));
+    }
+}
+#else
 /* p_i^j = N(ν_i^j; 0, S_j)/PG of measurement z under every model. */
 static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms,
                               mtt_real pj[])
@@ -172,13 +256,16 @@ static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf,
         (void)mtt_imm_model_d2(trk, tf, j, ms, &pj[j]);
     }
 }
+#endif
 
 mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_real pj[MTT_MAX_MODELS], pd[MTT_MAX_MODELS], pdm;
     uint8_t j;
-    model_likelihoods(trk, tf, ms, pj);
+    for (j = 0; j < trk->par.imm_n_models; ++j) {
+        (void)mtt_imm_model_d2(trk, tf, j, ms, &pj[j]);
+    }
     for (j = 0; j < trk->par.imm_n_models; ++j) {
         pd[j] = trk->par.pd;
     }
@@ -197,20 +284,24 @@ mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_cand *c = trk->row.cand;
     mtt_real *beta = trk->row.beta, *L = trk->row.L;
-    const mtt_real miss = MTT_R(1.0) - p->pd * p->pg;
-    mtt_real sum = MTT_R(0.0);
+    const mtt_ratio miss = MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(p->pd, p->pg)));
+    mtt_ratio sum = MTT_ZERO;
     uint16_t k;
     uint8_t j;
     for (j = 0; j < p->imm_n_models; ++j) {
+#ifdef MTT_REAL_FIXED
+        const mtt_ratio vg = tf->vgj[j]; /* lambda V_G^j */
+#else
         /* V_G^j = π γ sqrt(det S_j) = γ / (2 PG N_j(0)) */
         const mtt_real vg = trk->gamma / (MTT_R(2.0) * p->pg * tf->peakm[j]);
+#endif
         uint16_t m = 0, sel = 0, b = 0;
         int has_a = 0;
         for (k = tf->pair_first; k < tf->pair_first + tf->pair_count; ++k) {
             const mtt_pair *pp = &trk->pairs[k];
             const mtt_mstore *ms = &trk->meas[pp->meas];
             mtt_real d2;
-            if (!(pp->beta > MTT_R(0.0)) && k != a) {
+            if (!(pp->beta > MTT_ZERO) && k != a) {
                 continue; /* not in the final row */
             }
             d2 = mtt_imm_model_d2(trk, tf, j, ms, &c[m].p);
@@ -227,16 +318,16 @@ mtt_real mtt_imm_exist_L(mtt_tracker *trk, uint16_t ti, uint16_t a)
             ++m;
         }
         if (m == 0u) {
-            sum += tf->cbar[j] * miss;
+            sum = MTT_ADDS(sum, MTT_MUL_RP(tf->cbar[j], miss));
             continue;
         }
         mtt_ihpda_betas(p->pd, p->pg, vg,
-                        (p->snr_rho > MTT_R(0.0) && tf->has_all_amp) ? &trk->prank[MTT_PRANK_ROW(m)] : NULL, c,
+                        (p->snr_rho > MTT_ZERO && tf->has_all_amp) ? &trk->prank[MTT_PRANK_ROW(m)] : NULL, c,
                         m, beta, L, NULL);
         for (k = 1; k < m; ++k) {
             b = (beta[k] > beta[b]) ? k : b;
         }
-        sum += tf->cbar[j] * L[has_a ? sel : b];
+        sum = MTT_ADDS(sum, MTT_MUL_RP(tf->cbar[j], CAND_L(L[has_a ? sel : b], c[has_a ? sel : b])));
     }
     return sum;
 }
@@ -258,7 +349,7 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
     int own;
 #endif
     for (j = 0; j < r; ++j) {
-        e0[j] = MTT_R(1.0);
+        e0[j] = MTT_P(1.0);
     }
     for (i = 0; i < m; ++i) {
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
@@ -277,12 +368,13 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
             for (i = 0; i < n; ++i) {
                 memcpy(t->Pm[j][i], tf->Ppm[j][i], n * sizeof t->Pm[j][i][0]);
             }
+            MTT_COV_COPY_E(t->Pm[j], tf->Ppm[j]);
             continue;
         }
         for (i = 0; i < m; ++i) {
             const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
-            nu[i][0] = ms->x - tf->xpm[j][0];
-            nu[i][1] = ms->y - tf->xpm[j][1];
+            nu[i][0] = MTT_SUBS(ms->x, tf->xpm[j][0]);
+            nu[i][1] = MTT_SUBS(ms->y, tf->xpm[j][1]);
         }
 #if MTT_WITH_MEAS_COV
         if (own) {
@@ -317,12 +409,17 @@ void mtt_imm_seed_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
             t->xm[j][a] = t->x[a];
             memcpy(t->Pm[j][a], t->P[a], MTT_STATE_N * sizeof t->P[a][0]);
         }
+        MTT_COV_COPY_E(t->Pm[j], t->P);
+#if MTT_WITH_IMM_CACT
         if (p->imm_model[j] == MTT_MODEL_CA) {
             t->Pm[j][4][4] = p->imm_psd[j] * dt;
             t->Pm[j][5][5] = p->imm_psd[j] * dt;
         } else if (p->imm_model[j] == MTT_MODEL_CT) {
             t->Pm[j][4][4] = p->imm_turn_psd[j] * dt;
         }
+#else
+        (void)dt;
+#endif
     }
 }
 
@@ -334,22 +431,22 @@ void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind)
     uint16_t j, b = 0;
     if (kind == MTT_UPDATE_ONE) {
         if (tf->assigned < 0) {
-            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
-            t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_P(1.0));
+            t->existence = mtt_existence_update(tf->ex_pred, MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(trk->par.pd, trk->par.pg))));
             t->meas = -1;
         } else {
             const mtt_pair *pp = &trk->pairs[tf->assigned];
             const mtt_real L = mtt_imm_exist_L(trk, ti, (uint16_t)tf->assigned);
             beta[0] = pp->beta;
-            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(1.0) - pp->beta);
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_SUB(MTT_P(1.0), pp->beta));
             t->existence = mtt_existence_update(tf->ex_pred, L);
             t->meas = (int32_t)trk->meas[pp->meas].src;
         }
         return;
     }
     if (tf->pair_count == 0u) {
-        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
-        t->existence = mtt_existence_update(tf->ex_pred, MTT_R(1.0) - trk->par.pd * trk->par.pg);
+        mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_P(1.0));
+        t->existence = mtt_existence_update(tf->ex_pred, MTT_CVT_P_R(MTT_SUB(MTT_P(1.0), MTT_MUL_PP(trk->par.pd, trk->par.pg))));
         t->meas = -1;
         return;
     }
@@ -357,11 +454,11 @@ void mtt_imm_update_assoc(mtt_tracker *trk, uint16_t ti, uint8_t kind)
         /* NNJPDA (§13.5): every model takes the assigned measurement with
          * beta 1, or keeps its prediction; existence of §13.2 either way */
         if (tf->assigned < 0) {
-            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_R(1.0));
+            mtt_imm_update_track(trk, ti, 0, 0, beta, MTT_P(1.0));
             t->meas = -1;
         } else {
-            beta[0] = MTT_R(1.0);
-            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_R(0.0));
+            beta[0] = MTT_P(1.0);
+            mtt_imm_update_track(trk, ti, (uint16_t)tf->assigned, 1, beta, MTT_ZERO);
             t->meas = (int32_t)trk->meas[trk->pairs[tf->assigned].meas].src;
         }
         t->existence = tf->ex_post;

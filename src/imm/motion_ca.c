@@ -15,7 +15,7 @@
  * construction. */
 #include "mtt_internal.h"
 
-#if MTT_WITH_IMM
+#if MTT_WITH_IMM_CACT
 
 void mtt_ca_axis(mtt_real dt, mtt_real q, mtt_real F[3][3], mtt_real Q[3][3])
 {
@@ -93,4 +93,4 @@ void mtt_ca_predict(mtt_real dt, mtt_real q, const mtt_real x[], mtt_real P[][MT
     }
 }
 
-#endif /* MTT_WITH_IMM */
+#endif /* MTT_WITH_IMM_CACT */

@@ -17,7 +17,7 @@
  * xp = f(x), Pp = F P F' + Q with F the Jacobian at x. */
 #include "mtt_internal.h"
 
-#if MTT_WITH_IMM
+#if MTT_WITH_IMM_CACT
 
 /* Below this |wT| the four turn coefficients come from their Taylor
  * series: the closed forms of the w-derivatives cancel (float keeps
@@ -120,4 +120,4 @@ void mtt_ct_predict(mtt_real dt, mtt_real sw, mtt_real sw_turn, const mtt_real x
     }
 }
 
-#endif /* MTT_WITH_IMM */
+#endif /* MTT_WITH_IMM_CACT */

@@ -786,12 +786,13 @@ static int check_params(const sctx *c)
 #ifdef MTT_REAL_FIXED
         if (strcmp(bad, "max_accel") == 0 || strcmp(bad, "meas_sigma") == 0) {
             /* params.c's var_fits: the square is a variance of its format */
+            const int acc = strcmp(bad, "max_accel") == 0;
             mtt_io_error_key(c->file, bad, "%s is a variance of this fixed-point build's format (Q%d), "
                              "so it needs about %.4g <= v < %.4g (docs/FIXED_POINT.md §3), found %s",
-                             strcmp(bad, "max_accel") == 0
-                                 ? "with process_psd not given, max_accel² (the process noise per unit of time)"
+                             acc ? "with process_psd not given, max_accel² (the process noise per unit of time)"
                                  : "meas_sigma² (R)",
-                             MTT_FX_VAR_FRAC, sqrt(0.5 * mtt_io_from_real(1, MTT_FX_VAR_FRAC)),
+                             MTT_FX_VAR_FRAC,
+                             sqrt(0.5 * mtt_io_from_real(1, MTT_FX_VAR_FRAC)),
                              sqrt(mtt_io_from_real(MTT_FX_MAX, MTT_FX_VAR_FRAC)), val);
             return MTT_IO_EINPUT;
         }
