@@ -39,10 +39,10 @@ aircraft's mean velocity over the scan (a radar's range rate measures the
 aircraft's velocity, not the recording's sampling noise).  A
 recording's 1 s samples carry metres of position noise, so one segment's
 slope is not the aircraft's velocity (traffic's collections/quickstart:
-successive 1 s slopes differ by 41 m/s per second on average, four times
-an airliner's 1 g; at T 10 s the slopes differ from the positions' central
-difference over the scans either side by 25 m/s on average).  A window of
-0, or one clipped to a single sample, gives the segment's slope.  A target is present at a
+23.4 m per axis, and 130,589 of its 398,655 1 s steps above 2 g, ``python3
+-m mtt_sim.recording traffic:collections/quickstart --origin 48.83 2.48
+--dt 1``).  A window of 0, or one clipped to a single sample, gives the
+segment's slope.  A target is present at a
 scan only between its first and last sample and only when the segment
 around the scan is no longer than ``max_gap`` (default 3 scan periods); the
 generator then clips it to the scenario's ``area``.
