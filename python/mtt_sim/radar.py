@@ -12,7 +12,8 @@ with the scenario's PD as
     range rate = (p - s) . v / |p - s| + N(0, sigma_range_rate^2)   (only with sigma_range_rate)
 
 p, v the truth's position and velocity at the scan (a recording's: the
-interpolated positions and their segment's slope, mtt_sim/recording.py).
+interpolated positions and their slope over one scan period,
+``velocity_window``, mtt_sim/recording.py).
 The coverage is the annulus sector range_min <= r <= range_max, bearing in
 [b0, b1] (default the full circle); a target outside it (or outside the
 scenario's area) is not in the truth, and a detection whose measured range

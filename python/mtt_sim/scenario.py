@@ -71,7 +71,7 @@ _TOP_KEYS = {
 }
 _TRUTH_KEYS = {"recording"}
 _RECORDING_KEYS = {"source", "origin", "start", "duration", "ids", "min_points", "max_gap", "first_id",
-                   "airborne_only"}
+                   "airborne_only", "velocity_window"}
 _AREA_KEYS = {"x", "y"}
 _SCAN_KEYS = {"count", "dt", "t0"}
 _CLUTTER_KEYS = {"model", "density", "mean", "n", "p"}
@@ -281,6 +281,7 @@ def _recording(scn, ids, source):
     _num(rec, "duration", source, w, lo=0, lo_open=True, required=False)
     _num(rec, "min_points", source, w, lo=2, integer=True, required=False)
     _num(rec, "max_gap", source, w, lo=0, lo_open=True, required=False)
+    _num(rec, "velocity_window", source, w, lo=0, required=False)
     _num(rec, "first_id", source, w, lo=0, integer=True, required=False)
     if rec.get("ids") is not None:
         v = rec["ids"]

@@ -307,6 +307,11 @@ class TestRadarCompare(unittest.TestCase):
         self.assertIn("skipped", rows["polar+rr"])
         self.assertEqual(rows["xy sigma=20"]["runs_ok"], 1)
         self.assertGreater(rows["xy sigma=20"]["tracked"], 0.5)
+        x = rows["xy sigma=20"]  # GOSPA p 1: the parts add up to it, each at least 0
+        self.assertAlmostEqual(x["gospa_loc"] + x["gospa_missed"] + x["gospa_false"], x["gospa"],
+                               delta=1e-9 * x["gospa"])
+        self.assertGreaterEqual(min(x["gospa_loc"], x["gospa_missed"], x["gospa_false"]), 0.0)
+        self.assertIn("GOSPA = localisation + missed + false", r.stdout)
         self.assertIn(summ["acceptance"]["best_xy"], ("xy sigma=20", "xy sigma=100"))
         self.assertNotIn("gospa_ratio", summ["acceptance"])  # no figure for a row that did not run
         self.assertIn("tracks byte-identical", r.stdout)

@@ -119,7 +119,8 @@ class TestCsvTruth(unittest.TestCase):
         self.assertEqual(sorted(t7), list(range(11)))
         self.assertEqual(t7[0], (0.0, 0.0, 50.0, 10.0, 0.0))
         self.assertEqual(t7[2], (4.0, 40.0, 50.0, 10.0, 0.0))  # t = 104: 40 m, segment slope 10 m/s
-        self.assertEqual(t7[5][1:4], (100.0, 50.0, 20.0))  # t = 110 exactly: the next segment's slope
+        # t = 110 exactly: velocity_window's default, one scan (2 s): x(109) = 90, x(111) = 120, 30 m / 2 s
+        self.assertEqual(t7[5][1:4], (100.0, 50.0, 15.0))
         self.assertEqual(t7[8][1:4], (220.0, 50.0, 20.0))  # t = 116: 100 + 20 * 6
         self.assertEqual(t7[10][1:4], (300.0, 50.0, 20.0))  # last sample
         # target 9: samples 100, 102 | 12 s gap > max_gap 10 | 114, 116; unsorted rows are sorted
@@ -131,6 +132,28 @@ class TestCsvTruth(unittest.TestCase):
         # PD 1, sigma 1, no clutter: one detection per truth row, near it
         self.assertEqual(len(run["det"]["x"]), len(run["truth"]["x"]))
         self.assertTrue((run["det"]["origin"] >= 0).all())
+
+    def test_velocity_window(self):
+        d = tmpdir(self)
+        # 0: the segment's slope (at t = 110 exactly the next segment's, 20 m/s)
+        t7 = by_target(gen.generate(scn_file(d, overrides=["truth.recording.velocity_window=0"]), 0)["truth"])[7]
+        self.assertEqual([t7[k][3] for k in (0, 5, 6, 10)], [10.0, 20.0, 20.0, 20.0])
+        tr = by_target(gen.generate(scn_file(d, overrides=["truth.recording.velocity_window=8"]), 0)["truth"])
+        t7, t9 = tr[7], tr[9]
+        # t = 112: [108, 116]: x 80 -> 220, 140 m / 8 s; t = 104: [100, 108] inside the first segment
+        self.assertAlmostEqual(t7[6][3], 17.5, places=12)
+        self.assertAlmostEqual(t7[2][3], 10.0, places=12)
+        # t = 100, the first sample: [100, 104]: 10 m/s; t = 120, the last: [116, 120]: x 220 -> 300, 20 m/s
+        self.assertAlmostEqual(t7[0][3], 10.0, places=12)
+        self.assertAlmostEqual(t7[10][3], 20.0, places=12)
+        # target 9: the window stops at the 12 s gap (> max_gap 10): at 102, [98, 106] -> [100, 102], 10 m / 2 s;
+        # at 114, [110, 118] -> [114, 116], 20 m / 2 s
+        self.assertAlmostEqual(t9[1][3], 5.0, places=12)
+        self.assertAlmostEqual(t9[7][3], 10.0, places=12)
+        self.assertEqual(t9[1][1:3], (10.0, 20.0))  # positions are the interpolation, whatever the window
+        for bad in ("-1", '"a"'):
+            with self.assertRaises(scenario.ScenarioError):
+                scn_file(d, overrides=[f"truth.recording.velocity_window={bad}"])
 
     def test_max_gap_default_three_scans(self):
         d = tmpdir(self)
