@@ -319,6 +319,126 @@ static void test_imm_from_max_accel(void)
         TEST_ASSERT_EQUAL_STRING("imm_models", bad);
     }
 }
+
+/* A block P = v 2^e from doubles (largest mantissa below 2^28) and back. */
+static void cov_set(mtt_cov P, const double v[4][4])
+{
+    double mx = 0.0;
+    int i, j, e;
+    for (i = 0; i < 4; ++i) {
+        mx = (fabs(v[i][i]) > mx) ? fabs(v[i][i]) : mx;
+    }
+    e = (int)ceil(log2(mx)) - 27;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            P[i][j] = (mtt_real)llround(ldexp(v[i][j], -e));
+        }
+    }
+    MTT_COV_E(P) = e;
+}
+static double cov_at(mtt_cov P, int i, int j)
+{
+    return ldexp((double)P[i][j], MTT_COV_E(P));
+}
+
+/* The IMM's mixing and combination (ALGORITHMS.md §14.1) in fixed point
+ * against the moment-matched mixture in double: x̄ = Σ w_i x_i, P̄ = Σ w_i
+ * (P_i + d_i d_i'), two models 300 m and 40 m/s apart at 120 km, within 2^-23
+ * of the largest variance (block rounding) and 2^-8 m; the apportionment
+ * against its formulas within 1e-7. */
+static void test_imm_mixing_matches_double(void)
+{
+    static const double P0[4][4] = {{2500, 300, 400, 0}, {300, 2000, 0, 350}, {400, 0, 900, 20}, {0, 350, 20, 800}};
+    static const double P1[4][4] = {{9000, -500, 2500, 0}, {-500, 8000, 0, 2100}, {2500, 0, 4000, 100},
+                                    {0, 2100, 100, 3500}};
+    static const double x0[4] = {120000.0, -35000.0, 150.0, -20.0}, x1[4] = {120300.0, -35100.0, 110.0, 5.0};
+    const double mu[2] = {0.8, 0.2}, Pi[2][2] = {{0.95, 0.05}, {0.3, 0.7}};
+    mtt_real Pf[MTT_MAX_MODELS][MTT_MAX_MODELS] = {{0}}, muf[MTT_MAX_MODELS] = {0}, cb[MTT_MAX_MODELS],
+             mix[MTT_MAX_MODELS][MTT_MAX_MODELS], x[MTT_MAX_MODELS][MTT_MAX_STATE], xo[MTT_MAX_MODELS][MTT_MAX_STATE],
+             xc[MTT_MAX_STATE];
+    mtt_cov P[MTT_MAX_MODELS], Po[MTT_MAX_MODELS], Pc;
+    const uint8_t n[MTT_MAX_MODELS] = {4, 4};
+    const double *xs[2] = {x0, x1};
+    double w[2][2], c[2];
+    int i, j, a, b;
+    for (i = 0; i < 2; ++i) {
+        muf[i] = MTT_FX_CONST(mu[i], MTT_FX_PROB_FRAC);
+        for (j = 0; j < 2; ++j) {
+            Pf[i][j] = MTT_FX_CONST(Pi[i][j], MTT_FX_PROB_FRAC);
+        }
+        for (a = 0; a < 4; ++a) {
+            x[i][a] = pos(xs[i][a]);
+        }
+    }
+    cov_set(P[0], P0);
+    cov_set(P[1], P1);
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix_weights(2, Pf, muf, cb, mix));
+    for (j = 0; j < 2; ++j) {
+        c[j] = Pi[0][j] * mu[0] + Pi[1][j] * mu[1];
+        TEST_ASSERT_DOUBLE_WITHIN(4e-9, c[j], mtt_fx_to_double(cb[j], MTT_FX_PROB_FRAC));
+        for (i = 0; i < 2; ++i) {
+            w[i][j] = Pi[i][j] * mu[i] / c[j];
+            TEST_ASSERT_DOUBLE_WITHIN(1e-8, w[i][j], mtt_fx_to_double(mix[i][j], MTT_FX_PROB_FRAC));
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_mix(2, n, mix, x, P, xo, Po));
+    TEST_ASSERT_EQUAL_INT(0, mtt_imm_combine(2, muf, x, P, xc, Pc));
+    for (j = 0; j < 3; ++j) { /* j = 2: the combination with mu */
+        const double wt[2] = {(j < 2) ? w[0][j] : mu[0], (j < 2) ? w[1][j] : mu[1]};
+        double xm[4], mx = 0.0;
+        for (a = 0; a < 4; ++a) {
+            xm[a] = wt[0] * pos_d(x[0][a]) + wt[1] * pos_d(x[1][a]);
+            TEST_ASSERT_DOUBLE_WITHIN(0x1p-8, xm[a], pos_d((j < 2) ? xo[j][a] : xc[a]));
+        }
+        /* the blocks meet at one exponent 2^E <= 2^-26 of the largest
+         * input or spread variance; a few roundings there and one in the
+         * renormalisation: 2^-23 of it */
+        for (a = 0; a < 4; ++a) {
+            for (i = 0; i < 2; ++i) {
+                const double d = pos_d(x[i][a]) - xm[a];
+                mx = (cov_at(P[i], a, a) > mx) ? cov_at(P[i], a, a) : mx;
+                mx = (d * d > mx) ? d * d : mx;
+            }
+        }
+        for (a = 0; a < 4; ++a) {
+            for (b = 0; b < 4; ++b) {
+                double v = 0.0;
+                for (i = 0; i < 2; ++i) {
+                    v += wt[i] * (cov_at(P[i], a, b) + (pos_d(x[i][a]) - xm[a]) * (pos_d(x[i][b]) - xm[b]));
+                }
+                TEST_ASSERT_DOUBLE_WITHIN(mx * 0x1p-23, v, cov_at((j < 2) ? Po[j] : Pc, a, b));
+            }
+        }
+    }
+    {
+        /* two measurements, model weights 1 and 0.25, 0.5 and 1; beta0 0.1 */
+        const double e[2][2] = {{1.0, 0.25}, {0.5, 1.0}}, be[2] = {0.6, 0.3}, b0 = 0.1;
+        mtt_real ef[MTT_MAX_GATED][MTT_MAX_MODELS] = {{0}}, e0[MTT_MAX_MODELS] = {MTT_P(1.0), MTT_P(1.0)},
+                 bf[MTT_MAX_GATED] = {0}, muo[MTT_MAX_MODELS], b0j[MTT_MAX_MODELS], bj[MTT_MAX_MODELS][MTT_MAX_GATED];
+        double mj[2] = {0.0, 0.0}, jt[3][2];
+        for (i = 0; i < 2; ++i) {
+            bf[i] = MTT_FX_CONST(be[i], MTT_FX_PROB_FRAC);
+            for (j = 0; j < 2; ++j) {
+                ef[i][j] = MTT_FX_CONST(e[i][j], MTT_FX_PROB_FRAC);
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(0, mtt_imm_apportion(2, cb, 2, MTT_P(0.1), bf, e0, ef, muo, b0j, bj));
+        for (j = 0; j < 2; ++j) {
+            jt[0][j] = b0 * c[j] / (c[0] + c[1]);
+            for (i = 0; i < 2; ++i) {
+                jt[i + 1][j] = be[i] * c[j] * e[i][j] / (c[0] * e[i][0] + c[1] * e[i][1]);
+            }
+            mj[j] = jt[0][j] + jt[1][j] + jt[2][j];
+        }
+        for (j = 0; j < 2; ++j) {
+            TEST_ASSERT_DOUBLE_WITHIN(1e-7, mj[j] / (mj[0] + mj[1]), mtt_fx_to_double(muo[j], MTT_FX_PROB_FRAC));
+            TEST_ASSERT_DOUBLE_WITHIN(1e-7, jt[0][j] / mj[j], mtt_fx_to_double(b0j[j], MTT_FX_PROB_FRAC));
+            for (i = 0; i < 2; ++i) {
+                TEST_ASSERT_DOUBLE_WITHIN(1e-7, jt[i + 1][j] / mj[j], mtt_fx_to_double(bj[j][i], MTT_FX_PROB_FRAC));
+            }
+        }
+    }
+}
 #endif
 
 int main(void)
@@ -332,6 +452,7 @@ int main(void)
     RUN_TEST(test_motion_from_max_accel);
 #if MTT_WITH_IMM
     RUN_TEST(test_imm_from_max_accel);
+    RUN_TEST(test_imm_mixing_matches_double);
 #endif
     return UNITY_END();
 }

@@ -314,6 +314,10 @@ typedef struct mtt_tracker {
     mtt_real gamma;                 /* gate threshold from pg */
 #ifdef MTT_REAL_FIXED
     int32_t gc[4];                  /* the gate's factors of gamma, pg and lambda (src/assoc/gate.c) */
+#if MTT_WITH_IMM
+    /* Q(dT) of each IMM model this frame (one dT and level per model: no contest scale) */
+    mtt_real qm[MTT_MAX_MODELS][MTT_COV_ROWS(MTT_MAX_STATE)][MTT_MAX_STATE];
+#endif
 #endif
     mtt_real R[3];                  /* measurement covariance (sym) */
     mtt_real prank[(MTT_MAX_GATED * (MTT_MAX_GATED + 1)) / 2]; /* P_r(l|m), ALGORITHMS.md §7.2 */

@@ -428,27 +428,42 @@ void mtt_gate_frame(mtt_tracker *trk)
         /* N(0; 0, S) / PG once per track: the pairs differ only in
          * exp(-d2/2), so the square root and divisions are not repeated per
          * pair (the fixed build shares sqrt(det S) with the area). */
-#ifdef MTT_REAL_FIXED
-        tf->vg = mtt_fx_gate_area_peak_c(gc, tf->det_s, tf->S, &peak); /* gamma: trk->gamma */
-#else
-        MTT_GATE_AREA_PEAK(tf->vg, peak, gamma, tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
-#endif
-        wx = MTT_GATE_WIDTH(gamma, tf->S, 0);
-        wy = MTT_GATE_WIDTH(gamma, tf->S, 2);
 #if MTT_WITH_IMM
         if (imm) {
-            /* the union of the model gates (ALGORITHMS.md §14.2) */
+            /* the union of the model gates (ALGORITHMS.md §14.2); the
+             * models' own likelihoods (mtt_imm_gate_p) */
+            peak = MTT_ZERO;
             tf->vg = tf->vgm;
             mtt_imm_gate_window(trk, i, &wx, &wy);
-        }
+        } else
 #endif
+        {
+#ifdef MTT_REAL_FIXED
+            tf->vg = mtt_fx_gate_area_peak_c(gc, tf->det_s, tf->S, &peak); /* gamma: trk->gamma */
+#else
+            MTT_GATE_AREA_PEAK(tf->vg, peak, gamma, tf->det_s, tf->S, trk->par.pg, trk->par.clutter_density);
+#endif
+            wx = MTT_GATE_WIDTH(gamma, tf->S, 0);
+            wy = MTT_GATE_WIDTH(gamma, tf->S, 2);
+        }
 #if MTT_WITH_MEAS_COV && defined(MTT_REAL_FIXED)
         if (trk->n_own_r > 0u) {
             /* detections with a wider R of their own: the window reaches
              * sqrt(gamma (S_xx - R_xx + r_xx)) (§3.1), an upper bound as
              * MTT_GATE_WIDTH's (no polar detections in this build) */
-            wx = own_width(gamma, tf->S, trk->own_rmax[0] - trk->R[0], 0, wx);
-            wy = own_width(gamma, tf->S, trk->own_rmax[1] - trk->R[2], 2, wy);
+#if MTT_WITH_IMM
+            if (imm) {
+                /* the models' union: each model's half-width grows by at most
+                 * sqrt(gamma dr) (sqrt(a + b) <= sqrt(a) + sqrt(b)) */
+                const mtt_real z[MTT_SYM_SLOTS] = {0, 0, 0, -MTT_FX_VAR_FRAC};
+                wx = MTT_ADDS(wx, own_width(gamma, z, trk->own_rmax[0] - trk->R[0], 0, 0));
+                wy = MTT_ADDS(wy, own_width(gamma, z, trk->own_rmax[1] - trk->R[2], 2, 0));
+            } else
+#endif
+            {
+                wx = own_width(gamma, tf->S, trk->own_rmax[0] - trk->R[0], 0, wx);
+                wy = own_width(gamma, tf->S, trk->own_rmax[1] - trk->R[2], 2, wy);
+            }
         }
 #elif MTT_WITH_MEAS_COV
         mtt_gate_own_widen(trk, gamma, &wx, &wy);

@@ -93,6 +93,7 @@ static const char *check_imm(const mtt_params *p)
     }
     for (i = 0; i < MTT_MAX_MODELS; ++i) {
         mtt_prob s = MTT_ZERO;
+        /* cppcheck-suppress knownConditionTrueFalse ; always true only where MTT_MAX_MODELS is 2 */
         if (i < r && !((int)p->imm_model[i] >= 0 && (int)p->imm_model[i] <= (int)MTT_MODEL_CT)) {
             return "imm_models";
         }
@@ -319,7 +320,7 @@ static mtt_status check_into(const mtt_params *p, const char **bad_field, mtt_pa
         *q = *p;
         mtt_manoeuvre_resolve(q, &lv);
 #if MTT_WITH_IMM
-        bad = (bad != NULL) ? bad : check_imm(q);
+        bad = check_imm(q);
         if (bad == NULL && q->motion == MTT_MOTION_IMM && !mtt_modes[q->association].imm) {
 #else
         if (q->motion == MTT_MOTION_IMM) {

@@ -20,6 +20,11 @@ void mtt_predict_frame(mtt_tracker *trk, mtt_real dt)
     if (dt > MTT_ZERO) {
         mtt_manoeuvre_frame(trk, dt); /* the derived motion at this dt (ALGORITHMS.md §2.2) */
         mtt_motion_q(dt, trk->par.process_psd, Q);
+#if MTT_WITH_IMM && defined(MTT_REAL_FIXED)
+        for (i = 0; i < trk->par.imm_n_models && trk->par.motion == MTT_MOTION_IMM; ++i) {
+            mtt_motion_q(dt, trk->par.imm_psd[i], trk->qm[i]); /* every IMM track's, once */
+        }
+#endif
 #if MTT_WITH_CONTEST
         trk->q_floor = mtt_adapt_floor(trk, dt);
 #endif

@@ -59,55 +59,72 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
 }
 
 #ifdef MTT_REAL_FIXED
-/* The mixture below in block floating point (docs/FIXED_POINT.md §2):
- * Po = Σ_i w_i P_i + Σ_i w_i d_i d_i', d_i = x_i - xo (the same matrix as
- * the float text's, written as a sum of PSD terms, which keeps it PSD in
- * integer arithmetic).  Each w_i P_i has its block's exponent e_i (below
- * 2^28), their sum meets at the largest; the d_i are on 28 bits together
- * (exponent E_B, each product below 2^26, the weighted sum too); the two
- * sums meet at E = max(e_max, E_B - 2), each below 2^28 there, before one
- * renormalisation.  Positions stay in the position format. */
+/* The mixture below in block floating point (docs/FIXED_POINT.md §2), the
+ * float text's formula: every P_i at the largest block exponent E (below
+ * 2^28 there), Po = P_ref + Σ_{i≠ref} w_i (P_i - P_ref) (a convex
+ * combination, below 2^28) plus the spread Σ_{i≠ref} w_i d_i D_i'
+ * (= Σ_i w_i d_i d_i', PSD).  The D_i go on 27 bits together (exponent
+ * EB), and s and d_i = D_i - s are formed there, not in the position
+ * format: this form of the spread is first-order in the error of s (a
+ * mean rounded to the position's LSB would cost 0.1 m² at 300 m apart).
+ * Each product (shift 28) is below 2^27, the weighted sum too; the spread
+ * meets the rest at E, the larger of e_max and the exponent that puts the
+ * spread's largest entry on 28 bits, before one renormalisation. */
 #define MULQ(a, b) mtt_fx_mulq30((a), (b))
 static void mixture4(uint8_t r, uint8_t ref, const mtt_prob w[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[],
                      mtt_real xo[], mtt_real Po[][MTT_MAX_STATE])
 {
-    int32_t d[MTT_MAX_MODELS][MTT_IMM_COMMON], s[MTT_IMM_COMMON] = {0};
+    int32_t D[MTT_MAX_MODELS][MTT_IMM_COMMON], wd[MTT_MAX_MODELS][MTT_IMM_COMMON], s[MTT_IMM_COMMON] = {0};
+    int32_t sp[MTT_IMM_COMMON * (MTT_IMM_COMMON + 1) / 2];
     const mtt_real *xr = x[ref];
     uint32_t u = 0u;
-    int E = -1000, EB = 0, sh = 0;
+    int E = MTT_COV_E(P[ref]), EB = 0, sh = 0, c;
     uint8_t i, a, b;
     for (i = 0; i < r; ++i) {
         E = (MTT_COV_E(P[i]) > E) ? MTT_COV_E(P[i]) : E;
         for (a = 0; a < MTT_IMM_COMMON; ++a) {
-            d[i][a] = MTT_SUBS(x[i][a], xr[a]);
-            s[a] = MTT_ADDS(s[a], MULQ(w[i], d[i][a]));
-        }
-    }
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        xo[a] = MTT_ADDS(xr[a], s[a]);
-        for (i = 0; i < r; ++i) {
-            d[i][a] = MTT_SUBS(d[i][a], s[a]); /* x_i - xo */
-            u |= (uint32_t)MTT_ABS(d[i][a]);
+            D[i][a] = MTT_SUBS(x[i][a], xr[a]); /* 0 for ref */
+            u |= (uint32_t)MTT_ABS(D[i][a]);
         }
     }
     if (u != 0u) {
-        sh = 28 - (32 - mtt_fx_clz(u));
-        EB = 30 - 2 * (MTT_FX_POS_FRAC + sh);
-        E = (EB - 2 > E) ? EB - 2 : E;
+        /* |s| <= max |D_i| < 2^27, |d_i| <= 2 max |D_i| < 2^28 */
+        sh = 27 - (32 - mtt_fx_clz(u));
+        EB = 28 - 2 * (MTT_FX_POS_FRAC + sh); /* the products' (shift 28) */
+    }
+    for (a = 0; a < MTT_IMM_COMMON; ++a) {
         for (i = 0; i < r; ++i) {
-            for (a = 0; a < MTT_IMM_COMMON; ++a) {
-                d[i][a] = mtt_fx_shift(d[i][a], sh);
+            D[i][a] = mtt_fx_shift(D[i][a], sh);
+            s[a] += MULQ(w[i], D[i][a]);
+        }
+        xo[a] = MTT_ADDS(xr[a], mtt_fx_shift(s[a], -sh));
+        for (i = 0; i < r; ++i) {
+            wd[i][a] = MULQ(w[i], D[i][a] - s[a]); /* w_i d_i */
+        }
+    }
+    /* the spread's upper triangle at EB, then E from its measured size */
+    for (a = 0, c = 0; a < MTT_IMM_COMMON; ++a) {
+        for (b = a; b < MTT_IMM_COMMON; ++b, ++c) {
+            sp[c] = 0;
+            for (i = 0; i < r; ++i) {
+                sp[c] += (i != ref) ? mtt_fx_mulq28(wd[i][a], D[i][b]) : 0;
             }
         }
     }
-    for (a = 0; a < MTT_IMM_COMMON; ++a) {
-        for (b = a; b < MTT_IMM_COMMON; ++b) {
-            int32_t v = 0, sp = 0;
+    if (u != 0u) {
+        const int es = mtt_fx_top_exp(EB, mtt_fx_or_abs(sp, c), 28);
+        E = (es > E) ? es : E;
+    }
+    for (a = 0, c = 0; a < MTT_IMM_COMMON; ++a) {
+        for (b = a; b < MTT_IMM_COMMON; ++b, ++c) {
+            const int32_t pr = mtt_fx_shift(P[ref][a][b], MTT_COV_E(P[ref]) - E);
+            int32_t v = pr;
             for (i = 0; i < r; ++i) {
-                v += mtt_fx_shift(MULQ(w[i], P[i][a][b]), MTT_COV_E(P[i]) - E);
-                sp += (u != 0u) ? MULQ(MULQ(w[i], d[i][a]), d[i][b]) : 0;
+                if (i != ref) {
+                    v += MULQ(w[i], mtt_fx_shift(P[i][a][b], MTT_COV_E(P[i]) - E) - pr);
+                }
             }
-            v += (u != 0u) ? mtt_fx_shift(sp, EB - E) : 0;
+            v += (u != 0u) ? mtt_fx_shift(sp[c], EB - E) : 0;
             Po[a][b] = v;
             Po[b][a] = v;
         }
@@ -239,6 +256,72 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
     return (w > MTT_ZERO) ? MTT_DIV_RP(s, w) : MTT_ZERO;
 }
 
+#ifdef MTT_REAL_FIXED
+/* 1 / v for v > 0 in Q30 as m 2^-t (m in (2^29, 2^30]): x / v of a Q30 x
+ * is then mtt_fx_mul(x, m, t), one multiply per quotient instead of a
+ * division (the apportionment divides rows by one value each). */
+static int32_t inv_q30(int32_t v, int *t)
+{
+    *t = 31 - mtt_fx_clz((uint32_t)v); /* bit length - 1, in [0, 30] */
+    return mtt_fx_div(MTT_P(1.0), v, *t);
+}
+
+/* The float text below with each row's quotients by one reciprocal (e0
+ * and e are Q30, each row's largest 1: imm_track.c). */
+int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
+                  const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
+                  mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
+{
+    mtt_prob E = MTT_ZERO, sum = MTT_ZERO, q;
+    uint16_t i;
+    uint8_t j;
+    int t;
+    if (r < 1u || r > MTT_MAX_MODELS || m > MTT_MAX_GATED) {
+        return -1;
+    }
+    for (j = 0; j < r; ++j) {
+        E = MTT_ADDS(E, MTT_MUL_PP(cbar[j], e0[j]));
+        mu[j] = MTT_ZERO;
+    }
+    q = (E > MTT_ZERO) ? inv_q30(E, &t) : MTT_ZERO;
+    for (j = 0; j < r; ++j) {
+        beta0_j[j] = (q > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), q, t) : MTT_ZERO;
+        mu[j] = MTT_ADDS(mu[j], beta0_j[j]);
+    }
+    for (i = 0; i < m; ++i) {
+        E = MTT_ZERO;
+        for (j = 0; j < r; ++j) {
+            E = MTT_ADDS(E, MTT_MUL_PP(cbar[j], e[i][j]));
+        }
+        q = (E > MTT_ZERO) ? inv_q30(E, &t) : MTT_ZERO;
+        for (j = 0; j < r; ++j) {
+            beta_j[j][i] = (q > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(MTT_MUL_PP(beta[i], cbar[j]), e[i][j]), q, t)
+                                          : MTT_ZERO;
+            mu[j] = MTT_ADDS(mu[j], beta_j[j][i]);
+        }
+    }
+    for (j = 0; j < r; ++j) {
+        sum = MTT_ADDS(sum, mu[j]);
+        if (mu[j] > MTT_ZERO) {
+            q = inv_q30(mu[j], &t);
+            beta0_j[j] = mtt_fx_mul(beta0_j[j], q, t);
+            for (i = 0; i < m; ++i) {
+                beta_j[j][i] = mtt_fx_mul(beta_j[j][i], q, t);
+            }
+        } else {
+            beta0_j[j] = beta0; /* a model of no weight: the track's distribution */
+            for (i = 0; i < m; ++i) {
+                beta_j[j][i] = beta[i];
+            }
+        }
+    }
+    q = (sum > MTT_ZERO) ? inv_q30(sum, &t) : MTT_ZERO;
+    for (j = 0; j < r; ++j) {
+        mu[j] = (q > MTT_ZERO) ? mtt_fx_mul(mu[j], q, t) : cbar[j];
+    }
+    return 0;
+}
+#else
 int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
@@ -254,8 +337,7 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
         mu[j] = MTT_ZERO;
     }
     /* Joint P(θ_0, M_j) = β_0 c̄_j e0_j / Σ_k c̄_k e0_k, kept in beta0_j
-     * until μ_j is known; the same for P(θ_i, M_j) in beta_j.  (Fixed
-     * point: e0 and e are Q30, each row's largest 1: imm_track.c.) */
+     * until μ_j is known; the same for P(θ_i, M_j) in beta_j. */
     for (j = 0; j < r; ++j) {
         mtt_prob v = (E0 > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), E0) : MTT_ZERO;
         beta0_j[j] = v;
@@ -277,18 +359,11 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
     }
     for (j = 0; j < r; ++j) {
         if (mu[j] > MTT_ZERO) {
-#ifdef MTT_REAL_FIXED
-            beta0_j[j] = MTT_DIV_P(beta0_j[j], mu[j]);
-            for (i = 0; i < m; ++i) {
-                beta_j[j][i] = MTT_DIV_P(beta_j[j][i], mu[j]);
-            }
-#else
             const mtt_real inv = MTT_R(1.0) / mu[j];
             beta0_j[j] *= inv;
             for (i = 0; i < m; ++i) {
                 beta_j[j][i] *= inv;
             }
-#endif
         } else {
             /* A model of no weight: any valid distribution; take the track's. */
             beta0_j[j] = beta0;
@@ -304,5 +379,6 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
     }
     return 0;
 }
+#endif
 
 #endif /* MTT_WITH_IMM */

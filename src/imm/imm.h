@@ -78,8 +78,8 @@ void mtt_imm_gate_window(const mtt_tracker *trk, uint16_t ti, mtt_real *wx, mtt_
 mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms);
 /* The model-mixed likelihood p* of a measurement (ALGORITHMS.md §14.2). */
 mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms);
-/* d^2 of detection ms under model j (and *p = N(nu; 0, S_j) / PG), with its
- * own R when it has one (ALGORITHMS.md §3.1). */
+/* d^2 of detection ms under model j (and, p not NULL, *p = N(nu; 0, S_j) /
+ * PG), with its own R when it has one (ALGORITHMS.md §3.1). */
 mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uint8_t j, const mtt_mstore *ms,
                           mtt_real *p);
 /* Apportion the track's association result (m pairs from `first`, their beta,

@@ -52,7 +52,16 @@ static uint8_t model_n(mtt_model_kind k)
 }
 
 /* xp = F x, Pp = F P F' + Q of model j (ALGORITHMS.md §2 for CV, §14.1
- * for CA and CT), symmetric; in place (xp = x, Pp = P) allowed. */
+ * for CA and CT), symmetric; in place (xp = x, Pp = P) allowed.  Fixed
+ * point: the frame's Q(dT) of model j (predict.c). */
+#ifdef MTT_REAL_FIXED
+static void model_predict(mtt_tracker *trk, uint8_t j, mtt_real dt, mtt_real s, const mtt_state x, mtt_cov P,
+                          mtt_state xp, mtt_cov Pp)
+{
+    (void)s;
+    mtt_kalman_predict_q(dt, trk->qm[j], x, P, xp, Pp);
+}
+#else
 static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real s, const mtt_state x,
                           mtt_cov P, mtt_state xp, mtt_cov Pp)
 {
@@ -74,6 +83,7 @@ static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real 
     mtt_kalman_predict(dt, q, x, P, xp, Pp);
 #endif
 }
+#endif
 
 
 int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
@@ -98,7 +108,11 @@ int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
         const mtt_real s = MTT_RATIO(1.0);
 #endif
         for (j = 0; j < r; ++j) {
+#ifdef MTT_REAL_FIXED
+            model_predict(trk, j, dt, s, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
+#else
             model_predict(p, j, dt, s, tf->xpm[j], tf->Ppm[j], tf->xpm[j], tf->Ppm[j]);
+#endif
         }
     } else {
         /* First frame: the state is already at this time (seeded tracks). */
@@ -180,13 +194,17 @@ mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uin
 #if MTT_WITH_MEAS_COV && !defined(MTT_REAL_FIXED)
     if (ms->has_R) {
         /* its own R and range rate against this model's prediction (§3.1, §3.2) */
-        return mtt_gate_own(trk, tf->xpm[j], &tf->Ppm[j][0][0], ms, p);
+        mtt_real pk;
+        return mtt_gate_own(trk, tf->xpm[j], &tf->Ppm[j][0][0], ms, (p != NULL) ? p : &pk);
     }
 #elif MTT_WITH_MEAS_COV
     if (ms->has_R) {
         /* its own R against this model's prediction (§3.1) */
-        *p = MTT_ZERO;
-        return (mtt_meas_gauss_fx((mtt_real(*)[MTT_MAX_STATE])tf->Ppm[j], ms->R, trk->gc, nx, ny, &d2, p, NULL) == 0)
+        if (p != NULL) {
+            *p = MTT_ZERO;
+        }
+        return (mtt_meas_gauss_fx((mtt_real(*)[MTT_MAX_STATE])tf->Ppm[j], ms->R, (p != NULL) ? trk->gc : NULL, nx,
+                                  ny, &d2, p, NULL) == 0)
                    ? d2
                    : D2_NONE;
     }
@@ -194,7 +212,9 @@ mtt_real mtt_imm_model_d2(const mtt_tracker *trk, const mtt_track_frame *tf, uin
     (void)trk;
 #endif
     d2 = mtt_mahal2(tf->Sim[j], nx, ny);
-    *p = MTT_GATE_LIK(tf->peakm[j], d2);
+    if (p != NULL) {
+        *p = MTT_GATE_LIK(tf->peakm[j], d2);
+    }
     return d2;
 }
 
@@ -202,10 +222,9 @@ mtt_real mtt_imm_gate_d2(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *
 {
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_d2 best = D2_NONE;
-    mtt_real p;
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
-        const mtt_real d2 = mtt_imm_model_d2(trk, tf, j, ms, &p);
+        const mtt_real d2 = mtt_imm_model_d2(trk, tf, j, ms, NULL); /* d^2 alone */
         best = (d2 < best) ? d2 : best;
     }
     return best;

@@ -159,11 +159,16 @@ fixed_cppcheck() {
   local b="$ROOT/build/$FIXED_PRESET" stages f files=()
   stages="$(sed -n 's/^MTT_FIXED_STAGES:[A-Z]*=//p' "$b/CMakeCache.txt")"
   for f in ${stages//;/ }; do files+=("src/$f.c"); done
-  cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
-    --inline-suppr --quiet --suppress=variableScope \
-    --template='{file}:{line}: {severity}: {id}: {message}' \
-    -I include -I src -DMTT_REAL_FIXED "-DMTT_USER_CONFIG=\"$ROOT/configs/firmware_fixed.h\"" \
-    "${files[@]}"
+  local cfg rc=0
+  # the firmware configuration, and the radar scale's (per-detection R, the IMM)
+  for cfg in firmware_fixed.h firmware_fixed_radar.h; do
+    cppcheck --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 \
+      --inline-suppr --quiet --suppress=variableScope \
+      --template='{file}:{line}: {severity}: {id}: {message}' \
+      -I include -I src -DMTT_REAL_FIXED "-DMTT_USER_CONFIG=\"$ROOT/configs/$cfg\"" \
+      "${files[@]}" || rc=1
+  done
+  return "$rc"
 }
 fixed() {
   local b="$ROOT/build/$FIXED_PRESET"

@@ -35,7 +35,8 @@ say() { printf 'ci-robustness: %s\n' "$*"; }
 passed=0
 failed=0
 ok() { passed=$((passed + 1)); say "PASS $*"; }
-bad() { failed=$((failed + 1)); say "FAIL $*"; }
+failed_names=()
+bad() { failed=$((failed + 1)); failed_names+=("$*"); say "FAIL $*"; }
 
 # Modes to leave out of the fuzz smoke run while a finding is open
 # (docs/ROBUSTNESS.md); none are open.
@@ -106,6 +107,10 @@ if [[ -n "$CLANG" ]] && CC="$CLANG" cmake -S "$ROOT" -B "$FUZZ_DIR" -G Ninja \
       ok "fuzz_$h: ${execs:-?} executions (seed 1, at most $runs)"
     else
       grep -v '^#' "$log" | tail -n 40
+      # the finding itself, so that a CI log alone reproduces it
+      for f in "$art"*; do
+        [[ -f "$f" ]] && say "artifact $(basename "$f") ($(wc -c <"$f") bytes), base64: $(base64 -w0 "$f" | head -c 8192)"
+      done
       bad "fuzz_$h (artifacts in $art)"
     fi
   done
@@ -124,5 +129,6 @@ else
   bad "soak $SOAK_FRAMES frames"
 fi
 
+for f in "${failed_names[@]}"; do say "FAIL $f"; done # again at the end: CI logs are read from the tail
 echo "robustness: $passed passed, $failed failed"
 ((failed == 0))

@@ -149,6 +149,8 @@ run_counted() {
   say "=== tools/ci/$(basename "$script") $*"
   "$script" "$@" 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
   line="$(grep -E "^$prefix: [0-9]+ passed, [0-9]+ failed\$" "$log" | tail -n1 || true)"
+  # the failed checks by name, repeated at the very end (a CI log is often read from its tail)
+  while IFS= read -r f; do failures+=("$f"); done < <(grep -E '^[a-z-]+: FAIL ' "$log" || true)
   if [[ -n "$line" ]]; then
     passed=$((passed + $(sed -E "s/^$prefix: ([0-9]+) passed.*/\1/" <<<"$line")))
     failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$line")))
@@ -219,6 +221,7 @@ cmd_python_package() {
 cmd_test() {
   cmd_deps
   local passed=0 failed=0 wf log rc line total nfail
+  local failures=()
   log="$(mktemp "${TMPDIR:-/tmp}/mtt-dev-test.XXXXXX")"
   # shellcheck disable=SC2064
   trap "rm -f '$log'" EXIT
@@ -235,6 +238,7 @@ cmd_test() {
       passed=$((passed + total - nfail))
       failed=$((failed + nfail))
     fi
+    while IFS= read -r f; do failures+=("$wf: $f"); done < <(grep -E '^[[:space:]]+[0-9]+ - .*\(' "$log" || true)
     if ((rc != 0)); then
       say "workflow $wf failed (exit $rc); stopping"
       if [[ -z "$line" ]]; then
@@ -253,6 +257,8 @@ cmd_test() {
   run_counted ci-firmware "$ROOT/tools/ci/ci-firmware.sh"
   # Robustness: unit tests under ASan+UBSan, fuzz smoke runs, soak.
   run_counted robustness "$ROOT/tools/ci/ci-robustness.sh"
+  local f
+  for f in "${failures[@]}"; do say "failed: $f"; done
   echo "$passed passed, $failed failed"
   ((failed == 0))
 }
