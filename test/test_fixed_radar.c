@@ -320,6 +320,68 @@ static void test_imm_from_max_accel(void)
     }
 }
 
+/* The IMM that max_accel derives, end to end: a target at 250 km flies
+ * straight at 200 m/s, turns at 3 g (30 m/s², max_accel) through 90 degrees,
+ * then straight again; one track from start to end, confirmed, within 3
+ * sigma of the truth and 20 m/s after the turn, the manoeuvring model's
+ * probability above its steady value during the turn and the steady
+ * model's back above 1/2 at the end. */
+static void test_imm_tracks_a_turn(void)
+{
+    const double v0 = 200.0, w = 30.0 / v0; /* rad/s: 30 m/s² at 200 m/s */
+    mtt_params p;
+    mtt_track_view v;
+    mtt_meas m;
+    size_t n = 0;
+    double tx = 250000.0, ty = 0.0, vx = v0, vy = 0.0, mu_turn = 0.0, mu_before = 1.0;
+    uint32_t id = 0u;
+    int k;
+    radar_params(&p, MTT_ASSOC_LM_IHPDA);
+    p.motion = MTT_MOTION_AUTO;
+    p.process_psd = 0;
+    p.max_accel = pos(30.0);
+    TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_init(&trk, &p));
+    for (k = 0; k < 60; ++k) {
+        const int turning = k >= 20 && (double)(k - 20) * T_SCAN * w < 1.5707963267948966;
+        if (turning) { /* the exact turn over one scan */
+            const double c = cos(w * T_SCAN), sn = sin(w * T_SCAN);
+            const double nvx = c * vx - sn * vy, nvy = sn * vx + c * vy;
+            tx += (sn * vx - (1.0 - c) * vy) / w;
+            ty += ((1.0 - c) * vx + sn * vy) / w;
+            vx = nvx;
+            vy = nvy;
+        } else {
+            tx += vx * T_SCAN;
+            ty += vy * T_SCAN;
+        }
+        m = sim_meas(pos(tx + SIGMA * gauss()), pos(ty + SIGMA * gauss()), MTT_ZERO, 0);
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_step(&trk, MTT_TIME((double)k * T_SCAN), &m, 1));
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_count(&trk, &n));
+        TEST_ASSERT_EQUAL_UINT((k == 0) ? 0u : 1u, n); /* born from two detections */
+        if (k == 0) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(MTT_OK, mtt_tracker_track(&trk, 0, &v));
+        TEST_ASSERT_EQUAL_UINT8(2u, v.n_models);
+        id = (k == 1) ? v.id : id;
+        TEST_ASSERT_EQUAL_UINT32(id, v.id);
+        if (k == 19) {
+            mu_before = mtt_fx_to_double(v.mu[1], MTT_FX_PROB_FRAC);
+        }
+        if (turning) {
+            const double mt = mtt_fx_to_double(v.mu[1], MTT_FX_PROB_FRAC);
+            mu_turn = (mt > mu_turn) ? mt : mu_turn;
+        }
+    }
+    TEST_ASSERT_TRUE(v.confirmed);
+    TEST_ASSERT_DOUBLE_WITHIN(3.0 * SIGMA, tx, pos_d(v.x[0]));
+    TEST_ASSERT_DOUBLE_WITHIN(3.0 * SIGMA, ty, pos_d(v.x[1]));
+    TEST_ASSERT_DOUBLE_WITHIN(20.0, vx, pos_d(v.x[2]));
+    TEST_ASSERT_DOUBLE_WITHIN(20.0, vy, pos_d(v.x[3]));
+    TEST_ASSERT_TRUE(mu_turn > mu_before);
+    TEST_ASSERT_TRUE(mtt_fx_to_double(v.mu[0], MTT_FX_PROB_FRAC) > 0.5);
+}
+
 /* A block P = v 2^e from doubles (largest mantissa below 2^28) and back. */
 static void cov_set(mtt_cov P, const double v[4][4])
 {
@@ -453,6 +515,7 @@ int main(void)
 #if MTT_WITH_IMM
     RUN_TEST(test_imm_from_max_accel);
     RUN_TEST(test_imm_mixing_matches_double);
+    RUN_TEST(test_imm_tracks_a_turn);
 #endif
     return UNITY_END();
 }

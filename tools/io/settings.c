@@ -811,6 +811,12 @@ static int check_params(const sctx *c)
                              "(docs/FIXED_POINT.md §5)");
             return MTT_IO_EINPUT;
         }
+        if (bad != NULL && strcmp(bad, "imm_models") == 0) {
+            /* params.c: the fixed-point IMM (docs/FIXED_POINT.md §5) */
+            mtt_io_error_key(c->file, bad, "this fixed-point build's IMM has cv models only: ca and ct need a "
+                             "floating-point build (docs/FIXED_POINT.md §5)");
+            return MTT_IO_EINPUT;
+        }
         if (bad != NULL && strcmp(bad, "split") == 0) {
             mtt_io_error_key(c->file, bad, "split = true needs motion = imm with a cv model in "
                              "imm_models, and a build with MTT_WITH_SPLIT (motion is %s)",
@@ -828,7 +834,10 @@ static int check_params(const sctx *c)
         if (strcmp(bad, "motion") == 0) {
             mtt_io_error_key(c->file, bad, "motion = imm needs an association other than ihpda-2d and "
                              "lm-ipda-all, and a build with MTT_WITH_IMM%s (association is %s)",
-                             MTT_IO_FIXED ? ", which the fixed-point build leaves out (docs/FIXED_POINT.md §5)" : "",
+                             (MTT_IO_FIXED && !MTT_WITH_IMM)
+                                 ? ", which this fixed-point build leaves out (configs/firmware_fixed_radar.h has it: "
+                                   "docs/FIXED_POINT.md §5)"
+                                 : "",
                              mtt_params_info(0, &info) == MTT_OK
                                  ? info->names[(size_t)c->s->params.association] : "?");
             return MTT_IO_EINPUT;

@@ -452,6 +452,7 @@ cfg_out_of_range)       cfg_fail cfg_out_of_range "key 'pd': must be in (0, 1], 
 cfg_fixed_format)       cfg_fail cfg_fixed_format "key 'clutter_density': must be >= 0 within its fixed-point format (this build holds |v| < "
                         stderr_has ", Q"
                         stderr_has "found 5" ;;
+cfg_fixed_imm_ca)       cfg_fail cfg_fixed_imm_ca "key 'imm_models': this fixed-point build's IMM has cv models only: ca and ct need a floating-point build" ;;
 cfg_fixed_max_accel)    cfg_fail cfg_fixed_max_accel "key 'max_accel': with process_psd not given, max_accel² (the process noise per unit of time) is a variance of this fixed-point build's format" ;;
 cfg_sigma_out_of_range) cfg_fail cfg_sigma_out_of_range "key 'meas_sigma[1]': must be in [1e-9, 1e9], found -2" ;;
 cfg_array_length)       cfg_fail cfg_array_length "key 'meas_sigma': must be an array of 2 numbers" ;;
