@@ -36,6 +36,18 @@
 
 #if MTT_WITH_IMM
 
+#ifdef MTT_REAL_FIXED
+/* 1 / v for v > 0 in Q30 as m 2^-t (m in (2^29, 2^30]): x / v of a Q30 x
+ * is then mtt_fx_mul(x, m, t), one multiply per quotient instead of a
+ * division (the apportionment divides rows by one value each). */
+static int32_t inv_q30(int32_t v, int *t)
+{
+    *t = 31 - mtt_fx_clz((uint32_t)v); /* bit length - 1, in [0, 30] */
+    return mtt_fx_div(MTT_P(1.0), v, *t);
+}
+
+#endif
+
 int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real mu[],
                         mtt_real cbar[], mtt_real mix[][MTT_MAX_MODELS])
 {
@@ -49,10 +61,18 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
             c = MTT_ADDS(c, MTT_MUL_PP(Pi[i][j], mu[i]));
         }
         cbar[j] = c;
+#ifdef MTT_REAL_FIXED
+        int t = 0;
+        const mtt_prob q = (c > MTT_ZERO) ? inv_q30(c, &t) : MTT_ZERO; /* one reciprocal per column */
+#endif
         for (i = 0; i < r; ++i) {
             /* c̄_j = 0: no model can be in mode j; let model j start from
              * its own estimate (its weight μ_j will be 0 anyway). */
+#ifdef MTT_REAL_FIXED
+            mix[i][j] = (c > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(Pi[i][j], mu[i]), q, t) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
+#else
             mix[i][j] = (c > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(Pi[i][j], mu[i]), c) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
+#endif
         }
     }
     return 0;
@@ -69,7 +89,8 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
  * mean rounded to the position's LSB would cost 0.1 m² at 300 m apart).
  * Each product (shift 28) is below 2^27, the weighted sum too; the spread
  * meets the rest at E, the larger of e_max and the exponent that puts the
- * spread's largest entry on 28 bits, before one renormalisation. */
+ * spread's largest entry on 28 bits (the result below 2^29: the
+ * prediction renormalises a mixed start, mtt_imm_combine the estimate). */
 #define MULQ(a, b) mtt_fx_mulq30((a), (b))
 static void mixture4(uint8_t r, uint8_t ref, const mtt_prob w[], mtt_real x[][MTT_MAX_STATE], mtt_cov P[],
                      mtt_real xo[], mtt_real Po[][MTT_MAX_STATE])
@@ -94,12 +115,14 @@ static void mixture4(uint8_t r, uint8_t ref, const mtt_prob w[], mtt_real x[][MT
     }
     for (a = 0; a < MTT_IMM_COMMON; ++a) {
         for (i = 0; i < r; ++i) {
-            D[i][a] = mtt_fx_shift(D[i][a], sh);
-            s[a] += MULQ(w[i], D[i][a]);
+            if (i != ref) { /* D_ref = 0 */
+                D[i][a] = mtt_fx_shift(D[i][a], sh);
+                s[a] += MULQ(w[i], D[i][a]);
+            }
         }
         xo[a] = MTT_ADDS(xr[a], mtt_fx_shift(s[a], -sh));
         for (i = 0; i < r; ++i) {
-            wd[i][a] = MULQ(w[i], D[i][a] - s[a]); /* w_i d_i */
+            wd[i][a] = (i != ref) ? MULQ(w[i], D[i][a] - s[a]) : 0; /* w_i d_i */
         }
     }
     /* the spread's upper triangle at EB, then E from its measured size */
@@ -129,8 +152,7 @@ static void mixture4(uint8_t r, uint8_t ref, const mtt_prob w[], mtt_real x[][MT
             Po[b][a] = v;
         }
     }
-    MTT_COV_E(Po) = E;
-    MTT_COV_NORM(Po);
+    MTT_COV_E(Po) = E; /* below 2^29: the prediction renormalises a mixed start, combine the estimate */
 }
 #undef MULQ
 #else
@@ -236,6 +258,7 @@ int mtt_imm_combine(uint8_t r, const mtt_real mu[], mtt_real x[][MTT_MAX_STATE],
         return -1;
     }
     mixture4(r, 0, mu, x, P, xc, Pc);
+    MTT_COV_NORM(Pc);
     return 0;
 }
 
@@ -257,15 +280,6 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
 }
 
 #ifdef MTT_REAL_FIXED
-/* 1 / v for v > 0 in Q30 as m 2^-t (m in (2^29, 2^30]): x / v of a Q30 x
- * is then mtt_fx_mul(x, m, t), one multiply per quotient instead of a
- * division (the apportionment divides rows by one value each). */
-static int32_t inv_q30(int32_t v, int *t)
-{
-    *t = 31 - mtt_fx_clz((uint32_t)v); /* bit length - 1, in [0, 30] */
-    return mtt_fx_div(MTT_P(1.0), v, *t);
-}
-
 /* The float text below with each row's quotients by one reciprocal (e0
  * and e are Q30, each row's largest 1: imm_track.c). */
 int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,

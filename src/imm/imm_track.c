@@ -85,7 +85,6 @@ static void model_predict(const mtt_params *p, uint8_t j, mtt_real dt, mtt_real 
 }
 #endif
 
-
 int mtt_imm_predict_track(mtt_tracker *trk, uint16_t ti, mtt_real dt)
 {
     const mtt_params *p = &trk->par;
