@@ -366,8 +366,8 @@ void mtt_imm_update_track(mtt_tracker *trk, uint16_t ti, uint16_t first, uint16_
 #if MTT_WITH_MEAS_COV
     int own;
 #endif
-    for (j = 0; j < r; ++j) {
-        e0[j] = MTT_P(1.0);
+    for (j = 0; j < MTT_MAX_MODELS; ++j) {
+        e0[j] = MTT_P(1.0); /* every slot: GCC -O3 cannot see that only r are read */
     }
     for (i = 0; i < m; ++i) {
         const mtt_mstore *ms = &trk->meas[trk->pairs[first + i].meas];
