@@ -135,62 +135,6 @@ static void set_int(mtt_params *p, const info_row *r, int value)
     MTT_PARAM_ROWS(MTT_PARAM_NO_REAL, SET_FLAG, SET_ENUM)
 }
 
-#if MTT_WITH_IMM
-static int to_real(double v, int frac, mtt_real *out);
-/* imm_models: v = r, then (model, psd, turn psd) per slot; slots from r on keep
- * their values.  A new r resets imm_transition and imm_initial to not given
- * (so a settings file that sets only imm_models is valid).  Every psd 0 is
- * imm_models not given (mtt_params_default's, ALGORITHMS.md §2.2), so a get
- * of the defaults sets back; some 0 and some not is an error. */
-static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
-{
-    mtt_params q = *p;
-    size_t k, m;
-#ifdef MTT_REAL_FIXED
-    const int frac = r->frac; /* the variance format */
-#else
-    const int frac = 0;
-#endif
-    if (!(v[0] >= 2.0 && v[0] <= (double)MTT_MAX_MODELS && v[0] == (double)(int)v[0])) {
-        return MTT_ERR_PARAM;
-    }
-    m = (size_t)v[0];
-    for (k = 0; k < m; ++k) {
-        const double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
-        const double kind = s[0], psd = s[1], turn = s[2];
-        if (!(kind >= 0.0 && kind < (double)r->info.n_names && kind == (double)(int)kind) ||
-            !(psd > 0.0 && psd <= (double)MTT_REAL_MAX) || !(turn >= 0.0 && turn <= (double)MTT_REAL_MAX)) {
-            if (!(psd == 0.0 && v[2] == 0.0 && turn == 0.0 && kind >= 0.0 && kind < (double)r->info.n_names)) {
-                return MTT_ERR_PARAM; /* psd 0 only as "not given": the first slot's psd 0 too */
-            }
-        } else if (v[2] == 0.0) {
-            return MTT_ERR_PARAM; /* the first slot not given, this one given */
-        }
-        q.imm_model[k] = (mtt_model_kind)(int)kind;
-        if (!to_real(psd, frac, &q.imm_psd[k]) || !to_real(turn, frac, &q.imm_turn_psd[k])) {
-            return MTT_ERR_PARAM; /* beyond the format of mtt_real */
-        }
-        if (v[2] != 0.0 && !(q.imm_psd[k] > MTT_ZERO)) {
-            return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
-        }
-    }
-    if (!mtt_params_rule_ok(&q, r->rule, 0)) {
-        return MTT_ERR_PARAM;
-    }
-    for (k = 0; k < m; ++k) {
-        /* turn psd: > 0 (not rounded to 0) for ct, 0 for the others */
-        if ((q.imm_model[k] == MTT_MODEL_CT) != (q.imm_turn_psd[k] > MTT_ZERO)) {
-            return MTT_ERR_PARAM;
-        }
-    }
-    if (m != q.imm_n_models) {
-        mtt_params_imm_reset(&q, (uint8_t)m);
-    }
-    *p = q;
-    return MTT_OK;
-}
-#endif
-
 #ifdef MTT_REAL_FIXED
 /* v (user's units) in Q frac, rounded to nearest; 0 when outside the
  * format (NaN included): the host boundary's one conversion (fx_double.c). */
@@ -213,6 +157,56 @@ static int to_real(double v, int frac, mtt_real *out)
 }
 #define FROM_REAL(x, r) ((double)(x))
 #define ROW_FRAC(r) 0
+#endif
+
+#if MTT_WITH_IMM
+/* imm_models: v = r, then (model, psd, turn psd) per slot; slots from r on keep
+ * their values.  A new r resets imm_transition and imm_initial to not given
+ * (so a settings file that sets only imm_models is valid).  Every psd 0 is
+ * imm_models not given (mtt_params_default's, ALGORITHMS.md §2.2), so a get
+ * of the defaults sets back; some 0 and some not is an error. */
+static mtt_status set_models(mtt_params *p, const info_row *r, const double *v)
+{
+    mtt_params q = *p;
+    size_t k, m;
+    if (!(v[0] >= 2.0 && v[0] <= (double)MTT_MAX_MODELS && v[0] == (double)(int)v[0])) {
+        return MTT_ERR_PARAM;
+    }
+    m = (size_t)v[0];
+    for (k = 0; k < m; ++k) {
+        const double *s = v + 1 + MTT_PARAM_MODEL_VALUES * k;
+        const double kind = s[0], psd = s[1], turn = s[2];
+        if (!(kind >= 0.0 && kind < (double)r->info.n_names && kind == (double)(int)kind) ||
+            !(psd > 0.0 && psd <= (double)MTT_REAL_MAX) || !(turn >= 0.0 && turn <= (double)MTT_REAL_MAX)) {
+            if (!(psd == 0.0 && v[2] == 0.0 && turn == 0.0 && kind >= 0.0 && kind < (double)r->info.n_names)) {
+                return MTT_ERR_PARAM; /* psd 0 only as "not given": the first slot's psd 0 too */
+            }
+        } else if (v[2] == 0.0) {
+            return MTT_ERR_PARAM; /* the first slot not given, this one given */
+        }
+        q.imm_model[k] = (mtt_model_kind)(int)kind;
+        if (!to_real(psd, ROW_FRAC(r), &q.imm_psd[k]) || !to_real(turn, ROW_FRAC(r), &q.imm_turn_psd[k])) {
+            return MTT_ERR_PARAM; /* beyond the format of mtt_real */
+        }
+        if (v[2] != 0.0 && !(q.imm_psd[k] > MTT_ZERO)) {
+            return MTT_ERR_PARAM; /* a psd that rounds to 0 in mtt_real */
+        }
+    }
+    if (!mtt_params_rule_ok(&q, r->rule, 0)) {
+        return MTT_ERR_PARAM;
+    }
+    for (k = 0; k < m; ++k) {
+        /* turn psd: > 0 (not rounded to 0) for ct, 0 for the others */
+        if ((q.imm_model[k] == MTT_MODEL_CT) != (q.imm_turn_psd[k] > MTT_ZERO)) {
+            return MTT_ERR_PARAM;
+        }
+    }
+    if (m != q.imm_n_models) {
+        mtt_params_imm_reset(&q, (uint8_t)m);
+    }
+    *p = q;
+    return MTT_OK;
+}
 #endif
 
 mtt_status mtt_params_set_checked(mtt_params *p, const char *key, const double *v, size_t n,

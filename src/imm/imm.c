@@ -45,12 +45,31 @@ static int32_t inv_q30(int32_t v, int *t)
     *t = 31 - mtt_fx_clz((uint32_t)v); /* bit length - 1, in [0, 30] */
     return mtt_fx_div(MTT_P(1.0), v, *t);
 }
-
+/* x / D for a row of x by one D > 0: QUOT_SET once, QUOT per x (fixed
+ * point: one reciprocal and a multiply each; float and double: the
+ * division, and RECIP_* the float text's multiply by 1 / D). */
+typedef struct quot {
+    int32_t m;
+    int t;
+} quot;
+#define QUOT_INIT {0, 0}
+#define QUOT_SET(q, D) ((q).m = inv_q30((D), &(q).t))
+#define QUOT(x, q) mtt_fx_mul((x), (q).m, (q).t)
+#define RECIP_SET(q, D) QUOT_SET(q, D)
+#define RECIP_MUL(x, q) QUOT(x, q)
+#else
+typedef mtt_real quot;
+#define QUOT_INIT MTT_R(1.0)
+#define QUOT_SET(q, D) ((q) = (D))
+#define QUOT(x, q) ((x) / (q))
+#define RECIP_SET(q, D) ((q) = MTT_R(1.0) / (D))
+#define RECIP_MUL(x, q) ((x) * (q))
 #endif
 
 int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real mu[],
                         mtt_real cbar[], mtt_real mix[][MTT_MAX_MODELS])
 {
+    quot q = QUOT_INIT;
     uint8_t i, j;
     if (r < 1u || r > MTT_MAX_MODELS) {
         return -1;
@@ -61,18 +80,13 @@ int mtt_imm_mix_weights(uint8_t r, mtt_real Pi[][MTT_MAX_MODELS], const mtt_real
             c = MTT_ADDS(c, MTT_MUL_PP(Pi[i][j], mu[i]));
         }
         cbar[j] = c;
-#ifdef MTT_REAL_FIXED
-        int t = 0;
-        const mtt_prob q = (c > MTT_ZERO) ? inv_q30(c, &t) : MTT_ZERO; /* one reciprocal per column */
-#endif
+        if (c > MTT_ZERO) {
+            QUOT_SET(q, c);
+        }
         for (i = 0; i < r; ++i) {
             /* c̄_j = 0: no model can be in mode j; let model j start from
              * its own estimate (its weight μ_j will be 0 anyway). */
-#ifdef MTT_REAL_FIXED
-            mix[i][j] = (c > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(Pi[i][j], mu[i]), q, t) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
-#else
-            mix[i][j] = (c > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(Pi[i][j], mu[i]), c) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
-#endif
+            mix[i][j] = (c > MTT_ZERO) ? QUOT(MTT_MUL_PP(Pi[i][j], mu[i]), q) : ((i == j) ? MTT_P(1.0) : MTT_ZERO);
         }
     }
     return 0;
@@ -279,68 +293,12 @@ mtt_real mtt_imm_meas_mix(uint8_t r, const mtt_real cbar[], const mtt_real pd[],
     return (w > MTT_ZERO) ? MTT_DIV_RP(s, w) : MTT_ZERO;
 }
 
-#ifdef MTT_REAL_FIXED
-/* The float text below with each row's quotients by one reciprocal (e0
- * and e are Q30, each row's largest 1: imm_track.c). */
-int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
-                  const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
-                  mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
-{
-    mtt_prob E = MTT_ZERO, sum = MTT_ZERO, q;
-    uint16_t i;
-    uint8_t j;
-    int t;
-    if (r < 1u || r > MTT_MAX_MODELS || m > MTT_MAX_GATED) {
-        return -1;
-    }
-    for (j = 0; j < r; ++j) {
-        E = MTT_ADDS(E, MTT_MUL_PP(cbar[j], e0[j]));
-        mu[j] = MTT_ZERO;
-    }
-    q = (E > MTT_ZERO) ? inv_q30(E, &t) : MTT_ZERO;
-    for (j = 0; j < r; ++j) {
-        beta0_j[j] = (q > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), q, t) : MTT_ZERO;
-        mu[j] = MTT_ADDS(mu[j], beta0_j[j]);
-    }
-    for (i = 0; i < m; ++i) {
-        E = MTT_ZERO;
-        for (j = 0; j < r; ++j) {
-            E = MTT_ADDS(E, MTT_MUL_PP(cbar[j], e[i][j]));
-        }
-        q = (E > MTT_ZERO) ? inv_q30(E, &t) : MTT_ZERO;
-        for (j = 0; j < r; ++j) {
-            beta_j[j][i] = (q > MTT_ZERO) ? mtt_fx_mul(MTT_MUL_PP(MTT_MUL_PP(beta[i], cbar[j]), e[i][j]), q, t)
-                                          : MTT_ZERO;
-            mu[j] = MTT_ADDS(mu[j], beta_j[j][i]);
-        }
-    }
-    for (j = 0; j < r; ++j) {
-        sum = MTT_ADDS(sum, mu[j]);
-        if (mu[j] > MTT_ZERO) {
-            q = inv_q30(mu[j], &t);
-            beta0_j[j] = mtt_fx_mul(beta0_j[j], q, t);
-            for (i = 0; i < m; ++i) {
-                beta_j[j][i] = mtt_fx_mul(beta_j[j][i], q, t);
-            }
-        } else {
-            beta0_j[j] = beta0; /* a model of no weight: the track's distribution */
-            for (i = 0; i < m; ++i) {
-                beta_j[j][i] = beta[i];
-            }
-        }
-    }
-    q = (sum > MTT_ZERO) ? inv_q30(sum, &t) : MTT_ZERO;
-    for (j = 0; j < r; ++j) {
-        mu[j] = (q > MTT_ZERO) ? mtt_fx_mul(mu[j], q, t) : cbar[j];
-    }
-    return 0;
-}
-#else
 int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real beta0,
                   const mtt_real beta[], const mtt_real e0[], mtt_real e[][MTT_MAX_MODELS],
                   mtt_real mu[], mtt_real beta0_j[], mtt_real beta_j[][MTT_MAX_GATED])
 {
     mtt_prob E0 = MTT_ZERO, sum = MTT_ZERO;
+    quot q = QUOT_INIT;
     uint16_t i;
     uint8_t j;
     if (r < 1u || r > MTT_MAX_MODELS || m > MTT_MAX_GATED) {
@@ -351,9 +309,13 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
         mu[j] = MTT_ZERO;
     }
     /* Joint P(θ_0, M_j) = β_0 c̄_j e0_j / Σ_k c̄_k e0_k, kept in beta0_j
-     * until μ_j is known; the same for P(θ_i, M_j) in beta_j. */
+     * until μ_j is known; the same for P(θ_i, M_j) in beta_j.  (Fixed
+     * point: e0 and e are Q30, each row's largest 1: imm_track.c.) */
+    if (E0 > MTT_ZERO) {
+        QUOT_SET(q, E0);
+    }
     for (j = 0; j < r; ++j) {
-        mtt_prob v = (E0 > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), E0) : MTT_ZERO;
+        mtt_prob v = (E0 > MTT_ZERO) ? QUOT(MTT_MUL_PP(MTT_MUL_PP(beta0, cbar[j]), e0[j]), q) : MTT_ZERO;
         beta0_j[j] = v;
         mu[j] = MTT_ADDS(mu[j], v);
     }
@@ -362,8 +324,11 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
         for (j = 0; j < r; ++j) {
             Ei = MTT_ADDS(Ei, MTT_MUL_PP(cbar[j], e[i][j]));
         }
+        if (Ei > MTT_ZERO) {
+            QUOT_SET(q, Ei);
+        }
         for (j = 0; j < r; ++j) {
-            mtt_prob v = (Ei > MTT_ZERO) ? MTT_DIV_P(MTT_MUL_PP(MTT_MUL_PP(beta[i], cbar[j]), e[i][j]), Ei) : MTT_ZERO;
+            mtt_prob v = (Ei > MTT_ZERO) ? QUOT(MTT_MUL_PP(MTT_MUL_PP(beta[i], cbar[j]), e[i][j]), q) : MTT_ZERO;
             beta_j[j][i] = v;
             mu[j] = MTT_ADDS(mu[j], v);
         }
@@ -373,10 +338,10 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
     }
     for (j = 0; j < r; ++j) {
         if (mu[j] > MTT_ZERO) {
-            const mtt_real inv = MTT_R(1.0) / mu[j];
-            beta0_j[j] *= inv;
+            RECIP_SET(q, mu[j]);
+            beta0_j[j] = RECIP_MUL(beta0_j[j], q);
             for (i = 0; i < m; ++i) {
-                beta_j[j][i] *= inv;
+                beta_j[j][i] = RECIP_MUL(beta_j[j][i], q);
             }
         } else {
             /* A model of no weight: any valid distribution; take the track's. */
@@ -388,11 +353,13 @@ int mtt_imm_apportion(uint8_t r, const mtt_real cbar[], uint16_t m, mtt_real bet
     }
     /* Σ_j μ_j = β_0 + Σ_i β_i = 1 in exact arithmetic; renormalise the
      * round-off (and a β_0 that no model can explain, e0 = 0). */
+    if (sum > MTT_ZERO) {
+        QUOT_SET(q, sum);
+    }
     for (j = 0; j < r; ++j) {
-        mu[j] = (sum > MTT_ZERO) ? MTT_DIV_P(mu[j], sum) : cbar[j];
+        mu[j] = (sum > MTT_ZERO) ? QUOT(mu[j], q) : cbar[j];
     }
     return 0;
 }
-#endif
 
 #endif /* MTT_WITH_IMM */

@@ -265,25 +265,25 @@ static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf,
     }
 }
 #else
+/* the apportionment's e_ij are the gate's p_i^j (below) */
+#define model_likelihoods model_ps
+#endif
+
 /* p_i^j = N(ν_i^j; 0, S_j)/PG of measurement z under every model. */
-static void model_likelihoods(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms,
-                              mtt_real pj[])
+static void model_ps(const mtt_tracker *trk, const mtt_track_frame *tf, const mtt_mstore *ms, mtt_real pj[])
 {
     uint8_t j;
     for (j = 0; j < trk->par.imm_n_models; ++j) {
         (void)mtt_imm_model_d2(trk, tf, j, ms, &pj[j]);
     }
 }
-#endif
 
 mtt_real mtt_imm_gate_p(const mtt_tracker *trk, uint16_t ti, const mtt_mstore *ms)
 {
     const mtt_track_frame *tf = &trk->tf[ti];
     mtt_real pj[MTT_MAX_MODELS], pd[MTT_MAX_MODELS], pdm;
     uint8_t j;
-    for (j = 0; j < trk->par.imm_n_models; ++j) {
-        (void)mtt_imm_model_d2(trk, tf, j, ms, &pj[j]);
-    }
+    model_ps(trk, tf, ms, pj);
     for (j = 0; j < trk->par.imm_n_models; ++j) {
         pd[j] = trk->par.pd;
     }
